@@ -1,0 +1,62 @@
+#include "area_constraint.h"
+
+namespace tire {
+
+double polygon_area(const Vec2* x, std::uint32_t count) {
+  double twice_area = 0.0;
+  for (std::uint32_t i = 0, j = count - 1; i < count; j = i++) twice_area += cross(x[j], x[i]);
+  return 0.5 * twice_area;
+}
+
+namespace {
+// ∇_{x_i}A from the neighbours of i.
+inline Vec2 area_gradient(Vec2 prev, Vec2 next) { return {0.5 * (next.y - prev.y), 0.5 * (prev.x - next.x)}; }
+}  // namespace
+
+void polygon_area_gradient(const Vec2* x, std::uint32_t count, Vec2* grad) {
+  for (std::uint32_t i = 0; i < count; ++i)
+    grad[i] = area_gradient(x[(i + count - 1) % count], x[(i + 1) % count]);
+}
+
+void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const Vec2* x_prev,
+                           const double* w, const ProjectionStep& step) {
+  Vec2* p = x + c.first;
+  const Vec2* p_prev = x_prev + c.first;
+  const double* wp = w + c.first;
+  const std::uint32_t n = c.count;
+
+  // First pass: C, Σ w_i |∇_i C|² and ∇C·(x − xⁿ) at the current positions.
+  double twice_area = 0.0;
+  double sum_w_grad2 = 0.0;
+  double rate = 0.0;
+  Vec2 prev = p[n - 1];
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec2 current = p[i];
+    const Vec2 next = p[i + 1 == n ? 0 : i + 1];
+    twice_area += cross(prev, current);
+    const Vec2 grad = area_gradient(prev, next);
+    sum_w_grad2 += wp[i] * length_squared(grad);
+    if (step.gamma > 0.0) rate += dot(grad, current - p_prev[i]);
+    prev = current;
+  }
+  const double C = 0.5 * twice_area - c.pressure * c.rest_area;
+  const double alpha_tilde = c.compliance * step.inv_h2;  // α̃ = α/h²  // α̃ = α/h²  (XPBD eq. 4)
+  const double denominator = (1.0 + step.gamma) * sum_w_grad2 + alpha_tilde;
+  if (denominator <= 0.0) return;
+  // Δλ = (−C − α̃λ − γ∇C(x − xⁿ)) / ((1 + γ)∇C M⁻¹ ∇Cᵀ + α̃)  (XPBD eq. 26)
+  const double delta_lambda = (-C - alpha_tilde * lambda - step.gamma * rate) / denominator;
+  lambda += delta_lambda;
+
+  // Second pass: Δx_i = w_i ∇_i C Δλ (XPBD eq. 17). Every gradient must use the positions before
+  // this update, so the original of the previous vertex (and of vertex 0) is carried along.
+  const Vec2 first_original = p[0];
+  Vec2 prev_original = p[n - 1];
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec2 next = (i + 1 == n) ? first_original : p[i + 1];
+    const Vec2 grad = area_gradient(prev_original, next);
+    prev_original = p[i];
+    p[i] += grad * (wp[i] * delta_lambda);
+  }
+}
+
+}  // namespace tire

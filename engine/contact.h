@@ -1,0 +1,74 @@
+// Particle contacts as XPBD inequality constraints C(x) = (x − s)·n ≥ 0 with zero compliance,
+// and Coulomb friction in the position-based form of Müller et al. 2020, "Detailed Rigid Body
+// Simulation with Extended Position Based Dynamics" (Sec. 3.5 static, Sec. 3.6 kinetic).
+//
+// Against a surface of infinite mass the particle's inverse mass cancels out of every formula,
+// so the multipliers are kept as distances: lambda_n is the normal correction applied so far in
+// this substep (Müller's λ_n·w), and the Coulomb test λ_t < μ_s λ_n becomes |Δx_t| < μ_s·lambda_n.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "aabb.h"
+#include "vec2.h"
+
+namespace tire {
+
+// A penetrating contact: push the particle by depth·normal to reach the surface.
+struct SurfaceContact {
+  Vec2 normal;          // unit, out of the surface
+  double depth = 0.0;   // > 0
+};
+
+// Exact minimal-overlap contact of a point strictly inside an axis-aligned box: the face with
+// the least overlap gives the normal. Ties prefer the top face (ground), then left, right, bottom,
+// so the result never depends on anything but the inputs. Nullopt when the point is not inside.
+inline std::optional<SurfaceContact> box_contact(Vec2 p, const Aabb& box) {
+  if (!(p.x > box.min.x && p.x < box.max.x && p.y > box.min.y && p.y < box.max.y)) return std::nullopt;
+  SurfaceContact best{{0.0, 1.0}, box.max.y - p.y};                         // top
+  if (p.x - box.min.x < best.depth) best = {{-1.0, 0.0}, p.x - box.min.x};  // left
+  if (box.max.x - p.x < best.depth) best = {{1.0, 0.0}, box.max.x - p.x};   // right
+  if (p.y - box.min.y < best.depth) best = {{0.0, -1.0}, p.y - box.min.y};  // bottom
+  return best;
+}
+
+// What friction needs to know about one particle's contact during one substep.
+struct ContactRecord {
+  Vec2 normal;                 // normal of the last contact found this substep
+  double lambda_n = 0.0;       // accumulated normal correction this substep (m)
+  double mu_static = 0.0;
+  double mu_kinetic = 0.0;
+  bool active = false;         // touched a surface this substep
+  bool stuck = false;          // static friction held at the last projection
+};
+
+// Projects a penetrating particle out of a static surface, then applies position-level static
+// friction: if the tangential displacement this substep is within the static cone, undo it.
+inline void resolve_contact(Vec2& x, Vec2 x_prev, const SurfaceContact& c, double mu_static,
+                            double mu_kinetic, ContactRecord& rec) {
+  x += c.normal * c.depth;  // Δx = −C n for C = −depth  (zero compliance, Müller 2020 eq. 3–5)
+  rec.normal = c.normal;
+  rec.lambda_n += c.depth;
+  rec.mu_static = mu_static;
+  rec.mu_kinetic = mu_kinetic;
+  rec.active = true;
+  const Vec2 dp = x - x_prev;
+  const Vec2 dp_t = dp - c.normal * dot(dp, c.normal);  // Müller 2020 eq. 27
+  // Static friction (Müller 2020 Sec. 3.5): stick when λ_t < μ_s λ_n.
+  rec.stuck = length_squared(dp_t) < (mu_static * rec.lambda_n) * (mu_static * rec.lambda_n);
+  if (rec.stuck) x -= dp_t;
+}
+
+// Kinetic friction on the velocity (Müller 2020 eq. 30): Δv = −v_t/|v_t| · min(h μ_k |f_n|, |v_t|)
+// with f_n = λ_n/h² per unit inverse mass, i.e. at most μ_k·lambda_n/h.
+inline void apply_kinetic_friction(Vec2& v, const ContactRecord& rec, double h) {
+  if (!rec.active || rec.stuck) return;
+  const Vec2 v_t = v - rec.normal * dot(v, rec.normal);
+  const double speed_t = length(v_t);
+  if (speed_t <= 0.0) return;
+  const double reduction = rec.mu_kinetic * rec.lambda_n / h;
+  v -= v_t * (reduction >= speed_t ? 1.0 : reduction / speed_t);
+}
+
+}  // namespace tire

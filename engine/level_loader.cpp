@@ -1,0 +1,124 @@
+// Level files: size and depth limits, parse errors with line and column, --set overrides.
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "level.h"
+#include "world.h"
+
+namespace tire {
+
+namespace {
+
+using json = nlohmann::json;
+
+struct TooDeep {};
+
+// Parses with the nesting limit enforced while parsing, before a hostile file can build a deep tree.
+json parse_limited(const std::string& text) {
+  const json::parser_callback_t limit = [](int depth, json::parse_event_t, json&) {
+    if (depth > LevelLimits::max_depth) throw TooDeep{};
+    return true;
+  };
+  return json::parse(text, limit);
+}
+
+std::string strip_exception_prefix(const std::string& what) {
+  const auto close = what.find("] ");
+  return close == std::string::npos ? what : what.substr(close + 2);
+}
+
+// Splits "a.b.0.c" into its parts.
+std::vector<std::string> split_dotted(const std::string& path) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(path);
+  while (std::getline(in, part, '.')) parts.push_back(part);
+  return parts;
+}
+
+}  // namespace
+
+std::string apply_override(json& doc, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    return "--set " + assignment + ": expected key=value, e.g. solver.substeps=16";
+  const std::string key = assignment.substr(0, eq);
+  const std::string text = assignment.substr(eq + 1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc{} || end != text.data() + text.size() || text.empty())
+    return "--set " + assignment + ": value must be a number, got \"" + text + "\"";
+
+  json* node = &doc;
+  for (const std::string& part : split_dotted(key)) {
+    if (part.empty()) return "--set " + assignment + ": empty path component in \"" + key + "\"";
+    if (node->is_array()) {
+      std::size_t index = 0;
+      const auto [p, e] = std::from_chars(part.data(), part.data() + part.size(), index);
+      if (e != std::errc{} || p != part.data() + part.size() || index >= node->size())
+        return "--set " + assignment + ": \"" + part + "\" is not an index of the " +
+               std::to_string(node->size()) + "-entry array";
+      node = &(*node)[index];
+    } else if (node->is_object() || node->is_null()) {
+      node = &(*node)[part];
+    } else {
+      return "--set " + assignment + ": \"" + part + "\" goes inside a value that is not an object";
+    }
+  }
+  if (node->is_object() || node->is_array())
+    return "--set " + assignment + ": \"" + key + "\" is an object or array, not a number";
+  if (std::floor(value) == value && std::abs(value) < 9e15) *node = static_cast<std::int64_t>(value);
+  else *node = value;
+  return "";
+}
+
+LevelLoad load_level_text(const std::string& text, const std::string& file,
+                          const std::vector<std::string>& overrides) {
+  LevelLoad out;
+  json doc;
+  try {
+    doc = parse_limited(text);
+  } catch (const TooDeep&) {
+    out.errors.push_back(file + ": nesting deeper than " + std::to_string(LevelLimits::max_depth) + " levels");
+    return out;
+  } catch (const json::exception& e) {
+    out.errors.push_back(file + ": invalid JSON: " + strip_exception_prefix(e.what()));
+    return out;
+  }
+  for (const std::string& assignment : overrides) {
+    if (std::string err = apply_override(doc, assignment); !err.empty()) out.errors.push_back(err);
+  }
+  if (!out.errors.empty()) return out;
+  std::vector<JsonIssue> issues;
+  out.level = read_level(doc, issues);
+  for (const JsonIssue& issue : issues)
+    out.errors.push_back(file + ": " + (issue.path.empty() ? "/" : issue.path) + ": " + issue.message);
+  return out;
+}
+
+LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const std::string name = file.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    return {std::nullopt, {name + ": " + (std::filesystem::exists(file, ec) ? "not a regular file" : "no such file")}};
+  }
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) return {std::nullopt, {name + ": cannot read: " + ec.message()}};
+  if (size > LevelLimits::max_file_bytes)
+    return {std::nullopt, {name + ": file is " + std::to_string(size) + " bytes; the limit is " +
+                           std::to_string(LevelLimits::max_file_bytes)}};
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) return {std::nullopt, {name + ": cannot read the file"}};
+  return load_level_text(text.str(), name, overrides);
+}
+
+void populate_world(const Level& level, World& world) {
+  for (const Obstacle& o : level.obstacles) world.add_obstacle(o);
+  for (const TireSpec& t : level.tires) world.add_tire(t);
+}
+
+}  // namespace tire

@@ -1,0 +1,115 @@
+#include "tire.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tire {
+
+namespace {
+
+// Appends ring edges (i, i+1) of a ring starting at `first`: even edges, then odd ones, so that
+// consecutive constraints share no particle and the CPU can overlap their square roots.
+void add_ring(std::vector<DistanceConstraint>& out, std::uint32_t first, std::uint32_t n,
+              double compliance) {
+  for (std::uint32_t parity = 0; parity < 2; ++parity)
+    for (std::uint32_t i = parity; i < n; i += 2)
+      out.push_back({first + i, first + (i + 1) % n, 0.0, compliance});
+}
+
+}  // namespace
+
+Tire::Tire(TireId id_, const TireSpec& spec_)
+    : id(id_), spec(spec_), n(static_cast<std::uint32_t>(spec_.segments)),
+      segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
+  particles.resize(2 * n);
+  contacts.resize(2 * n);
+  grounded_flags.resize(2 * n);
+  candidates.reserve(16);
+
+  add_ring(distance, 0, n, spec.compliance.outer);
+  add_ring(distance, n, n, spec.compliance.inner);
+  for (std::uint32_t i = 0; i < n; ++i) distance.push_back({n + i, i, 0.0, spec.compliance.spoke});
+  if (spec.spokes == SpokePattern::cross) {
+    for (std::uint32_t i = 0; i < n; ++i)
+      distance.push_back({n + i, (i + 1) % n, 0.0, spec.compliance.spoke});
+    for (std::uint32_t i = 0; i < n; ++i)
+      distance.push_back({n + i, (i + n - 1) % n, 0.0, spec.compliance.spoke});
+  }
+  distance_lambda.assign(distance.size(), 0.0);
+  area_constraint = {0, n, 0.0, spec.pressure, spec.compliance.pressure};
+  reset();
+  // Rest lengths and rest area are those of the tire as built, so it starts in equilibrium.
+  for (DistanceConstraint& c : distance)
+    c.rest_length = length(particles.x[c.b] - particles.x[c.a]);
+  area_constraint.rest_area = polygon_area(particles.x.data(), n);
+}
+
+void Tire::reset() {
+  const double w = 2.0 * n / spec.mass;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    // At angle 0 the segment between particles n−1 and 0 lies flat at the bottom: a polygon resting
+    // on a vertex is balanced on a knife edge and would tip over, on an edge it is at rest.
+    const double theta = spec.angle - std::numbers::pi / 2 + std::numbers::pi * (2.0 * i + 1.0) / n;
+    const Vec2 dir{std::cos(theta), std::sin(theta)};
+    const Vec2 r_out = dir * spec.outer_radius;
+    const Vec2 r_in = dir * spec.inner_radius;
+    particles.x[i] = spec.position + r_out;
+    particles.x[n + i] = spec.position + r_in;
+    particles.v[i] = spec.velocity + perp(r_out) * spec.angular_velocity;
+    particles.v[n + i] = spec.velocity + perp(r_in) * spec.angular_velocity;
+  }
+  particles.x_prev = particles.x;
+  std::fill(particles.w.begin(), particles.w.end(), w);
+  std::fill(contacts.begin(), contacts.end(), ContactRecord{});
+  std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
+  std::fill(distance_lambda.begin(), distance_lambda.end(), 0.0);
+  area_lambda = 0.0;
+  control = {};
+}
+
+namespace {
+Vec2 mean(const std::vector<Vec2>& values) {
+  Vec2 sum;
+  for (const Vec2& v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+}  // namespace
+
+Vec2 Tire::centroid() const { return mean(particles.x); }
+
+Vec2 Tire::velocity() const { return mean(particles.v); }
+
+double Tire::angular_velocity() const {
+  const Vec2 c = centroid();
+  const Vec2 vc = velocity();
+  double momentum = 0.0;  // per unit particle mass
+  double inertia = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Vec2 r = particles.x[i] - c;
+    momentum += cross(r, particles.v[i] - vc);
+    inertia += length_squared(r);
+  }
+  return inertia > 0.0 ? momentum / inertia : 0.0;
+}
+
+double Tire::area() const { return polygon_area(particles.x.data(), n); }
+
+bool Tire::grounded() const {
+  return std::any_of(grounded_flags.begin(), grounded_flags.begin() + n,
+                     [](std::uint8_t g) { return g != 0; });
+}
+
+bool Tire::is_finite() const {
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (!tire::is_finite(particles.x[i]) || !tire::is_finite(particles.v[i])) return false;
+  return true;
+}
+
+double Tire::max_abs_coordinate() const {
+  double m = 0.0;
+  for (const Vec2& x : particles.x) m = std::max({m, std::abs(x.x), std::abs(x.y)});
+  return m;
+}
+
+}  // namespace tire

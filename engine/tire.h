@@ -1,0 +1,65 @@
+// A soft tire: two concentric rings of N particles (outer = tread, inner = rim), distance
+// constraints along both rings and on the spokes between them, and one area constraint on the
+// outer ring. The hub is derived (the mass-weighted centroid), never a free particle.
+//
+// Particle layout: outer ring at [0, N), inner ring at [N, 2N), both counter-clockwise.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "area_constraint.h"
+#include "contact.h"
+#include "distance_constraint.h"
+#include "particles.h"
+#include "tire_spec.h"
+
+namespace tire {
+
+using TireId = std::uint32_t;
+
+// What drives a tire during one tick.
+struct TireControl {
+  double steer = 0.0;  // [-1, 1]; +1 drives towards +x
+  bool jump = false;   // a jump request; consumed at the start of the tick
+};
+
+struct Tire {
+  Tire(TireId id, const TireSpec& spec);
+
+  // Puts every particle back where the spec builds it, at rest; forgets contacts and λ.
+  void reset();
+
+  std::uint32_t segments() const { return n; }
+  std::uint32_t particle_count() const { return 2 * n; }
+  double total_mass() const { return spec.mass; }
+  double particle_mass() const { return spec.mass / (2.0 * n); }  // every particle weighs the same
+
+  // Every particle has the same mass, so mass-weighted means are plain means.
+  Vec2 centroid() const;             // mass-weighted centroid of all particles (the hub)
+  Vec2 velocity() const;             // mass-weighted mean velocity
+  double angular_velocity() const;   // about the centroid (rad/s, CCW positive)
+  double area() const;               // current area of the outer ring (m²)
+  double area_ratio() const { return area() / area_constraint.rest_area; }
+  bool grounded() const;             // an outer particle touched ground in the last substep
+  bool is_finite() const;            // no NaN/Inf in positions or velocities
+  double max_abs_coordinate() const;
+
+  TireId id;
+  TireSpec spec;
+  std::uint32_t n;              // particles per ring
+  double segment_length;        // rest length of one outer-ring segment (m)
+
+  Particles particles;
+  std::vector<DistanceConstraint> distance;  // ordered so consecutive entries rarely share a particle
+  std::vector<double> distance_lambda;
+  AreaConstraint area_constraint;
+  double area_lambda = 0.0;
+
+  std::vector<ContactRecord> contacts;        // per particle, this substep
+  std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
+  std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
+  TireControl control;
+};
+
+}  // namespace tire

@@ -1,0 +1,130 @@
+#include "tire_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tire {
+
+namespace {
+
+// Friction of two surfaces in contact, mixed as Box2D's b2MixFriction does.
+double mix_friction(double a, double b) { return std::sqrt(a * b); }
+
+Aabb bounds(const std::vector<Vec2>& x) {
+  Aabb b{x.front(), x.front()};
+  for (const Vec2& p : x) {
+    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y)};
+    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y)};
+  }
+  return b;
+}
+
+// Angular acceleration (rad/s², CCW positive) that steering asks for this substep: the tread is
+// driven at drive_acceleration·|steer| until its speed reaches max_speed·|steer|.
+double drive_angular_acceleration(const Tire& t) {
+  const double steer = std::clamp(t.control.steer, -1.0, 1.0);
+  if (steer == 0.0) return 0.0;
+  const double tread_speed = -t.angular_velocity() * t.spec.outer_radius;  // > 0 rolling to +x
+  const double target = steer * t.spec.max_speed;
+  if (steer > 0.0 ? tread_speed >= target : tread_speed <= target) return 0.0;
+  return -steer * t.spec.drive_acceleration / t.spec.outer_radius;
+}
+
+// Semi-implicit Euler velocity step (Small Steps, Alg. 1 line 4) with steering as a uniform
+// angular acceleration about the hub (a pure torque: no net force, so the tire moves only by
+// traction), then the anti-tunneling clamp on each particle's speed, then the position prediction.
+void predict(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  const double h = ctx.h;
+  const double alpha = drive_angular_acceleration(t);
+  const Vec2 hub = alpha != 0.0 ? t.centroid() : Vec2{};
+  const double v_max = ctx.config->tunnel_clamp * t.segment_length / h;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.w[i] == 0.0) continue;
+    Vec2 v = p.v[i] + ctx.gravity * h;
+    if (alpha != 0.0) v += perp(p.x[i] - hub) * (alpha * h);
+    const double speed2 = length_squared(v);
+    if (speed2 > v_max * v_max) v *= v_max / std::sqrt(speed2);
+    p.v[i] = v;
+  }
+  predict_positions(p, h);
+}
+
+void solve_obstacle_contacts(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  for (const std::uint32_t k : t.candidates) {
+    const Obstacle& o = (*ctx.obstacles)[k];
+    const double mu_s = mix_friction(t.spec.friction, o.friction);
+    const double mu_k = mix_friction(t.spec.kinetic_friction, o.friction);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (const auto c = box_contact(p.x[i], o.box))
+        resolve_contact(p.x[i], p.x_prev[i], *c, mu_s, mu_k, t.contacts[i]);
+  }
+}
+
+// Momentum-conserving damping (Müller et al. 2007, "Position Based Dynamics", Sec. 3.5): only the
+// deviation from the tire's rigid motion decays, at rate `damping` per second.
+void damp(Tire& t, double damping, double h) {
+  const double k = 1.0 - std::exp(-damping * h);
+  Particles& p = t.particles;
+  const Vec2 c = t.centroid();
+  const Vec2 vc = t.velocity();
+  const double omega = t.angular_velocity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 rigid = vc + perp(p.x[i] - c) * omega;
+    p.v[i] += (rigid - p.v[i]) * k;
+  }
+}
+
+// Caps the hub's horizontal speed by shifting every particle alike (spin and shape untouched).
+void cap_horizontal_speed(Tire& t) {
+  const double vx = t.velocity().x;
+  if (std::abs(vx) <= t.spec.max_speed) return;
+  const double shift = std::copysign(t.spec.max_speed, vx) - vx;
+  for (Vec2& v : t.particles.v) v.x += shift;
+}
+
+void update_velocities(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  derive_velocities(p, ctx.h);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const ContactRecord& c = t.contacts[i];
+    apply_kinetic_friction(p.v[i], c, ctx.h);
+    t.grounded_flags[i] = c.active && c.normal.y >= ctx.config->ground_normal_y;
+  }
+  if (ctx.config->damping > 0.0) damp(t, ctx.config->damping, ctx.h);
+  cap_horizontal_speed(t);
+}
+
+// Rayleigh damping proportional to stiffness, β = τ·k = τ/α, makes γ = α̃β̃/h = τ/h.
+ProjectionStep projection_step(const Tire& t, double h) { return {1.0 / (h * h), t.spec.material_damping / h}; }
+
+}  // namespace
+
+void begin_tick(Tire& t, const SolverConfig& config, const ObstacleField& obstacles) {
+  prepare_distance_constraints(t.distance, t.particles.w.data(), projection_step(t, config.dt / config.substeps));
+  // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
+  // tire's radius covers what the constraints can move a particle on top of that.
+  const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
+  obstacles.query(bounds(t.particles.x).expanded(reach), t.candidates);
+  if (t.control.jump && t.grounded())
+    for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
+  t.control.jump = false;
+}
+
+void substep(Tire& t, const SubstepContext& ctx) {
+  predict(t, ctx);
+  std::fill(t.distance_lambda.begin(), t.distance_lambda.end(), 0.0);
+  t.area_lambda = 0.0;
+  std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
+  const ProjectionStep step = projection_step(t, ctx.h);
+  Particles& p = t.particles;
+  for (int it = 0; it < ctx.config->iterations; ++it) {
+    solve_distance_constraints(t.distance, t.distance_lambda, p.x.data(), p.x_prev.data(), p.w.data(), step.gamma);
+    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.x_prev.data(), p.w.data(), step);
+    solve_obstacle_contacts(t, ctx);
+  }
+  update_velocities(t, ctx);
+}
+
+}  // namespace tire

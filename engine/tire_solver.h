@@ -1,0 +1,24 @@
+// One XPBD substep for one tire (Macklin et al. 2019, "Small Steps in Physics Simulation",
+// Algorithm 1): predict, solve every constraint with λ reset to zero, then derive velocities.
+#pragma once
+
+#include "obstacle_field.h"
+#include "solver_config.h"
+#include "tire.h"
+
+namespace tire {
+
+struct SubstepContext {
+  double h = 0.0;  // substep (s)
+  Vec2 gravity;
+  const SolverConfig* config = nullptr;
+  const ObstacleField* obstacles = nullptr;
+};
+
+// Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and
+// the tire is grounded.
+void begin_tick(Tire& tire, const SolverConfig& config, const ObstacleField& obstacles);
+
+void substep(Tire& tire, const SubstepContext& ctx);
+
+}  // namespace tire

@@ -1,0 +1,44 @@
+# Shared set-up for ./tools/test and ./tools/play: Debian packages, configure, build.
+# Sourced, not run. Idempotent: a second call with nothing changed costs a few seconds.
+
+TIRE_PACKAGES=(g++ cmake pkg-config libsdl2-dev libbox2d-dev nlohmann-json3-dev catch2
+  libcli11-dev libimgui-dev)
+
+tire_missing_packages() {
+  local p missing=()
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  echo "${missing[@]}"
+}
+
+# Installs what is missing when root; otherwise prints the one command and fails.
+tire_ensure_packages() {
+  local missing
+  missing=$(tire_missing_packages "$@")
+  [ -z "$missing" ] && return 0
+  if ! command -v dpkg-query >/dev/null; then
+    echo "tools: not a Debian system; install the equivalents of: $missing" >&2
+    return 1
+  fi
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "tools: missing Debian packages. Run:" >&2
+    echo "  sudo apt-get install -y $missing" >&2
+    return 1
+  fi
+  echo "tools: installing $missing" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q >/dev/null
+  # shellcheck disable=SC2086
+  apt-get install -y -q $missing >/dev/null
+}
+
+# Configures once, then builds incrementally into build/.
+tire_build() {
+  local root build_type=${TIRE_BUILD_TYPE:-Release}
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+  if [ ! -f "$root/build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE="$build_type" >/dev/null
+  fi
+  cmake --build "$root/build" -j "$(nproc)"
+}

@@ -1,0 +1,28 @@
+// The tirectl subcommands. Each returns the process exit code: 0 success, 1 a check failed,
+// 2 bad input (unreadable or invalid files, bad arguments).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tirectl {
+
+struct RunOptions {
+  std::string level;
+  long long ticks = 60;
+  std::vector<std::string> overrides;
+  double steer = 0.0;
+  std::vector<long long> jump_at;
+};
+int run(const RunOptions& options);
+
+int validate(const std::vector<std::string>& files);
+
+struct BenchOptions {
+  std::vector<std::string> scenes;  // empty: all
+  int frames = 2000;
+  int repeats = 15;
+};
+int bench(const BenchOptions& options);
+
+}  // namespace tirectl

@@ -1,0 +1,45 @@
+// tirectl: the headless command line over the engine (see CONTRACTS.md "tirectl").
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tirectl: run, validate and measure soft-tire levels without a window"};
+  app.require_subcommand(1);
+
+  tirectl::RunOptions run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Step a level headless and print its final state as JSON");
+  run_cmd->add_option("level", run.level, "Level file (JSON)")->required();
+  run_cmd->add_option("--ticks", run.ticks, "Fixed ticks to step")->check(CLI::Range(0LL, 100000000LL));
+  run_cmd->add_option("--set", run.overrides, "Override a numeric key by dotted path, e.g. solver.substeps=16");
+  run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")->check(CLI::Range(-1.0, 1.0));
+  run_cmd->add_option("--jump-at", run.jump_at, "Ask the player to jump at this tick (repeatable)")
+      ->check(CLI::NonNegativeNumber);
+
+  std::vector<std::string> validate_files;
+  CLI::App* validate_cmd = app.add_subcommand("validate", "Check level files; one line per problem");
+  validate_cmd->add_option("files", validate_files, "Level files (JSON)")->required();
+
+  tirectl::BenchOptions bench;
+  CLI::App* bench_cmd = app.add_subcommand("bench", "Time the performance scenes; CSV on stdout");
+  bench_cmd->add_option("--scene", bench.scenes, "Only these scenes (repeatable; default all)");
+  bench_cmd->add_option("--frames", bench.frames, "Frames per timed batch")->check(CLI::Range(1, 1000000));
+  bench_cmd->add_option("--repeats", bench.repeats, "Timed batches per scene")->check(CLI::Range(1, 1000));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    if (*run_cmd) return tirectl::run(run);
+    if (*validate_cmd) return tirectl::validate(validate_files);
+    if (*bench_cmd) return tirectl::bench(bench);
+  } catch (const std::exception& e) {
+    std::cerr << "tirectl: " << e.what() << "\n";
+    return 2;
+  }
+  return 2;
+}

@@ -1,0 +1,58 @@
+#include <algorithm>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "level.h"
+#include "state_hash.h"
+#include "world.h"
+
+namespace tirectl {
+
+namespace {
+
+nlohmann::json vec(tire::Vec2 v) { return nlohmann::json::array({v.x, v.y}); }
+
+nlohmann::json summary(const tire::World& world) {
+  nlohmann::json tires = nlohmann::json::array();
+  for (const tire::Tire& t : world.tires())
+    tires.push_back({{"id", t.id},
+                     {"centroid", vec(t.centroid())},
+                     {"velocity", vec(t.velocity())},
+                     {"area_ratio", t.area_ratio()},
+                     {"grounded", t.grounded()}});
+  return {{"ticks", world.tick()},
+          {"time", world.time()},
+          {"status", "running"},
+          {"tires", tires},
+          {"props", nlohmann::json::array()},
+          {"hash", tire::to_hex(world.state_hash())}};
+}
+
+}  // namespace
+
+int run(const RunOptions& options) {
+  const tire::LevelLoad load = tire::load_level_file(options.level, options.overrides);
+  if (!load.level) {
+    for (const std::string& error : load.errors) std::cerr << error << "\n";
+    return 2;
+  }
+  tire::World world(load.level->solver, load.level->gravity);
+  tire::populate_world(*load.level, world);
+
+  std::vector<long long> jumps = options.jump_at;
+  std::sort(jumps.begin(), jumps.end());
+  auto next_jump = jumps.begin();
+  for (long long tick = 0; tick < options.ticks; ++tick) {
+    bool jump = false;
+    while (next_jump != jumps.end() && *next_jump == tick) jump = true, ++next_jump;
+    while (next_jump != jumps.end() && *next_jump < tick) ++next_jump;
+    world.step({options.steer, jump});
+    for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
+    world.warnings().clear();
+  }
+  std::cout << summary(world).dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace tirectl

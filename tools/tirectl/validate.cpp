@@ -1,0 +1,19 @@
+#include <iostream>
+
+#include "commands.h"
+#include "level.h"
+
+namespace tirectl {
+
+int validate(const std::vector<std::string>& files) {
+  int failed = 0;
+  for (const std::string& file : files) {
+    const tire::LevelLoad load = tire::load_level_file(file);
+    for (const std::string& error : load.errors) std::cerr << error << "\n";
+    if (load.level) std::cout << file << ": ok\n";
+    else ++failed;
+  }
+  return failed == 0 ? 0 : 2;
+}
+
+}  // namespace tirectl
