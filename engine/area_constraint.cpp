@@ -18,17 +18,14 @@ void polygon_area_gradient(const Vec2* x, std::uint32_t count, Vec2* grad) {
     grad[i] = area_gradient(x[(i + count - 1) % count], x[(i + 1) % count]);
 }
 
-void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const Vec2* x_prev,
-                           const double* w, const ProjectionStep& step) {
+void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const double* w, double inv_h2) {
   Vec2* p = x + c.first;
-  const Vec2* p_prev = x_prev + c.first;
   const double* wp = w + c.first;
   const std::uint32_t n = c.count;
 
-  // First pass: C, Σ w_i |∇_i C|² and ∇C·(x − xⁿ) at the current positions.
+  // First pass: C and Σ w_i |∇_i C|² at the current positions.
   double twice_area = 0.0;
   double sum_w_grad2 = 0.0;
-  double rate = 0.0;
   Vec2 prev = p[n - 1];
   for (std::uint32_t i = 0; i < n; ++i) {
     const Vec2 current = p[i];
@@ -36,15 +33,13 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
     twice_area += cross(prev, current);
     const Vec2 grad = area_gradient(prev, next);
     sum_w_grad2 += wp[i] * length_squared(grad);
-    if (step.gamma > 0.0) rate += dot(grad, current - p_prev[i]);
     prev = current;
   }
   const double C = 0.5 * twice_area - c.pressure * c.rest_area;
-  const double alpha_tilde = c.compliance * step.inv_h2;  // α̃ = α/h²  // α̃ = α/h²  (XPBD eq. 4)
-  const double denominator = (1.0 + step.gamma) * sum_w_grad2 + alpha_tilde;
+  const double alpha_tilde = c.compliance * inv_h2;  // α̃ = α/h²  (XPBD eq. 4)
+  const double denominator = sum_w_grad2 + alpha_tilde;
   if (denominator <= 0.0) return;
-  // Δλ = (−C − α̃λ − γ∇C(x − xⁿ)) / ((1 + γ)∇C M⁻¹ ∇Cᵀ + α̃)  (XPBD eq. 26)
-  const double delta_lambda = (-C - alpha_tilde * lambda - step.gamma * rate) / denominator;
+  const double delta_lambda = (-C - alpha_tilde * lambda) / denominator;  // XPBD eq. 18
   lambda += delta_lambda;
 
   // Second pass: Δx_i = w_i ∇_i C Δλ (XPBD eq. 17). Every gradient must use the positions before
@@ -57,6 +52,26 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
     prev_original = p[i];
     p[i] += grad * (wp[i] * delta_lambda);
   }
+}
+
+void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h) {
+  const Vec2* p = x + c.first;
+  Vec2* vp = v + c.first;
+  const double* wp = w + c.first;
+  const std::uint32_t n = c.count;
+  double rate = 0.0;  // dA/dt
+  double sum_w_grad2 = 0.0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec2 grad = area_gradient(p[i == 0 ? n - 1 : i - 1], p[i + 1 == n ? 0 : i + 1]);
+    rate += dot(grad, vp[i]);
+    sum_w_grad2 += wp[i] * length_squared(grad);
+  }
+  if (sum_w_grad2 <= 0.0) return;
+  const double chw = tau * h * sum_w_grad2;
+  const double removed = c.compliance > 0.0 ? chw / (c.compliance + chw) : 1.0;
+  const double impulse = rate * removed / sum_w_grad2;
+  for (std::uint32_t i = 0; i < n; ++i)
+    vp[i] -= area_gradient(p[i == 0 ? n - 1 : i - 1], p[i + 1 == n ? 0 : i + 1]) * (wp[i] * impulse);
 }
 
 }  // namespace tire

@@ -7,6 +7,7 @@
 // this substep (Müller's λ_n·w), and the Coulomb test λ_t < μ_s λ_n becomes |Δx_t| < μ_s·lambda_n.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -31,6 +32,46 @@ inline std::optional<SurfaceContact> box_contact(Vec2 p, const Aabb& box) {
   if (box.max.x - p.x < best.depth) best = {{1.0, 0.0}, box.max.x - p.x};   // right
   if (p.y - box.min.y < best.depth) best = {{0.0, -1.0}, p.y - box.min.y};  // bottom
   return best;
+}
+
+// Contact of a particle that moved from `from` (its position at the start of the substep) to `to`.
+// A particle that started outside the box and entered it, or crossed it entirely, is sent back
+// through the face it came in by (slab test on the segment); one that started inside gets the
+// minimal-overlap contact. With the anti-tunneling clamp this stops even walls thinner than one
+// substep's travel. Depth is measured from `to` to the entry face.
+inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const Aabb& box) {
+  // Cheap reject: the segment's bounds miss the box (touching counts as missing: no margin).
+  if (std::max(from.x, to.x) <= box.min.x || std::min(from.x, to.x) >= box.max.x ||
+      std::max(from.y, to.y) <= box.min.y || std::min(from.y, to.y) >= box.max.y)
+    return std::nullopt;
+  const bool started_inside = from.x > box.min.x && from.x < box.max.x && from.y > box.min.y && from.y < box.max.y;
+  if (started_inside) return box_contact(to, box);
+  // Slab test: the latest entry time over the axes is where the segment enters the box.
+  const Vec2 d = to - from;
+  double t_enter = 0.0, t_exit = 1.0;
+  Vec2 normal;
+  const double lo[2] = {box.min.x, box.min.y}, hi[2] = {box.max.x, box.max.y};
+  const double p0[2] = {from.x, from.y}, dp[2] = {d.x, d.y};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (dp[axis] == 0.0) {
+      if (p0[axis] <= lo[axis] || p0[axis] >= hi[axis]) return std::nullopt;
+      continue;
+    }
+    const double t0 = (lo[axis] - p0[axis]) / dp[axis];
+    const double t1 = (hi[axis] - p0[axis]) / dp[axis];
+    const double t_in = std::min(t0, t1), t_out = std::max(t0, t1);
+    if (t_in >= t_enter) {
+      t_enter = t_in;
+      normal = axis == 0 ? Vec2{dp[0] > 0.0 ? -1.0 : 1.0, 0.0} : Vec2{0.0, dp[1] > 0.0 ? -1.0 : 1.0};
+    }
+    t_exit = std::min(t_exit, t_out);
+  }
+  if (t_enter >= t_exit || normal == Vec2{}) return std::nullopt;
+  // Distance from `to` back to the entry face's plane, along its normal.
+  const double face = normal.x < 0 ? box.min.x : normal.x > 0 ? box.max.x : normal.y < 0 ? box.min.y : box.max.y;
+  const double depth = normal.x != 0.0 ? (face - to.x) * normal.x : (face - to.y) * normal.y;
+  if (depth <= 0.0) return std::nullopt;
+  return SurfaceContact{normal, depth};
 }
 
 // What friction needs to know about one particle's contact during one substep.

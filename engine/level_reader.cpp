@@ -41,7 +41,7 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   TireSpec t;
   if (!r.object(j, path,
                 {"position", "velocity", "angle", "angular_velocity", "outer_radius", "inner_radius",
-                 "segments", "mass", "friction", "kinetic_friction", "pressure", "compliance", "spokes", "material_damping",
+                 "segments", "mass", "friction", "kinetic_friction", "pressure", "compliance", "spokes", "material_damping", "rolling_resistance",
                  "player", "drive_acceleration", "jump_speed", "max_speed"}))
     return t;
   t.position = r.vec2(j, path, "position", t.position, kCoordinate, "m", true);
@@ -67,6 +67,7 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   t.spokes = r.choice(j, path, "spokes", "cross", {"radial", "cross"}) == "radial" ? SpokePattern::radial
                                                                                    : SpokePattern::cross;
   t.material_damping = r.number(j, path, "material_damping", t.material_damping, {0.0, 1.0}, "s");
+  t.rolling_resistance = r.number(j, path, "rolling_resistance", t.rolling_resistance, {0.0, 1.0}, "");
   t.player = r.boolean(j, path, "player", t.player);
   t.drive_acceleration = r.number(j, path, "drive_acceleration", t.drive_acceleration, {0.0, 1000.0}, "m/s^2");
   t.jump_speed = r.number(j, path, "jump_speed", t.jump_speed, {0.0, 100.0}, "m/s");

@@ -31,6 +31,8 @@ ObstacleField::ObstacleField() : world_(std::make_unique<b2World>(b2Vec2{0.0f, 0
 }
 
 ObstacleField::~ObstacleField() = default;
+ObstacleField::ObstacleField(ObstacleField&&) noexcept = default;
+ObstacleField& ObstacleField::operator=(ObstacleField&&) noexcept = default;
 
 std::uint32_t ObstacleField::add(const Obstacle& obstacle) {
   const auto index = static_cast<std::uint32_t>(obstacles_.size());

@@ -21,6 +21,8 @@ class ObstacleField {
   ~ObstacleField();
   ObstacleField(const ObstacleField&) = delete;
   ObstacleField& operator=(const ObstacleField&) = delete;
+  ObstacleField(ObstacleField&&) noexcept;
+  ObstacleField& operator=(ObstacleField&&) noexcept;
 
   std::uint32_t add(const Obstacle& obstacle);
   const std::vector<Obstacle>& obstacles() const { return obstacles_; }

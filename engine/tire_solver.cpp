@@ -57,7 +57,7 @@ void solve_obstacle_contacts(Tire& t, const SubstepContext& ctx) {
     const double mu_s = mix_friction(t.spec.friction, o.friction);
     const double mu_k = mix_friction(t.spec.kinetic_friction, o.friction);
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (const auto c = box_contact(p.x[i], o.box))
+      if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], o.box))
         resolve_contact(p.x[i], p.x_prev[i], *c, mu_s, mu_k, t.contacts[i]);
   }
 }
@@ -76,6 +76,26 @@ void damp(Tire& t, double damping, double h) {
   }
 }
 
+// Rolling resistance: a moment M_r = C_rr·N·R against the spin while grounded, with N the total
+// contact normal force, Σ m·λ_n/h² (λ_n kept as a distance, see contact.h). Applied as a change
+// of the rigid angular velocity about the hub, Δv_i = Δω × r_i: a pure moment, no net force; the
+// ground's friction then passes it on to the tire's motion, as it does for a real tire.
+void apply_rolling_resistance(Tire& t, double h) {
+  if (t.spec.rolling_resistance <= 0.0) return;
+  double lambda_sum = 0.0;
+  for (std::uint32_t i = 0; i < t.n; ++i) lambda_sum += t.contacts[i].lambda_n;
+  if (lambda_sum <= 0.0) return;
+  const double m = t.particle_mass();
+  const double normal_force = m * lambda_sum / (h * h);
+  const Vec2 c = t.centroid();
+  double inertia = 0.0;  // I = Σ m |r|²
+  for (const Vec2& x : t.particles.x) inertia += m * length_squared(x - c);
+  const double omega = t.angular_velocity();
+  const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / inertia;
+  const double change = std::abs(omega) <= max_change ? -omega : -std::copysign(max_change, omega);
+  for (std::size_t i = 0; i < t.particles.size(); ++i) t.particles.v[i] += perp(t.particles.x[i] - c) * change;
+}
+
 // Caps the hub's horizontal speed by shifting every particle alike (spin and shape untouched).
 void cap_horizontal_speed(Tire& t) {
   const double vx = t.velocity().x;
@@ -92,17 +112,20 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
     apply_kinetic_friction(p.v[i], c, ctx.h);
     t.grounded_flags[i] = c.active && c.normal.y >= ctx.config->ground_normal_y;
   }
+  if (const double tau = t.spec.material_damping; tau > 0.0) {
+    damp_distance_constraints(t.distance, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
+    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
+  }
   if (ctx.config->damping > 0.0) damp(t, ctx.config->damping, ctx.h);
+  apply_rolling_resistance(t, ctx.h);
   cap_horizontal_speed(t);
 }
-
-// Rayleigh damping proportional to stiffness, β = τ·k = τ/α, makes γ = α̃β̃/h = τ/h.
-ProjectionStep projection_step(const Tire& t, double h) { return {1.0 / (h * h), t.spec.material_damping / h}; }
 
 }  // namespace
 
 void begin_tick(Tire& t, const SolverConfig& config, const ObstacleField& obstacles) {
-  prepare_distance_constraints(t.distance, t.particles.w.data(), projection_step(t, config.dt / config.substeps));
+  const double h = config.dt / config.substeps;
+  prepare_distance_constraints(t.distance, t.particles.w.data(), 1.0 / (h * h));
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
@@ -117,11 +140,11 @@ void substep(Tire& t, const SubstepContext& ctx) {
   std::fill(t.distance_lambda.begin(), t.distance_lambda.end(), 0.0);
   t.area_lambda = 0.0;
   std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
-  const ProjectionStep step = projection_step(t, ctx.h);
+  const double inv_h2 = 1.0 / (ctx.h * ctx.h);
   Particles& p = t.particles;
   for (int it = 0; it < ctx.config->iterations; ++it) {
-    solve_distance_constraints(t.distance, t.distance_lambda, p.x.data(), p.x_prev.data(), p.w.data(), step.gamma);
-    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.x_prev.data(), p.w.data(), step);
+    solve_distance_constraints(t.distance, t.distance_lambda, p.x.data(), p.w.data());
+    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
     solve_obstacle_contacts(t, ctx);
   }
   update_velocities(t, ctx);

@@ -31,12 +31,15 @@ struct TireSpec {
   double pressure = 1.0;        // target area = pressure · rest area
   TireCompliance compliance;
   SpokePattern spokes = SpokePattern::cross;
-  // Material (Rayleigh) damping time τ (s): every constraint resists its own rate of change with a
-  // force τ·k·dC/dt. It is the rubber's hysteresis: it settles vibrations and gives rolling
-  // resistance. 0 is perfectly elastic.
-  double material_damping = 1e-4;
+  // Material damping time τ (s): a dashpot beside every constraint's spring (Kelvin–Voigt rubber),
+  // resisting its rate of change with a force τ·k·dC/dt. It is the rubber's hysteresis: it takes
+  // energy out of bounces and vibrations. 0 is perfectly elastic.
+  double material_damping = 5e-3;
+  // Rolling resistance coefficient C_rr: a grounded tire feels a moment C_rr·N·R against its spin
+  // (N the contact normal force), as in vehicle dynamics (SAE J2452); car tires are near 0.01.
+  double rolling_resistance = 0.01;
   bool player = false;
-  double drive_acceleration = 25.0;  // tangential acceleration of the tread at full steer (m/s²)
+  double drive_acceleration = 12.0;  // tangential acceleration of the tread at full steer (m/s²)
   double jump_speed = 5.0;           // upward speed a jump adds (m/s)
   double max_speed = 15.0;           // cap on the hub's horizontal speed and the tread's drive speed (m/s)
 };

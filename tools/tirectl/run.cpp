@@ -11,10 +11,10 @@ namespace tirectl {
 
 namespace {
 
-nlohmann::json vec(tire::Vec2 v) { return nlohmann::json::array({v.x, v.y}); }
+nlohmann::ordered_json vec(tire::Vec2 v) { return nlohmann::ordered_json::array({v.x, v.y}); }
 
-nlohmann::json summary(const tire::World& world) {
-  nlohmann::json tires = nlohmann::json::array();
+nlohmann::ordered_json summary(const tire::World& world) {
+  nlohmann::ordered_json tires = nlohmann::ordered_json::array();
   for (const tire::Tire& t : world.tires())
     tires.push_back({{"id", t.id},
                      {"centroid", vec(t.centroid())},
@@ -25,7 +25,7 @@ nlohmann::json summary(const tire::World& world) {
           {"time", world.time()},
           {"status", "running"},
           {"tires", tires},
-          {"props", nlohmann::json::array()},
+          {"props", nlohmann::ordered_json::array()},
           {"hash", tire::to_hex(world.state_hash())}};
 }
 

@@ -1,0 +1,123 @@
+// Level files are untrusted: every problem is found in one pass and named by its JSON path.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+
+#include "tire_fixtures.h"
+
+using namespace tire;
+using namespace tire::test;
+
+namespace {
+std::vector<std::string> errors_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  return load_level_text(text, "x.json", overrides).errors;
+}
+bool has(const std::vector<std::string>& errors, const std::string& needle) {
+  for (const std::string& e : errors)
+    if (e.find(needle) != std::string::npos) return true;
+  return false;
+}
+std::string joined(const std::vector<std::string>& errors) {
+  std::string out;
+  for (const std::string& e : errors) out += e + "\n";
+  return out;
+}
+}  // namespace
+
+TEST_CASE("every shipped level is valid", "[unit][level]") {
+  for (const auto& entry : std::filesystem::directory_iterator(source_path("levels"))) {
+    if (entry.path().extension() != ".json" || entry.path().filename() == "schema.json") continue;
+    const LevelLoad load = load_level_file(entry.path());
+    INFO(entry.path() << "\n" << joined(load.errors));
+    CHECK(load.level.has_value());
+  }
+}
+
+TEST_CASE("the default level reads as written", "[unit][level]") {
+  const Level level = default_level();
+  CHECK(level.name == "First roll");
+  CHECK(level.solver.substeps == 8);
+  REQUIRE(level.tires.size() == 1);
+  CHECK(level.tires[0].segments == 28);
+  CHECK(level.tires[0].compliance.inner == 1e-7);
+  CHECK(level.obstacles.size() >= 1);
+}
+
+TEST_CASE("all problems are reported in one pass with their JSON paths", "[unit][level]") {
+  const auto errors = errors_of(R"({
+    "name": "bad",
+    "solver": { "dt": 0, "substeps": 2.5, "iterations": "many" },
+    "tires": [ { "position": [0, 1], "segments": 2, "masss": 3, "inner_radius": 0.6 },
+               { "segments": 300, "mass": -1, "player": true },
+               { "position": [0, 1e9], "player": true, "spokes": "wire" } ],
+    "obstacles": [ { "min": [0, 0], "max": [0, 1] }, { "min": [0, 0] } ],
+    "extra": 1 })");
+  INFO(joined(errors));
+  CHECK(has(errors, "x.json: /solver/dt: must be a number in [0.0001, 0.1] s, got 0"));
+  CHECK(has(errors, "x.json: /solver/substeps: must be an integer in [1, 256], got 2.5"));
+  CHECK(has(errors, "x.json: /solver/iterations: must be an integer in [1, 64], got \"many\""));
+  CHECK(has(errors, "x.json: /tires/0/segments: must be an integer in [6, 256], got 2"));
+  CHECK(has(errors, "x.json: /tires/0/masss: unknown key; did you mean \"mass\"?"));
+  CHECK(has(errors, "x.json: /tires/0/inner_radius: must be less than outer_radius (0.5), got 0.6"));
+  CHECK(has(errors, "x.json: /tires/1/position: is required"));
+  CHECK(has(errors, "x.json: /tires/1/segments: must be an integer in [6, 256], got 300"));
+  CHECK(has(errors, "x.json: /tires/1/mass: must be a number in (0, 1e+06] kg, got -1"));
+  CHECK(has(errors, "x.json: /tires/2/position: must be [x, y] with each in [-10000, 10000] m, got [0,1000000000.0]"));
+  CHECK(has(errors, "x.json: /tires/2/player: only one tire may be the player, and /tires/1 already is"));
+  CHECK(has(errors, "x.json: /tires/2/spokes: must be one of \"radial\", \"cross\", got \"wire\""));
+  CHECK(has(errors, "x.json: /obstacles/0/max: must be greater than min on both axes"));
+  CHECK(has(errors, "x.json: /obstacles/1/max: is required"));
+  CHECK(has(errors, "x.json: /extra: unknown key; expected one of"));
+  CHECK(errors.size() == 15);
+}
+
+TEST_CASE("wrong shapes and missing names are reported, not crashed on", "[unit][level]") {
+  CHECK(has(errors_of("[]"), "x.json: /: must be an object, got []"));
+  CHECK(has(errors_of("{}"), "x.json: /name: is required: a string"));
+  CHECK(has(errors_of(R"({"name": "n", "tires": {}})"), "/tires: must be an array, got an object"));
+  CHECK(has(errors_of(R"({"name": "n", "tires": [7]})"), "/tires/0: must be an object, got 7"));
+  CHECK(has(errors_of(R"({"name": "n", "gravity": [1]})"), "/gravity: must be [x, y]"));
+  CHECK(has(errors_of(R"({"name": "n", "tires": [{"position": [0, 1], "compliance": {"outr": 1}}]})"),
+            "/tires/0/compliance/outr: unknown key; did you mean \"outer\"?"));
+}
+
+TEST_CASE("invalid JSON is reported with line and column", "[unit][level]") {
+  const auto errors = errors_of("{\n  \"name\": \"x\",\n  \"tires\": [ }\n}");
+  REQUIRE(errors.size() == 1);
+  CHECK(has(errors, "x.json: invalid JSON: parse error at line 3, column 14"));
+  CHECK(has(errors_of(""), "x.json: invalid JSON"));
+}
+
+TEST_CASE("nesting deeper than the limit is refused while parsing", "[unit][level]") {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  const auto errors = errors_of(deep);
+  REQUIRE(errors.size() == 1);
+  CHECK(has(errors, "nesting deeper than 64"));
+}
+
+TEST_CASE("a missing or oversized file is refused before it is read", "[unit][level]") {
+  CHECK(has(load_level_file("/nonexistent/level.json").errors, "/nonexistent/level.json: no such file"));
+  const auto big = std::filesystem::temp_directory_path() / "tire-oversized-level.json";
+  {
+    std::ofstream out(big, std::ios::binary);
+    out.seekp(static_cast<std::streamoff>(LevelLimits::max_file_bytes));
+    out.put(' ');
+  }
+  CHECK(has(load_level_file(big).errors, "the limit is 67108864"));
+  std::filesystem::remove(big);
+}
+
+TEST_CASE("set overrides numeric keys by dotted path, and validation judges the result", "[unit][level]") {
+  const std::string text = R"({"name": "n", "tires": [{"position": [0, 1]}]})";
+  LevelLoad load = load_level_text(text, "x.json", {"solver.substeps=16", "tires.0.mass=20", "tires.0.position.1=3"});
+  REQUIRE(load.level);
+  CHECK(load.level->solver.substeps == 16);
+  CHECK(load.level->tires[0].mass == 20);
+  CHECK(load.level->tires[0].position.y == 3);
+  CHECK(has(errors_of(text, {"solver.substeps=0"}), "/solver/substeps: must be an integer in [1, 256], got 0"));
+  CHECK(has(errors_of(text, {"solver.substepz=4"}), "/solver/substepz: unknown key; did you mean \"substeps\"?"));
+  CHECK(has(errors_of(text, {"tires.3.mass=1"}), "\"3\" is not an index of the 1-entry array"));
+  CHECK(has(errors_of(text, {"tires.0.mass=heavy"}), "value must be a number, got \"heavy\""));
+  CHECK(has(errors_of(text, {"tires=1"}), "is an object or array, not a number"));
+  CHECK(has(errors_of(text, {"nonsense"}), "expected key=value"));
+}

@@ -1,0 +1,37 @@
+# tirectl as a user runs it: exit codes 0 / 2 and the messages they read.
+set(EXPECT ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
+set(LEVELS ${PROJECT_SOURCE_DIR}/levels)
+set(BAD ${CMAKE_CURRENT_SOURCE_DIR}/levels)
+
+function(tirectl_test name code)
+  cmake_parse_arguments(T "" "STDOUT;STDERR" "ARGS" ${ARGN})
+  set(defs -DEXPECT_CODE=${code})
+  if(DEFINED T_STDOUT)
+    list(APPEND defs "-DEXPECT_STDOUT=${T_STDOUT}")
+  endif()
+  if(DEFINED T_STDERR)
+    list(APPEND defs "-DEXPECT_STDERR=${T_STDERR}")
+  endif()
+  string(REPLACE ";" "|" cmd "$<TARGET_FILE:tirectl>;${T_ARGS}")
+  add_test(NAME "tirectl ${name}" COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${EXPECT})
+  set_tests_properties("tirectl ${name}" PROPERTIES LABELS unit)
+endfunction()
+
+tirectl_test("validate accepts the default level" 0 ARGS validate ${LEVELS}/01-first-roll.json
+  STDOUT "01-first-roll.json: ok")
+tirectl_test("validate names file, path and expectation" 2 ARGS validate ${BAD}/bad-segments.json
+  STDERR "bad-segments.json: /tires/0/segments: must be an integer in \\[6, 256\\], got 2")
+tirectl_test("validate reports truncated JSON" 2 ARGS validate ${BAD}/bad-truncated.json
+  STDERR "bad-truncated.json: invalid JSON: parse error at line 1")
+tirectl_test("validate reports a missing file" 2 ARGS validate ${BAD}/no-such-level.json
+  STDERR "no-such-level.json: no such file")
+tirectl_test("run prints the final state" 0 ARGS run ${LEVELS}/01-first-roll.json --ticks 120 --steer 1
+  STDOUT "\"ticks\": 120,.*\"status\": \"running\".*\"centroid\".*\"area_ratio\".*\"grounded\".*\"hash\": \"[0-9a-f]+\"")
+tirectl_test("run refuses an invalid level" 2 ARGS run ${BAD}/bad-segments.json --ticks 10
+  STDERR "/tires/0/segments")
+tirectl_test("run applies --set and validates it" 2 ARGS run ${LEVELS}/01-first-roll.json --set solver.substeps=0
+  STDERR "/solver/substeps: must be an integer in \\[1, 256\\], got 0")
+tirectl_test("run refuses a steer outside [-1, 1]" 2 ARGS run ${LEVELS}/01-first-roll.json --steer 3)
+tirectl_test("unknown subcommand is a usage error" 2 ARGS fly)
+tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --frames 50 --repeats 2
+  STDOUT "^scene,tires,particles.*\nprototype,1,56,28,1,22,")
