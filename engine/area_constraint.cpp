@@ -24,17 +24,12 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
   const std::uint32_t n = c.count;
 
   // First pass: C and Σ w_i |∇_i C|² at the current positions.
-  double twice_area = 0.0;
-  double sum_w_grad2 = 0.0;
-  Vec2 prev = p[n - 1];
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Vec2 current = p[i];
-    const Vec2 next = p[i + 1 == n ? 0 : i + 1];
-    twice_area += cross(prev, current);
-    const Vec2 grad = area_gradient(prev, next);
-    sum_w_grad2 += wp[i] * length_squared(grad);
-    prev = current;
-  }
+  double twice_area = cross(p[n - 1], p[0]);
+  double sum_w_grad2 = wp[0] * length_squared(area_gradient(p[n - 1], p[1])) +
+                       wp[n - 1] * length_squared(area_gradient(p[n - 2], p[0]));
+  for (std::uint32_t i = 1; i < n; ++i) twice_area += cross(p[i - 1], p[i]);
+  for (std::uint32_t i = 1; i + 1 < n; ++i) sum_w_grad2 += wp[i] * length_squared(area_gradient(p[i - 1], p[i + 1]));
+
   const double C = 0.5 * twice_area - c.pressure * c.rest_area;
   const double alpha_tilde = c.compliance * inv_h2;  // α̃ = α/h²  (XPBD eq. 4)
   const double denominator = sum_w_grad2 + alpha_tilde;
@@ -46,12 +41,12 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
   // this update, so the original of the previous vertex (and of vertex 0) is carried along.
   const Vec2 first_original = p[0];
   Vec2 prev_original = p[n - 1];
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Vec2 next = (i + 1 == n) ? first_original : p[i + 1];
-    const Vec2 grad = area_gradient(prev_original, next);
+  for (std::uint32_t i = 0; i + 1 < n; ++i) {
+    const Vec2 grad = area_gradient(prev_original, p[i + 1]);
     prev_original = p[i];
     p[i] += grad * (wp[i] * delta_lambda);
   }
+  p[n - 1] += area_gradient(prev_original, first_original) * (wp[n - 1] * delta_lambda);
 }
 
 void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h) {

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "level.h"
+#include "level_reader.h"
 
 namespace tire {
 
@@ -36,6 +37,8 @@ TireCompliance read_compliance(JsonReader& r, const json& j, const std::string& 
   c.pressure = r.number(j, path, "pressure", c.pressure, kCompliance, "m^4/J");
   return c;
 }
+
+}  // namespace
 
 TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   TireSpec t;
@@ -74,6 +77,8 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   t.max_speed = r.number(j, path, "max_speed", t.max_speed, {0.0, 1000.0, true}, "m/s");
   return t;
 }
+
+namespace {
 
 Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
   Obstacle o;

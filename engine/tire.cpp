@@ -26,6 +26,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   contacts.resize(2 * n);
   grounded_flags.resize(2 * n);
   candidates.reserve(16);
+  pairs.reserve(4 * n);
 
   add_ring(distance, 0, n, spec.compliance.outer);
   add_ring(distance, n, n, spec.compliance.inner);

@@ -24,6 +24,15 @@ struct TireControl {
   bool jump = false;   // a jump request; consumed at the start of the tick
 };
 
+// A particle that may touch an obstacle during this substep (narrow-phase candidate), with the
+// friction of the pair already mixed.
+struct ContactPair {
+  std::uint32_t particle;
+  std::uint32_t obstacle;
+  double mu_static;
+  double mu_kinetic;
+};
+
 struct Tire {
   Tire(TireId id, const TireSpec& spec);
 
@@ -59,6 +68,7 @@ struct Tire {
   std::vector<ContactRecord> contacts;        // per particle, this substep
   std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
   std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
+  std::vector<ContactPair> pairs;             // particles near those obstacles this substep
   TireControl control;
 };
 

@@ -50,15 +50,33 @@ void predict(Tire& t, const SubstepContext& ctx) {
   predict_positions(p, h);
 }
 
-void solve_obstacle_contacts(Tire& t, const SubstepContext& ctx) {
-  Particles& p = t.particles;
+// Narrow phase, once per substep after prediction: the particles whose path this substep passes
+// within one segment length of a nearby obstacle. Only these are tested in the iterations (the
+// margin covers what the constraints move a particle within one substep).
+void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
+  const Particles& p = t.particles;
+  t.pairs.clear();
   for (const std::uint32_t k : t.candidates) {
     const Obstacle& o = (*ctx.obstacles)[k];
+    const Aabb near = o.box.expanded(t.segment_length);
     const double mu_s = mix_friction(t.spec.friction, o.friction);
     const double mu_k = mix_friction(t.spec.kinetic_friction, o.friction);
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], o.box))
-        resolve_contact(p.x[i], p.x_prev[i], *c, mu_s, mu_k, t.contacts[i]);
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+      const Vec2 a = p.x_prev[i], b = p.x[i];
+      if (std::max(a.x, b.x) < near.min.x || std::min(a.x, b.x) > near.max.x ||
+          std::max(a.y, b.y) < near.min.y || std::min(a.y, b.y) > near.max.y)
+        continue;
+      t.pairs.push_back({i, k, mu_s, mu_k});
+    }
+  }
+}
+
+void solve_obstacle_contacts(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  for (const ContactPair& pair : t.pairs) {
+    const std::uint32_t i = pair.particle;
+    if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], (*ctx.obstacles)[pair.obstacle].box))
+      resolve_contact(p.x[i], p.x_prev[i], *c, pair.mu_static, pair.mu_kinetic, t.contacts[i]);
   }
 }
 
@@ -137,6 +155,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const ObstacleField& obstac
 
 void substep(Tire& t, const SubstepContext& ctx) {
   predict(t, ctx);
+  find_contact_pairs(t, ctx);
   std::fill(t.distance_lambda.begin(), t.distance_lambda.end(), 0.0);
   t.area_lambda = 0.0;
   std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
