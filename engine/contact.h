@@ -44,8 +44,16 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
   if (std::max(from.x, to.x) <= box.min.x || std::min(from.x, to.x) >= box.max.x ||
       std::max(from.y, to.y) <= box.min.y || std::min(from.y, to.y) >= box.max.y)
     return std::nullopt;
-  const bool started_inside = from.x > box.min.x && from.x < box.max.x && from.y > box.min.y && from.y < box.max.y;
-  if (started_inside) return box_contact(to, box);
+  const bool inside_x = from.x > box.min.x && from.x < box.max.x;
+  const bool inside_y = from.y > box.min.y && from.y < box.max.y;
+  if (inside_x && inside_y) return box_contact(to, box);
+  // Common case, exactly: the particle is now inside and started outside one slab only, so it came
+  // in through that slab's face (a particle resting on the ground starts each substep on it).
+  const bool now_inside = to.x > box.min.x && to.x < box.max.x && to.y > box.min.y && to.y < box.max.y;
+  if (now_inside && inside_x)
+    return from.y >= box.max.y ? SurfaceContact{{0.0, 1.0}, box.max.y - to.y} : SurfaceContact{{0.0, -1.0}, to.y - box.min.y};
+  if (now_inside && inside_y)
+    return from.x >= box.max.x ? SurfaceContact{{1.0, 0.0}, box.max.x - to.x} : SurfaceContact{{-1.0, 0.0}, to.x - box.min.x};
   // Slab test: the latest entry time over the axes is where the segment enters the box.
   const Vec2 d = to - from;
   double t_enter = 0.0, t_exit = 1.0;

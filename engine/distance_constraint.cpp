@@ -1,51 +1,205 @@
 #include "distance_constraint.h"
 
+#include <algorithm>
 #include <cmath>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define TIRE_HAVE_AVX_PATH 1
+#endif
 
 namespace tire {
 
-void prepare_distance_constraints(std::span<DistanceConstraint> constraints, const double* w, double inv_h2) {
-  for (DistanceConstraint& c : constraints) {
-    c.alpha_tilde = c.compliance * inv_h2;
-    const double denominator = w[c.a] + w[c.b] + c.alpha_tilde;  // ∇C M⁻¹ ∇Cᵀ + α̃, |∇C| = 1 per end
-    c.inv_denominator = denominator > 0.0 ? 1.0 / denominator : 0.0;
+DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> constraints)
+    : constraints_(std::move(constraints)) {
+  // Greedy, in order: a constraint joins the open batch unless it shares a particle with it.
+  Batch open{};
+  auto close = [&] {
+    if (open.count == 0) return;
+    for (std::uint32_t l = open.count; l < kLanes; ++l) open.a[l] = open.b[l] = open.a[0];
+    batches_.push_back(open);
+    open = Batch{};
+  };
+  for (const DistanceConstraint& c : constraints_) {
+    bool shares = false;
+    for (std::uint32_t l = 0; l < open.count; ++l)
+      shares |= open.a[l] == c.a || open.a[l] == c.b || open.b[l] == c.a || open.b[l] == c.b;
+    if (shares) close();
+    const std::uint32_t l = open.count++;
+    open.a[l] = c.a;
+    open.b[l] = c.b;
+    open.rest_length[l] = c.rest_length;
+    open.compliance[l] = c.compliance;
+    if (open.count == kLanes) close();
+  }
+  close();
+}
+
+void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
+  const double inv_h2 = 1.0 / (h * h);
+  for (Batch& batch : batches_) {
+    for (std::uint32_t l = 0; l < kLanes; ++l) {
+      const bool used = l < batch.count;
+      batch.w_a[l] = used ? w[batch.a[l]] : 0.0;
+      batch.w_b[l] = used ? w[batch.b[l]] : 0.0;
+      batch.alpha_tilde[l] = used ? batch.compliance[l] * inv_h2 : 0.0;  // α̃ = α/h²  (XPBD eq. 4)
+      // ∇C M⁻¹ ∇Cᵀ + α̃ with |∇C| = 1 at each end
+      const double denominator = batch.w_a[l] + batch.w_b[l] + batch.alpha_tilde[l];
+      batch.inv_denominator[l] = denominator > 0.0 ? 1.0 / denominator : 0.0;
+      // The dashpot's impulse per unit rate: rate·removed/W with removed = chW/(1 + chW), c = τ/α,
+      // simplifies to τh/(α + τhW), which also covers α = 0 (all of the rate removed).
+      const double tau_h = tau * h, w_sum = batch.w_a[l] + batch.w_b[l];
+      const double damping_denominator = batch.compliance[l] + tau_h * w_sum;
+      batch.damping[l] = used && tau_h > 0.0 && w_sum > 0.0 ? tau_h / damping_denominator : 0.0;
+    }
   }
 }
 
-void solve_distance_constraints(std::span<const DistanceConstraint> constraints,
-                                std::span<double> lambda, Vec2* x, const double* w) {
-  for (std::size_t k = 0; k < constraints.size(); ++k) {
-    const DistanceConstraint& c = constraints[k];
-    const Vec2 d = x[c.b] - x[c.a];
-    const double len = std::sqrt(dot(d, d));
-    if (len <= 0.0) continue;  // coincident: ∇C undefined
-    const Vec2 n = d * (1.0 / len);  // ∇_{x_b}C
-    // Δλ = (−C − α̃λ) / (∇C M⁻¹ ∇Cᵀ + α̃)  (XPBD eq. 18)
-    const double delta_lambda = (c.rest_length - len - c.alpha_tilde * lambda[k]) * c.inv_denominator;
-    lambda[k] += delta_lambda;
-    // Δx = M⁻¹ ∇Cᵀ Δλ  (XPBD eq. 17)
-    x[c.a] -= n * (w[c.a] * delta_lambda);
-    x[c.b] += n * (w[c.b] * delta_lambda);
+void DistanceConstraintSet::reset_lambda() {
+  for (Batch& batch : batches_) std::fill(std::begin(batch.lambda), std::end(batch.lambda), 0.0);
+}
+
+double DistanceConstraintSet::lambda(std::size_t k) const {
+  // Batches keep the constraints' order, so walk them to find constraint k.
+  for (const Batch& batch : batches_) {
+    if (k < batch.count) return batch.lambda[k];
+    k -= batch.count;
+  }
+  return 0.0;
+}
+
+namespace {
+
+// The projection of one lane, written so that the vector path below performs the very same
+// operations in the same order:
+//   n = (x_b − x_a)/|x_b − x_a|, C = |x_b − x_a| − L0,
+//   Δλ = (−C − α̃λ) / (w_a + w_b + α̃)   (XPBD eq. 18),
+//   x_a −= w_a Δλ n,  x_b += w_b Δλ n  (XPBD eq. 17).
+// A zero length (coincident particles) gets n = 0: λ still accumulates, nothing moves.
+template <typename B>
+void solve_scalar(B& batch, Vec2* x) {
+  for (std::uint32_t l = 0; l < batch.count; ++l) {
+    const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
+    const double dx = xb.x - xa.x, dy = xb.y - xa.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    const double inv_len = len > 0.0 ? 1.0 / len : 0.0;
+    const double delta_lambda =
+        ((batch.rest_length[l] - len) - batch.alpha_tilde[l] * batch.lambda[l]) * batch.inv_denominator[l];
+    batch.lambda[l] += delta_lambda;
+    const double nx = dx * inv_len, ny = dy * inv_len;
+    const double sa = batch.w_a[l] * delta_lambda, sb = batch.w_b[l] * delta_lambda;
+    x[batch.a[l]] = {xa.x - nx * sa, xa.y - ny * sa};
+    x[batch.b[l]] = {xb.x + nx * sb, xb.y + ny * sb};
   }
 }
 
-void damp_distance_constraints(std::span<const DistanceConstraint> constraints, const Vec2* x, Vec2* v,
-                               const double* w, double tau, double h) {
-  for (const DistanceConstraint& c : constraints) {
-    const double w_sum = w[c.a] + w[c.b];
-    if (w_sum <= 0.0) continue;
-    const Vec2 d = x[c.b] - x[c.a];
-    const double len = std::sqrt(dot(d, d));
-    if (len <= 0.0) continue;
-    const Vec2 n = d * (1.0 / len);
-    const double rate = dot(n, v[c.b] - v[c.a]);  // dC/dt
-    // Fraction of the rate removed: c h W / (1 + c h W) with c = τ/α; all of it when α = 0.
-    const double chw = tau * h * w_sum;
-    const double removed = c.compliance > 0.0 ? chw / (c.compliance + chw) : 1.0;
-    const double impulse = rate * removed / w_sum;  // per unit ∇C, shared by inverse mass
-    v[c.a] += n * (w[c.a] * impulse);
-    v[c.b] -= n * (w[c.b] * impulse);
+// The dashpot of one lane, in the same operations and order as the vector path below:
+// n as in solve_scalar, dC/dt = n·(v_b − v_a), p = dC/dt · damping, v_a += w_a p n, v_b −= w_b p n.
+template <typename B>
+void damp_scalar(const B& batch, const Vec2* x, Vec2* v) {
+  for (std::uint32_t l = 0; l < batch.count; ++l) {
+    const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
+    const Vec2 va = v[batch.a[l]], vb = v[batch.b[l]];
+    const double dx = xb.x - xa.x, dy = xb.y - xa.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    const double inv_len = len > 0.0 ? 1.0 / len : 0.0;
+    const double nx = dx * inv_len, ny = dy * inv_len;
+    const double rate = nx * (vb.x - va.x) + ny * (vb.y - va.y);
+    const double impulse = rate * batch.damping[l];
+    const double sa = batch.w_a[l] * impulse, sb = batch.w_b[l] * impulse;
+    v[batch.a[l]] = {va.x + nx * sa, va.y + ny * sa};
+    v[batch.b[l]] = {vb.x - nx * sb, vb.y - ny * sb};
   }
+}
+
+#ifdef TIRE_HAVE_AVX_PATH
+// Four particles' (x, y) → (x0 x1 x2 x3), (y0 y1 y2 y3).
+__attribute__((target("avx"))) inline void gather(const Vec2* x, const std::uint32_t* idx, __m256d& px,
+                                                   __m256d& py) {
+  const __m128d p0 = _mm_loadu_pd(&x[idx[0]].x), p1 = _mm_loadu_pd(&x[idx[1]].x);
+  const __m128d p2 = _mm_loadu_pd(&x[idx[2]].x), p3 = _mm_loadu_pd(&x[idx[3]].x);
+  const __m256d t02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p0), p2, 1);  // x0 y0 x2 y2
+  const __m256d t13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p1), p3, 1);  // x1 y1 x3 y3
+  px = _mm256_unpacklo_pd(t02, t13);
+  py = _mm256_unpackhi_pd(t02, t13);
+}
+
+// Writes lane l's (px, py) to x[idx[l]] for the lanes in use.
+__attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t* idx, std::uint32_t count,
+                                                    __m256d px, __m256d py) {
+  const __m256d t02 = _mm256_unpacklo_pd(px, py);  // x0 y0 x2 y2
+  const __m256d t13 = _mm256_unpackhi_pd(px, py);  // x1 y1 x3 y3
+  _mm_storeu_pd(&x[idx[0]].x, _mm256_castpd256_pd128(t02));
+  if (count > 1) _mm_storeu_pd(&x[idx[1]].x, _mm256_castpd256_pd128(t13));
+  if (count > 2) _mm_storeu_pd(&x[idx[2]].x, _mm256_extractf128_pd(t02, 1));
+  if (count > 3) _mm_storeu_pd(&x[idx[3]].x, _mm256_extractf128_pd(t13, 1));
+}
+
+template <typename B>
+__attribute__((target("avx"))) void solve_avx(B* batches, std::size_t n, Vec2* x) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    B& batch = batches[k];
+    __m256d ax, ay, bx, by;
+    gather(x, batch.a, ax, ay);
+    gather(x, batch.b, bx, by);
+    const __m256d dx = _mm256_sub_pd(bx, ax), dy = _mm256_sub_pd(by, ay);
+    const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
+    const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
+    const __m256d lambda = _mm256_load_pd(batch.lambda);
+    const __m256d delta_lambda = _mm256_mul_pd(
+        _mm256_sub_pd(_mm256_sub_pd(_mm256_load_pd(batch.rest_length), len),
+                      _mm256_mul_pd(_mm256_load_pd(batch.alpha_tilde), lambda)),
+        _mm256_load_pd(batch.inv_denominator));
+    _mm256_store_pd(batch.lambda, _mm256_add_pd(lambda, delta_lambda));
+    const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
+    const __m256d sa = _mm256_mul_pd(_mm256_load_pd(batch.w_a), delta_lambda);
+    const __m256d sb = _mm256_mul_pd(_mm256_load_pd(batch.w_b), delta_lambda);
+    scatter(x, batch.a, batch.count, _mm256_sub_pd(ax, _mm256_mul_pd(nx, sa)), _mm256_sub_pd(ay, _mm256_mul_pd(ny, sa)));
+    scatter(x, batch.b, batch.count, _mm256_add_pd(bx, _mm256_mul_pd(nx, sb)), _mm256_add_pd(by, _mm256_mul_pd(ny, sb)));
+  }
+}
+
+template <typename B>
+__attribute__((target("avx"))) void damp_avx(const B* batches, std::size_t n, const Vec2* x, Vec2* v) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const B& batch = batches[k];
+    __m256d ax, ay, bx, by, vax, vay, vbx, vby;
+    gather(x, batch.a, ax, ay);
+    gather(x, batch.b, bx, by);
+    gather(v, batch.a, vax, vay);
+    gather(v, batch.b, vbx, vby);
+    const __m256d dx = _mm256_sub_pd(bx, ax), dy = _mm256_sub_pd(by, ay);
+    const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
+    const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
+    const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
+    const __m256d rate = _mm256_add_pd(_mm256_mul_pd(nx, _mm256_sub_pd(vbx, vax)), _mm256_mul_pd(ny, _mm256_sub_pd(vby, vay)));
+    const __m256d impulse = _mm256_mul_pd(rate, _mm256_load_pd(batch.damping));
+    const __m256d sa = _mm256_mul_pd(_mm256_load_pd(batch.w_a), impulse);
+    const __m256d sb = _mm256_mul_pd(_mm256_load_pd(batch.w_b), impulse);
+    scatter(v, batch.a, batch.count, _mm256_add_pd(vax, _mm256_mul_pd(nx, sa)), _mm256_add_pd(vay, _mm256_mul_pd(ny, sa)));
+    scatter(v, batch.b, batch.count, _mm256_sub_pd(vbx, _mm256_mul_pd(nx, sb)), _mm256_sub_pd(vby, _mm256_mul_pd(ny, sb)));
+  }
+}
+
+const bool kCpuHasAvx = __builtin_cpu_supports("avx");
+#endif
+
+}  // namespace
+
+void DistanceConstraintSet::solve(Vec2* x) {
+#ifdef TIRE_HAVE_AVX_PATH
+  if (kCpuHasAvx && kernel_ == Kernel::automatic) return solve_avx(batches_.data(), batches_.size(), x);
+#endif
+  for (Batch& batch : batches_) solve_scalar(batch, x);
+}
+
+void DistanceConstraintSet::damp(const Vec2* x, Vec2* v) {
+#ifdef TIRE_HAVE_AVX_PATH
+  if (kCpuHasAvx && kernel_ == Kernel::automatic) return damp_avx(batches_.data(), batches_.size(), x, v);
+#endif
+  for (const Batch& batch : batches_) damp_scalar(batch, x, v);
 }
 
 }  // namespace tire

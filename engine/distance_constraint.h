@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "vec2.h"
 
@@ -15,9 +16,6 @@ struct DistanceConstraint {
   std::uint32_t b = 0;
   double rest_length = 0.0;  // L0 (m)
   double compliance = 0.0;   // α (m/N): inverse stiffness; 0 is rigid
-  // Derived once per tick by prepare_distance_constraints (h and the masses are fixed within it):
-  double alpha_tilde = 0.0;      // α̃ = α/h²  (XPBD eq. 4)
-  double inv_denominator = 0.0;  // 1 / (w_a + w_b + α̃), 0 when both ends are pinned
 };
 
 // C and ∇_{x_b}C = (x_b − x_a)/|x_b − x_a|; ∇_{x_a}C = −∇_{x_b}C. When the two particles coincide
@@ -34,21 +32,60 @@ inline DistanceEval evaluate_distance(Vec2 xa, Vec2 xb, double rest_length) {
   return {len - rest_length, d * (1.0 / len)};
 }
 
-// Derives α̃ and the inverse denominator for substep h (inv_h2 = 1/h²).
-void prepare_distance_constraints(std::span<DistanceConstraint> constraints, const double* w, double inv_h2);
+// A set of distance constraints laid out for the solver: in their Gauss–Seidel order, cut into
+// batches of up to four that share no particle, stored lane by lane. Constraints in a batch are
+// independent, so solving them together is exactly solving them one after the other, and one
+// vector instruction serves all four (AVX where the CPU has it; otherwise the same arithmetic lane
+// by lane, which gives the same bits: IEEE sqrt and division are correctly rounded either way).
+class DistanceConstraintSet {
+ public:
+  static constexpr int kLanes = 4;
 
-// One Gauss–Seidel sweep over `constraints`, always in the same order: the sweep's unconverged
-// residual must look the same every substep, or v = (x − x_prev)/h turns its change into energy.
-// `lambda[k]` is constraint k's accumulated multiplier for this substep.
-void solve_distance_constraints(std::span<const DistanceConstraint> constraints,
-                                std::span<double> lambda, Vec2* x, const double* w);
+  DistanceConstraintSet() = default;
+  explicit DistanceConstraintSet(std::vector<DistanceConstraint> constraints);
 
-// Kelvin–Voigt damping in the velocity pass (as Müller et al. 2020, Sec. 3.6, damp in theirs): a
-// dashpot c = τ/α in parallel with each constraint's spring (stiffness-proportional, Rayleigh) acts
-// on the rate dC/dt = ∇C·v. Integrated implicitly over h, the rate decays by the factor
-// 1/(1 + c·h·(w_a + w_b)), so it is stable for any c; a rigid constraint (α = 0) loses all of it.
-// At rest there is no rate: the static solution is untouched.
-void damp_distance_constraints(std::span<const DistanceConstraint> constraints, const Vec2* x, Vec2* v,
-                               const double* w, double tau, double h);
+  const std::vector<DistanceConstraint>& constraints() const { return constraints_; }
+  std::size_t size() const { return constraints_.size(); }
+  std::size_t batch_count() const { return batches_.size(); }
+
+  // Derives, for substep h and damping time τ, α̃ = α/h² (XPBD eq. 4), the inverse masses,
+  // 1/(w_a + w_b + α̃) and the dashpot factor of damp(). Call whenever h, τ, a mass or a compliance
+  // changes (the tire does, every tick).
+  void prepare(const double* w, double h, double tau = 0.0);
+  void reset_lambda();
+  double lambda(std::size_t k) const;  // constraint k's accumulated multiplier this substep
+
+  // One Gauss–Seidel sweep, always in the same order: the sweep's unconverged residual must look
+  // the same every substep, or v = (x − x_prev)/h turns its change into energy.
+  void solve(Vec2* x);
+
+  // Kelvin–Voigt damping in the velocity pass (as Müller et al. 2020, Sec. 3.6, damp in theirs): a
+  // dashpot c = τ/α in parallel with each constraint's spring (stiffness-proportional, Rayleigh)
+  // acts on the rate dC/dt = ∇C·v. Integrated implicitly over h, the rate decays by the factor
+  // 1/(1 + c·h·(w_a + w_b)), so it is stable for any c; a rigid constraint (α = 0) loses all of
+  // it. At rest there is no rate: the static solution is untouched. Uses the τ and h of prepare().
+  void damp(const Vec2* x, Vec2* v);
+
+  enum class Kernel { automatic, scalar };  // scalar: force the portable path (tests compare them)
+  void set_kernel(Kernel kernel) { kernel_ = kernel; }
+
+ private:
+  struct alignas(32) Batch {
+    std::uint32_t a[kLanes];
+    std::uint32_t b[kLanes];
+    double rest_length[kLanes];
+    double compliance[kLanes];
+    double alpha_tilde[kLanes];
+    double inv_denominator[kLanes];  // 1 / (w_a + w_b + α̃); 0 for pinned pairs and empty lanes
+    double w_a[kLanes];
+    double w_b[kLanes];
+    double lambda[kLanes];
+    double damping[kLanes];  // τh / (α + τh(w_a + w_b)): dashpot impulse per unit of dC/dt
+    std::uint32_t count;     // lanes in use
+  };
+  std::vector<DistanceConstraint> constraints_;
+  std::vector<Batch> batches_;
+  Kernel kernel_ = Kernel::automatic;
+};
 
 }  // namespace tire

@@ -27,22 +27,21 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   grounded_flags.resize(2 * n);
   candidates.reserve(16);
   pairs.reserve(4 * n);
+  scratch.resize(n);
 
-  add_ring(distance, 0, n, spec.compliance.outer);
-  add_ring(distance, n, n, spec.compliance.inner);
-  for (std::uint32_t i = 0; i < n; ++i) distance.push_back({n + i, i, 0.0, spec.compliance.spoke});
+  std::vector<DistanceConstraint> list;
+  add_ring(list, 0, n, spec.compliance.outer);
+  add_ring(list, n, n, spec.compliance.inner);
+  for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, i, 0.0, spec.compliance.spoke});
   if (spec.spokes == SpokePattern::cross) {
-    for (std::uint32_t i = 0; i < n; ++i)
-      distance.push_back({n + i, (i + 1) % n, 0.0, spec.compliance.spoke});
-    for (std::uint32_t i = 0; i < n; ++i)
-      distance.push_back({n + i, (i + n - 1) % n, 0.0, spec.compliance.spoke});
+    for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + 1) % n, 0.0, spec.compliance.spoke});
+    for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + n - 1) % n, 0.0, spec.compliance.spoke});
   }
-  distance_lambda.assign(distance.size(), 0.0);
   area_constraint = {0, n, 0.0, spec.pressure, spec.compliance.pressure};
   reset();
   // Rest lengths and rest area are those of the tire as built, so it starts in equilibrium.
-  for (DistanceConstraint& c : distance)
-    c.rest_length = length(particles.x[c.b] - particles.x[c.a]);
+  for (DistanceConstraint& c : list) c.rest_length = length(particles.x[c.b] - particles.x[c.a]);
+  distance = DistanceConstraintSet(std::move(list));
   area_constraint.rest_area = polygon_area(particles.x.data(), n);
 }
 
@@ -64,7 +63,7 @@ void Tire::reset() {
   std::fill(particles.w.begin(), particles.w.end(), w);
   std::fill(contacts.begin(), contacts.end(), ContactRecord{});
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
-  std::fill(distance_lambda.begin(), distance_lambda.end(), 0.0);
+  distance.reset_lambda();
   area_lambda = 0.0;
   control = {};
 }
@@ -81,17 +80,18 @@ Vec2 Tire::centroid() const { return mean(particles.x); }
 
 Vec2 Tire::velocity() const { return mean(particles.v); }
 
-double Tire::angular_velocity() const {
-  const Vec2 c = centroid();
-  const Vec2 vc = velocity();
-  double momentum = 0.0;  // per unit particle mass
+RigidMotion Tire::rigid_motion() const {
+  RigidMotion m{centroid(), velocity(), 0.0, 0.0};
+  double momentum = 0.0;  // L and I per unit particle mass
   double inertia = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    const Vec2 r = particles.x[i] - c;
-    momentum += cross(r, particles.v[i] - vc);
+    const Vec2 r = particles.x[i] - m.centroid;
+    momentum += cross(r, particles.v[i] - m.velocity);
     inertia += length_squared(r);
   }
-  return inertia > 0.0 ? momentum / inertia : 0.0;
+  m.omega = inertia > 0.0 ? momentum / inertia : 0.0;
+  m.inertia = inertia * particle_mass();
+  return m;
 }
 
 double Tire::area() const { return polygon_area(particles.x.data(), n); }

@@ -33,6 +33,14 @@ struct ContactPair {
   double mu_kinetic;
 };
 
+// The tire's motion as a rigid body: what the hub does. Every particle has the same mass m.
+struct RigidMotion {
+  Vec2 centroid;          // hub (m)
+  Vec2 velocity;          // of the hub (m/s)
+  double omega = 0.0;     // angular velocity about the hub (rad/s, CCW): L / I
+  double inertia = 0.0;   // I = Σ m |r|² about the hub (kg m²)
+};
+
 struct Tire {
   Tire(TireId id, const TireSpec& spec);
 
@@ -47,7 +55,8 @@ struct Tire {
   // Every particle has the same mass, so mass-weighted means are plain means.
   Vec2 centroid() const;             // mass-weighted centroid of all particles (the hub)
   Vec2 velocity() const;             // mass-weighted mean velocity
-  double angular_velocity() const;   // about the centroid (rad/s, CCW positive)
+  double angular_velocity() const { return rigid_motion().omega; }
+  RigidMotion rigid_motion() const;
   double area() const;               // current area of the outer ring (m²)
   double area_ratio() const { return area() / area_constraint.rest_area; }
   bool grounded() const;             // an outer particle touched ground in the last substep
@@ -60,8 +69,7 @@ struct Tire {
   double segment_length;        // rest length of one outer-ring segment (m)
 
   Particles particles;
-  std::vector<DistanceConstraint> distance;  // ordered so consecutive entries rarely share a particle
-  std::vector<double> distance_lambda;
+  DistanceConstraintSet distance;  // rings, then spokes; ordered so neighbours rarely share a particle
   AreaConstraint area_constraint;
   double area_lambda = 0.0;
 
@@ -69,6 +77,7 @@ struct Tire {
   std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
   std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
   std::vector<ContactPair> pairs;             // particles near those obstacles this substep
+  std::vector<Vec2> scratch;                  // per outer particle: area gradients
   TireControl control;
 };
 

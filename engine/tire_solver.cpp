@@ -21,10 +21,10 @@ Aabb bounds(const std::vector<Vec2>& x) {
 
 // Angular acceleration (rad/s², CCW positive) that steering asks for this substep: the tread is
 // driven at drive_acceleration·|steer| until its speed reaches max_speed·|steer|.
-double drive_angular_acceleration(const Tire& t) {
+double drive_angular_acceleration(const Tire& t, const RigidMotion& motion) {
   const double steer = std::clamp(t.control.steer, -1.0, 1.0);
   if (steer == 0.0) return 0.0;
-  const double tread_speed = -t.angular_velocity() * t.spec.outer_radius;  // > 0 rolling to +x
+  const double tread_speed = -motion.omega * t.spec.outer_radius;  // > 0 rolling to +x
   const double target = steer * t.spec.max_speed;
   if (steer > 0.0 ? tread_speed >= target : tread_speed <= target) return 0.0;
   return -steer * t.spec.drive_acceleration / t.spec.outer_radius;
@@ -36,8 +36,9 @@ double drive_angular_acceleration(const Tire& t) {
 void predict(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   const double h = ctx.h;
-  const double alpha = drive_angular_acceleration(t);
-  const Vec2 hub = alpha != 0.0 ? t.centroid() : Vec2{};
+  const RigidMotion motion = t.control.steer != 0.0 ? t.rigid_motion() : RigidMotion{};
+  const double alpha = drive_angular_acceleration(t, motion);
+  const Vec2 hub = motion.centroid;
   const double v_max = ctx.config->tunnel_clamp * t.segment_length / h;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.w[i] == 0.0) continue;
@@ -81,15 +82,12 @@ void solve_obstacle_contacts(Tire& t, const SubstepContext& ctx) {
 }
 
 // Momentum-conserving damping (Müller et al. 2007, "Position Based Dynamics", Sec. 3.5): only the
-// deviation from the tire's rigid motion decays, at rate `damping` per second.
-void damp(Tire& t, double damping, double h) {
+// deviation from the tire's rigid motion decays, at rate `damping` per second. Leaves `m` as is.
+void damp_deviation(Tire& t, const RigidMotion& m, double damping, double h) {
   const double k = 1.0 - std::exp(-damping * h);
   Particles& p = t.particles;
-  const Vec2 c = t.centroid();
-  const Vec2 vc = t.velocity();
-  const double omega = t.angular_velocity();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec2 rigid = vc + perp(p.x[i] - c) * omega;
+    const Vec2 rigid = m.velocity + perp(p.x[i] - m.centroid) * m.omega;
     p.v[i] += (rigid - p.v[i]) * k;
   }
 }
@@ -98,28 +96,25 @@ void damp(Tire& t, double damping, double h) {
 // contact normal force, Σ m·λ_n/h² (λ_n kept as a distance, see contact.h). Applied as a change
 // of the rigid angular velocity about the hub, Δv_i = Δω × r_i: a pure moment, no net force; the
 // ground's friction then passes it on to the tire's motion, as it does for a real tire.
-void apply_rolling_resistance(Tire& t, double h) {
-  if (t.spec.rolling_resistance <= 0.0) return;
+void apply_rolling_resistance(Tire& t, RigidMotion& m, double h) {
+  if (t.spec.rolling_resistance <= 0.0 || m.inertia <= 0.0) return;
   double lambda_sum = 0.0;
   for (std::uint32_t i = 0; i < t.n; ++i) lambda_sum += t.contacts[i].lambda_n;
   if (lambda_sum <= 0.0) return;
-  const double m = t.particle_mass();
-  const double normal_force = m * lambda_sum / (h * h);
-  const Vec2 c = t.centroid();
-  double inertia = 0.0;  // I = Σ m |r|²
-  for (const Vec2& x : t.particles.x) inertia += m * length_squared(x - c);
-  const double omega = t.angular_velocity();
-  const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / inertia;
-  const double change = std::abs(omega) <= max_change ? -omega : -std::copysign(max_change, omega);
-  for (std::size_t i = 0; i < t.particles.size(); ++i) t.particles.v[i] += perp(t.particles.x[i] - c) * change;
+  const double normal_force = t.particle_mass() * lambda_sum / (h * h);
+  const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / m.inertia;
+  const double change = std::abs(m.omega) <= max_change ? -m.omega : -std::copysign(max_change, m.omega);
+  for (std::size_t i = 0; i < t.particles.size(); ++i) t.particles.v[i] += perp(t.particles.x[i] - m.centroid) * change;
+  m.omega += change;
 }
 
 // Caps the hub's horizontal speed by shifting every particle alike (spin and shape untouched).
-void cap_horizontal_speed(Tire& t) {
-  const double vx = t.velocity().x;
+void cap_horizontal_speed(Tire& t, RigidMotion& m) {
+  const double vx = m.velocity.x;
   if (std::abs(vx) <= t.spec.max_speed) return;
   const double shift = std::copysign(t.spec.max_speed, vx) - vx;
   for (Vec2& v : t.particles.v) v.x += shift;
+  m.velocity.x += shift;
 }
 
 void update_velocities(Tire& t, const SubstepContext& ctx) {
@@ -131,19 +126,20 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
     t.grounded_flags[i] = c.active && c.normal.y >= ctx.config->ground_normal_y;
   }
   if (const double tau = t.spec.material_damping; tau > 0.0) {
-    damp_distance_constraints(t.distance, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
-    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
+    t.distance.damp(p.x.data(), p.v.data());
+    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h, t.scratch.data());
   }
-  if (ctx.config->damping > 0.0) damp(t, ctx.config->damping, ctx.h);
-  apply_rolling_resistance(t, ctx.h);
-  cap_horizontal_speed(t);
+  RigidMotion motion = t.rigid_motion();
+  if (ctx.config->damping > 0.0) damp_deviation(t, motion, ctx.config->damping, ctx.h);
+  apply_rolling_resistance(t, motion, ctx.h);
+  cap_horizontal_speed(t, motion);
 }
 
 }  // namespace
 
 void begin_tick(Tire& t, const SolverConfig& config, const ObstacleField& obstacles) {
   const double h = config.dt / config.substeps;
-  prepare_distance_constraints(t.distance, t.particles.w.data(), 1.0 / (h * h));
+  t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
@@ -156,14 +152,14 @@ void begin_tick(Tire& t, const SolverConfig& config, const ObstacleField& obstac
 void substep(Tire& t, const SubstepContext& ctx) {
   predict(t, ctx);
   find_contact_pairs(t, ctx);
-  std::fill(t.distance_lambda.begin(), t.distance_lambda.end(), 0.0);
+  t.distance.reset_lambda();
   t.area_lambda = 0.0;
   std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
   const double inv_h2 = 1.0 / (ctx.h * ctx.h);
   Particles& p = t.particles;
   for (int it = 0; it < ctx.config->iterations; ++it) {
-    solve_distance_constraints(t.distance, t.distance_lambda, p.x.data(), p.w.data());
-    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
+    t.distance.solve(p.x.data());
+    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
     solve_obstacle_contacts(t, ctx);
   }
   update_velocities(t, ctx);

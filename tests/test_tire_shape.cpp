@@ -23,7 +23,7 @@ TEST_CASE("a tire is built as two rings with a flat tread segment at the bottom"
   CHECK(t.particles.x[11].y == Approx(t.particles.x[0].y));  // the bottom segment is level
   CHECK(t.particles.x[0].y == Approx(3 - 0.5 * std::cos(std::numbers::pi / 12)));
   CHECK(t.particle_mass() * t.particle_count() == Approx(spec.mass));
-  for (const DistanceConstraint& c : t.distance)
+  for (const DistanceConstraint& c : t.distance.constraints())
     CHECK(length(t.particles.x[c.b] - t.particles.x[c.a]) == Approx(c.rest_length));
   spec.spokes = SpokePattern::radial;
   CHECK(Tire(1, spec).distance.size() == 12u * 3u);
@@ -41,7 +41,7 @@ TEST_CASE("a squashed tire recovers its area and shape", "[unit][shape][physics]
   run(world, 120);
   CHECK(t.area_ratio() == Approx(1.0).epsilon(0.01));
   double worst = 0.0;
-  for (const DistanceConstraint& c : t.distance)
+  for (const DistanceConstraint& c : t.distance.constraints())
     worst = std::max(worst, std::abs(length(t.particles.x[c.b] - t.particles.x[c.a]) / c.rest_length - 1));
   CHECK(worst < 0.01);
 }
