@@ -13,6 +13,7 @@ struct RunOptions {
   std::vector<std::string> overrides;
   double steer = 0.0;
   std::vector<long long> jump_at;
+  long long trace_every = 0;  // > 0: a readable line about the player every this many ticks (stderr)
 };
 int run(const RunOptions& options);
 

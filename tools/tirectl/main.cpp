@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")->check(CLI::Range(-1.0, 1.0));
   run_cmd->add_option("--jump-at", run.jump_at, "Ask the player to jump at this tick (repeatable)")
       ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--trace", run.trace_every, "Every N ticks, print a readable line about the player on stderr")
+      ->check(CLI::PositiveNumber);
 
   std::vector<std::string> validate_files;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check level files; one line per problem");

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -29,6 +30,15 @@ nlohmann::ordered_json summary(const tire::World& world) {
           {"hash", tire::to_hex(world.state_hash())}};
 }
 
+void trace(const tire::World& world) {
+  const tire::Tire* p = world.player();
+  if (!p) return;
+  const tire::Vec2 c = p->centroid(), v = p->velocity();
+  std::fprintf(stderr, "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s\n",
+               world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
+               p->grounded() ? "grounded" : "in the air");
+}
+
 }  // namespace
 
 int run(const RunOptions& options) {
@@ -48,6 +58,7 @@ int run(const RunOptions& options) {
     while (next_jump != jumps.end() && *next_jump == tick) jump = true, ++next_jump;
     while (next_jump != jumps.end() && *next_jump < tick) ++next_jump;
     world.step({options.steer, jump});
+    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world);
     for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
     world.warnings().clear();
   }
