@@ -85,39 +85,52 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
 // What friction needs to know about one particle's contact during one substep.
 struct ContactRecord {
   Vec2 normal;                 // normal of the last contact found this substep
-  double lambda_n = 0.0;       // accumulated normal correction this substep (m)
+  Vec2 surface_velocity;       // velocity of the surface under the particle (moving props)
+  double lambda_n = 0.0;       // accumulated normal correction of the particle this substep (m)
   double mu_static = 0.0;
   double mu_kinetic = 0.0;
+  std::int32_t prop = -1;      // the prop touched, or −1 for an obstacle
   bool active = false;         // touched a surface this substep
   bool stuck = false;          // static friction held at the last projection
 };
 
-// Projects a penetrating particle out of a static surface, then applies position-level static
-// friction: if the tangential displacement this substep is within the static cone, undo it.
-inline void resolve_contact(Vec2& x, Vec2 x_prev, const SurfaceContact& c, double mu_static,
-                            double mu_kinetic, ContactRecord& rec) {
-  x += c.normal * c.depth;  // Δx = −C n for C = −depth  (zero compliance, Müller 2020 eq. 3–5)
+// Projects a penetrating particle out of a surface, then applies position-level static friction:
+// if the tangential displacement relative to the surface this substep is within the static cone,
+// undo it. `surface_displacement` is how far the surface point moved this substep (zero for
+// obstacles). Against a body of finite mass the particle takes only its share of each correction,
+// w_p/(w_p + w_body) (Müller 2020 eq. 3–5 with generalized inverse masses); the body takes the rest
+// as an impulse, which the caller sends.
+inline void resolve_contact(Vec2& x, Vec2 x_prev, const SurfaceContact& c, double mu_static, double mu_kinetic,
+                            ContactRecord& rec, Vec2 surface_displacement = {}, double normal_share = 1.0,
+                            double tangent_share = 1.0) {
+  const double correction = c.depth * normal_share;
+  x += c.normal * correction;  // Δx = −C n w/(Σw) for C = −depth
   rec.normal = c.normal;
-  rec.lambda_n += c.depth;
+  rec.lambda_n += correction;
   rec.mu_static = mu_static;
   rec.mu_kinetic = mu_kinetic;
   rec.active = true;
-  const Vec2 dp = x - x_prev;
+  const Vec2 dp = (x - x_prev) - surface_displacement;
   const Vec2 dp_t = dp - c.normal * dot(dp, c.normal);  // Müller 2020 eq. 27
   // Static friction (Müller 2020 Sec. 3.5): stick when λ_t < μ_s λ_n.
-  rec.stuck = length_squared(dp_t) < (mu_static * rec.lambda_n) * (mu_static * rec.lambda_n);
-  if (rec.stuck) x -= dp_t;
+  const double limit = mu_static * rec.lambda_n;
+  rec.stuck = length_squared(dp_t) * tangent_share * tangent_share < limit * limit;
+  if (rec.stuck) x -= dp_t * tangent_share;
 }
 
-// Kinetic friction on the velocity (Müller 2020 eq. 30): Δv = −v_t/|v_t| · min(h μ_k |f_n|, |v_t|)
-// with f_n = λ_n/h² per unit inverse mass, i.e. at most μ_k·lambda_n/h.
-inline void apply_kinetic_friction(Vec2& v, const ContactRecord& rec, double h) {
-  if (!rec.active || rec.stuck) return;
-  const Vec2 v_t = v - rec.normal * dot(v, rec.normal);
+// Kinetic friction on the velocity relative to the surface (Müller 2020 eq. 30):
+// Δv = −v_t/|v_t| · min(h μ_k |f_n|, |v_t|) with f_n = λ_n/h² per unit inverse mass, i.e. at most
+// μ_k·lambda_n/h. Returns the change made to v.
+inline Vec2 apply_kinetic_friction(Vec2& v, const ContactRecord& rec, double h) {
+  if (!rec.active || rec.stuck) return {};
+  const Vec2 v_rel = v - rec.surface_velocity;
+  const Vec2 v_t = v_rel - rec.normal * dot(v_rel, rec.normal);
   const double speed_t = length(v_t);
-  if (speed_t <= 0.0) return;
+  if (speed_t <= 0.0) return {};
   const double reduction = rec.mu_kinetic * rec.lambda_n / h;
-  v -= v_t * (reduction >= speed_t ? 1.0 : reduction / speed_t);
+  const Vec2 dv = v_t * -(reduction >= speed_t ? 1.0 : reduction / speed_t);
+  v += dv;
+  return dv;
 }
 
 }  // namespace tire

@@ -10,6 +10,7 @@
 
 #include "json_reader.h"
 #include "obstacle.h"
+#include "prop_spec.h"
 #include "solver_config.h"
 #include "tire_spec.h"
 
@@ -24,6 +25,7 @@ struct Level {
   SolverConfig solver;
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
+  std::vector<PropSpec> props;
 };
 
 // Limits enforced before any work is done (CONTRACTS.md "Limits").
@@ -32,6 +34,7 @@ struct LevelLimits {
   static constexpr int max_depth = 64;
   static constexpr std::size_t max_tires = 10000;
   static constexpr std::size_t max_obstacles = 100000;
+  static constexpr std::size_t max_props = 10000;
   static constexpr double max_coordinate = 10000.0;  // m
 };
 
@@ -54,7 +57,7 @@ LevelLoad load_level_file(const std::filesystem::path& file,
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});
 
-// Adds the level's obstacles and tires to an empty world built with its solver and gravity.
+// Adds the level's obstacles, props and tires to an empty world built with its solver and gravity.
 void populate_world(const Level& level, World& world);
 
 }  // namespace tire

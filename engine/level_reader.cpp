@@ -1,6 +1,8 @@
 // Level validation: every key of levels/README.md, with its unit, default and range.
 #include <algorithm>
 
+#include "prop_geometry.h"
+
 #include "level.h"
 #include "level_reader.h"
 
@@ -80,6 +82,48 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
 
 namespace {
 
+// Points far enough apart for Box2D, which welds vertices closer than its linear slop.
+constexpr double kMinPointSpacing = 0.01;  // m
+
+std::vector<Vec2> read_points(JsonReader& r, const json& j, const std::string& path, const char* key,
+                              std::size_t min_count, std::size_t max_count) {
+  std::vector<Vec2> points;
+  const std::string p = join_path(path, key);
+  const auto it = j.find(key);
+  if (it == j.end()) {
+    r.fail(p, "is required: an array of " + std::to_string(min_count) + " to " + std::to_string(max_count) +
+                  " points [x, y] in m");
+    return points;
+  }
+  if (!it->is_array() || it->size() < min_count || it->size() > max_count) {
+    r.fail(p, "must be an array of " + std::to_string(min_count) + " to " + std::to_string(max_count) +
+                  " points [x, y] in m, got " + JsonReader::describe(*it));
+    return points;
+  }
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const json& v = (*it)[i];
+    const bool ok = v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() &&
+                    kCoordinate.contains(v[0].get<double>()) && kCoordinate.contains(v[1].get<double>());
+    if (!ok) {
+      r.fail(join_path(p, i), "must be [x, y] with each in " + kCoordinate.text() + " m, got " + JsonReader::describe(v));
+      continue;
+    }
+    points.push_back({v[0].get<double>(), v[1].get<double>()});
+  }
+  return points;
+}
+
+KinematicPath read_path(JsonReader& r, const json& j, const std::string& path) {
+  KinematicPath k;
+  if (!r.object(j, path, {"waypoints", "speed", "mode", "running"})) return k;
+  k.waypoints = read_points(r, j, path, "waypoints", 1, 1000);
+  k.speed = r.number(j, path, "speed", k.speed, {0.0, 1000.0, true}, "m/s");
+  const std::string mode = r.choice(j, path, "mode", "loop", {"once", "loop", "ping_pong"});
+  k.mode = mode == "once" ? PathMode::once : mode == "ping_pong" ? PathMode::ping_pong : PathMode::loop;
+  k.running = r.boolean(j, path, "running", k.running);
+  return k;
+}
+
 Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
   Obstacle o;
   if (!r.object(j, path, {"min", "max", "friction"})) return o;
@@ -94,11 +138,81 @@ Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
 
 }  // namespace
 
+PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
+  PropSpec p;
+  if (!r.object(j, path,
+                {"name", "shape", "type", "position", "angle", "size", "radius", "points", "loop", "thickness",
+                 "density", "friction", "restitution", "velocity", "angular_velocity", "path"}))
+    return p;
+  p.name = r.string(j, path, "name", "", 100);
+  if (!j.contains("shape")) r.fail(join_path(path, "shape"), "is required: one of \"box\", \"circle\", \"polygon\", \"chain\"");
+  const std::string shape = r.choice(j, path, "shape", "box", {"box", "circle", "polygon", "chain"});
+  p.shape = shape == "circle" ? PropShape::circle : shape == "polygon" ? PropShape::polygon
+          : shape == "chain"  ? PropShape::chain  : PropShape::box;
+  const std::string type = r.choice(j, path, "type", "static", {"static", "dynamic", "kinematic"});
+  p.type = type == "dynamic" ? PropType::dynamic_body : type == "kinematic" ? PropType::kinematic_body
+                                                                           : PropType::static_body;
+  p.position = r.vec2(j, path, "position", p.position, kCoordinate, "m");
+  p.angle = r.number(j, path, "angle", p.angle, {-100.0, 100.0}, "rad");
+
+  // Shape keys: each belongs to some shapes only.
+  auto only_for = [&](const char* key, std::initializer_list<PropShape> shapes, const char* which) {
+    if (j.contains(key) && std::find(shapes.begin(), shapes.end(), p.shape) == shapes.end())
+      r.fail(join_path(path, key), std::string("applies only to ") + which + " props, and this one is a " + shape);
+  };
+  only_for("size", {PropShape::box}, "box");
+  only_for("radius", {PropShape::circle}, "circle");
+  only_for("points", {PropShape::polygon, PropShape::chain}, "polygon and chain");
+  only_for("loop", {PropShape::chain}, "chain");
+  only_for("thickness", {PropShape::chain}, "chain");
+  switch (p.shape) {
+    case PropShape::box:
+      p.size = r.vec2(j, path, "size", p.size, {kMinPointSpacing, 2.0 * LevelLimits::max_coordinate}, "m", true);
+      break;
+    case PropShape::circle:
+      p.radius = r.number(j, path, "radius", p.radius, {kMinPointSpacing, 1000.0}, "m", true);
+      break;
+    case PropShape::polygon:
+      p.points = read_points(r, j, path, "points", 3, 8);
+      if (p.points.size() >= 3 && p.points.size() == j["points"].size() && !is_convex_ccw(p.points))
+        r.fail(join_path(path, "points"), "must be a convex polygon in counter-clockwise order, got " +
+                                              JsonReader::describe(j["points"]));
+      break;
+    case PropShape::chain:
+      p.points = read_points(r, j, path, "points", 2, 100000);
+      p.loop = r.boolean(j, path, "loop", p.loop);
+      p.thickness = r.number(j, path, "thickness", p.thickness, {kMinPointSpacing, 100.0}, "m");
+      if (p.loop && p.points.size() < 3) r.fail(join_path(path, "points"), "a closed chain needs at least 3 points");
+      if (p.type != PropType::static_body)
+        r.fail(join_path(path, "type"), "a chain can only be static (it has no mass), got \"" + type + "\"");
+      break;
+  }
+  for (std::size_t i = 0; i + 1 < p.points.size() + (p.loop ? 1 : 0) && p.points.size() >= 2; ++i) {
+    const Vec2 a = p.points[i], b = p.points[(i + 1) % p.points.size()];
+    if (length(b - a) < kMinPointSpacing) {
+      r.fail(join_path(join_path(path, "points"), (i + 1) % p.points.size()),
+             "must be at least 0.01 m from the point before it");
+      break;
+    }
+  }
+  p.density = r.number(j, path, "density", p.density, {0.0, 1e5, true}, "kg/m^2");
+  p.friction = r.number(j, path, "friction", p.friction, kFriction, "");
+  p.restitution = r.number(j, path, "restitution", p.restitution, {0.0, 1.0}, "");
+  p.velocity = r.vec2(j, path, "velocity", p.velocity, kVelocity, "m/s");
+  p.angular_velocity = r.number(j, path, "angular_velocity", p.angular_velocity, {-1000.0, 1000.0}, "rad/s");
+  if (const auto it = j.find("path"); it != j.end()) {
+    if (p.type != PropType::kinematic_body)
+      r.fail(join_path(path, "path"), "applies only to kinematic props, and this one is " + type);
+    p.path = read_path(r, *it, join_path(path, "path"));
+  }
+  return p;
+}
+
 std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues) {
   const std::size_t issues_before = issues.size();
   JsonReader r(issues);
   Level level;
-  if (!r.object(doc, "", {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles"}))
+  if (!r.object(doc, "", {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles", "props"}))
     return std::nullopt;
   level.name = r.string(doc, "", "name", "", 200, true);
   level.description = r.string(doc, "", "description", "", 2000);
@@ -119,6 +233,18 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
                                              r.array(*it, "/obstacles", LevelLimits::max_obstacles)) {
     for (std::size_t i = 0; i < it->size(); ++i)
       level.obstacles.push_back(read_obstacle(r, (*it)[i], join_path("/obstacles", i)));
+  }
+  if (const auto it = doc.find("props"); it != doc.end() && r.array(*it, "/props", LevelLimits::max_props)) {
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const std::string path = join_path("/props", i);
+      level.props.push_back(read_prop(r, (*it)[i], path));
+      const std::string& name = level.props.back().name;
+      for (std::size_t k = 0; k + 1 < level.props.size() && !name.empty(); ++k)
+        if (level.props[k].name == name) {
+          r.fail(path + "/name", "must be unique, and /props/" + std::to_string(k) + " is already \"" + name + "\"");
+          break;
+        }
+    }
   }
   if (issues.size() != issues_before) return std::nullopt;
   return level;

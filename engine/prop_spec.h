@@ -30,6 +30,7 @@ struct PropSpec {
   double radius = 0.5;           // circle (m)
   std::vector<Vec2> points;      // polygon: convex, CCW, ≤ 8, local; chain: polyline, local
   bool loop = false;             // chain: closed
+  double thickness = 0.5;        // chain: how far behind its line a particle still counts as inside (m)
   double density = 1.0;          // kg/m² (dynamic)
   double friction = 0.5;
   double restitution = 0.0;

@@ -26,6 +26,8 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   contacts.resize(2 * n);
   grounded_flags.resize(2 * n);
   candidates.reserve(16);
+  prop_candidates.reserve(16);
+  prop_frames.reserve(16);
   pairs.reserve(4 * n);
   scratch.resize(n);
 

@@ -12,6 +12,7 @@
 #include "contact.h"
 #include "distance_constraint.h"
 #include "particles.h"
+#include "prop_geometry.h"
 #include "tire_spec.h"
 
 namespace tire {
@@ -24,13 +25,21 @@ struct TireControl {
   bool jump = false;   // a jump request; consumed at the start of the tick
 };
 
-// A particle that may touch an obstacle during this substep (narrow-phase candidate), with the
-// friction of the pair already mixed.
+// A particle that may touch an obstacle or a prop during this substep (narrow-phase candidate),
+// with the friction of the pair already mixed.
 struct ContactPair {
   std::uint32_t particle;
-  std::uint32_t obstacle;
+  std::uint32_t index;  // into the obstacles, or into prop_frames when is_prop
+  bool is_prop;
   double mu_static;
   double mu_kinetic;
+};
+
+// A nearby prop's predicted pose at the start and end of the current substep.
+struct PropFrame {
+  std::uint32_t prop;
+  Pose start;
+  Pose end;
 };
 
 // The tire's motion as a rigid body: what the hub does. Every particle has the same mass m.
@@ -76,7 +85,9 @@ struct Tire {
   std::vector<ContactRecord> contacts;        // per particle, this substep
   std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
   std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
-  std::vector<ContactPair> pairs;             // particles near those obstacles this substep
+  std::vector<std::uint32_t> prop_candidates; // props near the tire this tick (broad phase)
+  std::vector<PropFrame> prop_frames;         // their poses this substep
+  std::vector<ContactPair> pairs;             // particles near any of them this substep
   std::vector<Vec2> scratch;                  // per outer particle: area gradients
   TireControl control;
 };

@@ -51,33 +51,100 @@ void predict(Tire& t, const SubstepContext& ctx) {
   predict_positions(p, h);
 }
 
+bool path_near(Vec2 a, Vec2 b, const Aabb& box) {
+  return !(std::max(a.x, b.x) < box.min.x || std::min(a.x, b.x) > box.max.x || std::max(a.y, b.y) < box.min.y ||
+           std::min(a.y, b.y) > box.max.y);
+}
+
+Aabb world_bounds(const Aabb& local, const Pose& pose) {
+  const Vec2 corners[4] = {local.min, {local.max.x, local.min.y}, local.max, {local.min.x, local.max.y}};
+  Aabb b{pose.to_world(corners[0]), pose.to_world(corners[0])};
+  for (const Vec2& c : corners) {
+    const Vec2 w = pose.to_world(c);
+    b.min = {std::min(b.min.x, w.x), std::min(b.min.y, w.y)};
+    b.max = {std::max(b.max.x, w.x), std::max(b.max.y, w.y)};
+  }
+  return b;
+}
+
 // Narrow phase, once per substep after prediction: the particles whose path this substep passes
-// within one segment length of a nearby obstacle. Only these are tested in the iterations (the
-// margin covers what the constraints move a particle within one substep).
+// within one segment length of a nearby obstacle or prop. Only these are tested in the iterations
+// (the margin covers what the constraints move a particle within one substep).
 void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
   const Particles& p = t.particles;
+  const RigidWorld& rigid = *ctx.rigid;
   t.pairs.clear();
   for (const std::uint32_t k : t.candidates) {
-    const Obstacle& o = (*ctx.obstacles)[k];
+    const Obstacle& o = rigid.obstacles()[k];
     const Aabb near = o.box.expanded(t.segment_length);
     const double mu_s = mix_friction(t.spec.friction, o.friction);
     const double mu_k = mix_friction(t.spec.kinetic_friction, o.friction);
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-      const Vec2 a = p.x_prev[i], b = p.x[i];
-      if (std::max(a.x, b.x) < near.min.x || std::min(a.x, b.x) > near.max.x ||
-          std::max(a.y, b.y) < near.min.y || std::min(a.y, b.y) > near.max.y)
-        continue;
-      t.pairs.push_back({i, k, mu_s, mu_k});
-    }
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      if (path_near(p.x_prev[i], p.x[i], near)) t.pairs.push_back({i, k, false, mu_s, mu_k});
+  }
+  t.prop_frames.clear();
+  for (const std::uint32_t k : t.prop_candidates) {
+    const Prop& prop = rigid.props()[k];
+    if (!prop.alive) continue;
+    const auto frame = static_cast<std::uint32_t>(t.prop_frames.size());
+    t.prop_frames.push_back({k, prop.pose_at(ctx.time), prop.pose_at(ctx.time + ctx.h)});
+    const Aabb local = prop.geometry.local_bounds();
+    Aabb near = world_bounds(local, t.prop_frames.back().start);
+    const Aabb end = world_bounds(local, t.prop_frames.back().end);
+    near = Aabb{{std::min(near.min.x, end.min.x), std::min(near.min.y, end.min.y)},
+                {std::max(near.max.x, end.max.x), std::max(near.max.y, end.max.y)}}
+               .expanded(t.segment_length);
+    const double mu_s = mix_friction(t.spec.friction, prop.spec.friction);
+    const double mu_k = mix_friction(t.spec.kinetic_friction, prop.spec.friction);
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      if (path_near(p.x_prev[i], p.x[i], near)) t.pairs.push_back({i, frame, true, mu_s, mu_k});
   }
 }
 
-void solve_obstacle_contacts(Tire& t, const SubstepContext& ctx) {
+// A particle against a prop: the contact in the prop's frame (its motion over the substep taken
+// into account), friction relative to the moving surface, and for a dynamic prop the generalized
+// inverse mass w = 1/M + (r×n)²/I (Müller 2020 eq. 2–3) and the reaction impulse −m Δx/h.
+void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext& ctx) {
+  const PropFrame& frame = t.prop_frames[pair.index];
+  RigidWorld& rigid = *ctx.rigid;
+  const Prop& prop = rigid.props()[frame.prop];
+  Vec2& x = t.particles.x[pair.particle];
+  const Vec2 x_prev = t.particles.x_prev[pair.particle];
+  const auto local = local_contact(prop.geometry, frame.start.to_local(x_prev), frame.end.to_local(x));
+  if (!local) return;
+  const SurfaceContact c{frame.end.rotate(local->normal), local->depth};
+  const double t_end = ctx.time + ctx.h;
+  const Vec2 surface_velocity = prop.point_velocity(x, t_end);
+  double normal_share = 1.0, tangent_share = 1.0;
+  const double w = t.particles.w[pair.particle];
+  if (prop.is_dynamic()) {
+    const Vec2 r = x - prop.center_at(t_end);
+    const double rn = cross(r, c.normal), rt = dot(r, c.normal);  // r × n and r × t, t = perp(n)
+    normal_share = w / (w + prop.inverse_mass + rn * rn * prop.inverse_inertia);
+    tangent_share = w / (w + prop.inverse_mass + rt * rt * prop.inverse_inertia);
+  }
+  ContactRecord& rec = t.contacts[pair.particle];
+  const Vec2 before = x;
+  resolve_contact(x, x_prev, c, pair.mu_static, pair.mu_kinetic, rec, surface_velocity * ctx.h, normal_share,
+                  tangent_share);
+  rec.surface_velocity = surface_velocity;
+  rec.prop = static_cast<std::int32_t>(frame.prop);
+  if (prop.is_dynamic()) rigid.add_impulse(frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end);
+}
+
+void solve_contacts(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
+  const std::vector<Obstacle>& obstacles = ctx.rigid->obstacles();
   for (const ContactPair& pair : t.pairs) {
     const std::uint32_t i = pair.particle;
-    if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], (*ctx.obstacles)[pair.obstacle].box))
-      resolve_contact(p.x[i], p.x_prev[i], *c, pair.mu_static, pair.mu_kinetic, t.contacts[i]);
+    if (pair.is_prop) {
+      resolve_prop_contact(t, pair, ctx);
+    } else if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], obstacles[pair.index].box)) {
+      ContactRecord& rec = t.contacts[i];
+      resolve_contact(p.x[i], p.x_prev[i], *c, pair.mu_static, pair.mu_kinetic, rec);
+      rec.surface_velocity = {};
+      rec.prop = -1;
+    }
   }
 }
 
@@ -122,7 +189,9 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
   derive_velocities(p, ctx.h);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const ContactRecord& c = t.contacts[i];
-    apply_kinetic_friction(p.v[i], c, ctx.h);
+    const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
+    if (c.prop >= 0 && dv != Vec2{})
+      ctx.rigid->add_impulse(static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h);
     t.grounded_flags[i] = c.active && c.normal.y >= ctx.config->ground_normal_y;
   }
   if (const double tau = t.spec.material_damping; tau > 0.0) {
@@ -137,13 +206,13 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
 
 }  // namespace
 
-void begin_tick(Tire& t, const SolverConfig& config, const ObstacleField& obstacles) {
+void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   const double h = config.dt / config.substeps;
   t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
-  obstacles.query(bounds(t.particles.x).expanded(reach), t.candidates);
+  rigid.query(bounds(t.particles.x).expanded(reach), t.candidates, t.prop_candidates);
   if (t.control.jump && t.grounded())
     for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
   t.control.jump = false;
@@ -160,7 +229,7 @@ void substep(Tire& t, const SubstepContext& ctx) {
   for (int it = 0; it < ctx.config->iterations; ++it) {
     t.distance.solve(p.x.data());
     solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
-    solve_obstacle_contacts(t, ctx);
+    solve_contacts(t, ctx);
   }
   update_velocities(t, ctx);
 }

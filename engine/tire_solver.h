@@ -2,22 +2,23 @@
 // Algorithm 1): predict, solve every constraint with λ reset to zero, then derive velocities.
 #pragma once
 
-#include "obstacle_field.h"
+#include "rigid_world.h"
 #include "solver_config.h"
 #include "tire.h"
 
 namespace tire {
 
 struct SubstepContext {
-  double h = 0.0;  // substep (s)
+  double h = 0.0;     // substep (s)
+  double time = 0.0;  // of the substep's start, from the start of the tick (s)
   Vec2 gravity;
   const SolverConfig* config = nullptr;
-  const ObstacleField* obstacles = nullptr;
+  RigidWorld* rigid = nullptr;  // obstacles and props; props take the tires' reaction impulses
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and
 // the tire is grounded.
-void begin_tick(Tire& tire, const SolverConfig& config, const ObstacleField& obstacles);
+void begin_tick(Tire& tire, const SolverConfig& config, const RigidWorld& rigid);
 
 void substep(Tire& tire, const SubstepContext& ctx);
 

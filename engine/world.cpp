@@ -7,7 +7,7 @@
 
 namespace tire {
 
-World::World(const SolverConfig& config, Vec2 gravity) : config_(config), gravity_(gravity) {}
+World::World(const SolverConfig& config, Vec2 gravity) : config_(config), gravity_(gravity), rigid_(gravity) {}
 
 TireId World::add_tire(const TireSpec& spec) {
   const TireId id = next_id_++;
@@ -43,10 +43,15 @@ void World::step(const TickInput& input) {
       p->control.jump = input.jump;
     }
   }
-  for (Tire& t : tires_) begin_tick(t, config_, obstacles_);
-  const SubstepContext ctx{config_.dt / config_.substeps, gravity_, &config_, &obstacles_};
-  for (int s = 0; s < config_.substeps; ++s)
+  rigid_.begin_tick(config_.dt);
+  for (Tire& t : tires_) begin_tick(t, config_, rigid_);
+  const double h = config_.dt / config_.substeps;
+  SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_};
+  for (int s = 0; s < config_.substeps; ++s) {
+    ctx.time = s * h;
     for (Tire& t : tires_) substep(t, ctx);
+  }
+  rigid_.end_tick(config_.dt);
   for (Tire& t : tires_) guard_divergence(t);
   ++tick_;
 }
@@ -68,6 +73,7 @@ std::uint64_t World::state_hash() const {
     h.add_bytes(t.particles.v.data(), t.particles.v.size() * sizeof(Vec2));
     h.add_bytes(t.grounded_flags.data(), t.grounded_flags.size());
   }
+  rigid_.hash_into(h);
   return h.digest();
 }
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "obstacle_field.h"
+#include "rigid_world.h"
 #include "solver_config.h"
 #include "tire.h"
 
@@ -27,7 +27,8 @@ class World {
   // Adds a tire between ticks. The first tire, or one whose spec says player, becomes the player.
   TireId add_tire(const TireSpec& spec);
   bool remove_tire(TireId id);
-  void add_obstacle(const Obstacle& obstacle) { obstacles_.add(obstacle); }
+  void add_obstacle(const Obstacle& obstacle) { rigid_.add_obstacle(obstacle); }
+  std::uint32_t add_prop(const PropSpec& spec) { return rigid_.add_prop(spec); }
 
   // Advances one fixed tick of config().dt: `input` drives the player.
   void step(const TickInput& input);
@@ -35,17 +36,22 @@ class World {
   const std::vector<Tire>& tires() const { return tires_; }
   Tire* find_tire(TireId id);
   const Tire* player() const;
-  const ObstacleField& obstacles() const { return obstacles_; }
+  const RigidWorld& rigid() const { return rigid_; }
+  RigidWorld& rigid() { return rigid_; }
   const SolverConfig& config() const { return config_; }
   SolverConfig& config() { return config_; }
   Vec2 gravity() const { return gravity_; }
-  void set_gravity(Vec2 g) { gravity_ = g; }
+  void set_gravity(Vec2 g) {
+    gravity_ = g;
+    rigid_.set_gravity(g);
+  }
 
   std::uint64_t tick() const { return tick_; }
   double time() const { return static_cast<double>(tick_) * config_.dt; }
 
-  // Digest of the exact state: tick, and every tire's id, particle positions, velocities and
-  // grounded flags. Same binary and same inputs give the same hash.
+  // Digest of the exact state: tick, every tire's id, particle positions, velocities and grounded
+  // flags, and every prop's transform, velocity and path state. Same binary and same inputs give
+  // the same hash.
   std::uint64_t state_hash() const;
 
   // Warnings raised while stepping (a diverged tire that was reset, ...); the caller drains them.
@@ -56,7 +62,7 @@ class World {
 
   SolverConfig config_;
   Vec2 gravity_;
-  ObstacleField obstacles_;
+  RigidWorld rigid_;
   std::vector<Tire> tires_;
   std::optional<TireId> player_;
   TireId next_id_ = 0;
