@@ -123,6 +123,13 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
   return index;
 }
 
+Pose RigidWorld::current_pose(std::uint32_t i) const {
+  const b2Body& b = *props_[i].body;
+  return Pose::make(from_b2(b.GetPosition()), b.GetAngle());
+}
+
+Vec2 RigidWorld::current_velocity(std::uint32_t i) const { return from_b2(props_[i].body->GetLinearVelocity()); }
+
 std::optional<std::uint32_t> RigidWorld::find_prop(std::string_view name) const {
   for (std::uint32_t i = 0; i < props_.size(); ++i)
     if (props_[i].alive && props_[i].spec.name == name) return i;

@@ -74,6 +74,9 @@ class RigidWorld {
   std::optional<std::uint32_t> find_prop(std::string_view name) const;
   const std::vector<Prop>& props() const { return props_; }
   Prop& prop(std::uint32_t i) { return props_[i]; }
+  // A live prop's pose and velocity now (Box2D's, between ticks).
+  Pose current_pose(std::uint32_t i) const;
+  Vec2 current_velocity(std::uint32_t i) const;
   bool path_command(std::string_view name, PathCommand command);
 
   void set_gravity(Vec2 gravity);

@@ -4,24 +4,94 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <string_view>
 
 #include "commands.h"
+#include "level.h"
+#include "tire_solver.h"
 #include "world.h"
 
 namespace tirectl {
 
 namespace {
 
+// Something that advances one fixed tick.
+class Steppable {
+ public:
+  virtual ~Steppable() = default;
+  virtual void step(const tire::TickInput& input) = 0;
+  virtual const tire::Tire& first_tire() const = 0;
+  virtual std::size_t tire_count() const = 0;
+  virtual const tire::SolverConfig& config() const = 0;
+};
+
+class WorldScene final : public Steppable {
+ public:
+  explicit WorldScene(std::unique_ptr<tire::World> world) : world_(std::move(world)) {}
+  void step(const tire::TickInput& input) override { world_->step(input); }
+  const tire::Tire& first_tire() const override { return world_->tires().front(); }
+  std::size_t tire_count() const override { return world_->tires().size(); }
+  const tire::SolverConfig& config() const override { return world_->config(); }
+
+ private:
+  std::unique_ptr<tire::World> world_;
+};
+
+// One tire and its ground, stepped by the tire solver alone: no World around it (no level, no
+// divergence guard, no Box2D stepping, nothing else). The floor for "flat-level".
+class BareTireScene final : public Steppable {
+ public:
+  BareTireScene() : rigid_({0.0, -9.81}), tire_(0, spec()) { rigid_.add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}}); }
+  void step(const tire::TickInput& input) override {
+    tire_.control = {input.steer, input.jump};
+    tire::begin_tick(tire_, config_, rigid_);
+    const double h = config_.dt / config_.substeps;
+    tire::SubstepContext ctx{h, 0.0, {0.0, -9.81}, &config_, &rigid_};
+    for (int s = 0; s < config_.substeps; ++s) {
+      ctx.time = s * h;
+      tire::substep(tire_, ctx);
+    }
+  }
+  const tire::Tire& first_tire() const override { return tire_; }
+  std::size_t tire_count() const override { return 1; }
+  const tire::SolverConfig& config() const override { return config_; }
+
+ private:
+  static tire::TireSpec spec() {
+    tire::TireSpec s;
+    s.position = {0.0, 0.5};
+    return s;
+  }
+  tire::SolverConfig config_;
+  tire::RigidWorld rigid_;
+  tire::Tire tire_;
+};
+
+// The same tire and ground as a level file read by the loader, stepped by the World: everything a
+// level brings along, on the scene that needs none of it.
+constexpr const char* kFlatLevel = R"json({
+  "name": "Flat (bench)",
+  "tires": [ { "position": [0, 0.5] } ],
+  "obstacles": [ { "min": [-50, -1], "max": [50, 0] } ]
+})json";
+
+std::unique_ptr<Steppable> flat_level() {
+  const tire::LevelLoad load = tire::load_level_text(kFlatLevel, "flat-level");
+  auto world = std::make_unique<tire::World>(load.level->solver, load.level->gravity);
+  tire::populate_world(*load.level, *world);
+  return std::make_unique<WorldScene>(std::move(world));
+}
+
 struct Scene {
   const char* name;
   const char* what;
-  std::function<std::unique_ptr<tire::World>()> build;
+  std::function<std::unique_ptr<Steppable>()> build;
   tire::TickInput input;
 };
 
 // The prototype's scene (../shared/REFERENCE.md): one tire of 28 segments with radial spokes,
 // one step of 22 iterations per 60 Hz frame, on a ground line next to a box.
-std::unique_ptr<tire::World> prototype_world(tire::SpokePattern spokes, int substeps, int iterations) {
+std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int substeps, int iterations) {
   tire::SolverConfig config;
   config.dt = 1.0 / 60.0;
   config.substeps = substeps;
@@ -33,7 +103,7 @@ std::unique_ptr<tire::World> prototype_world(tire::SpokePattern spokes, int subs
   spec.position = {0.0, 0.52};
   spec.spokes = spokes;
   world->add_tire(spec);
-  return world;
+  return std::make_unique<WorldScene>(std::move(world));
 }
 
 const Scene kScenes[] = {
@@ -43,6 +113,10 @@ const Scene kScenes[] = {
      [] { return prototype_world(tire::SpokePattern::radial, 1, 22); }, {1.0, false}},
     {"default-tire", "1 tire, 28 segments, cross spokes, 8 substeps x 1 iteration (the default level)",
      [] { return prototype_world(tire::SpokePattern::cross, 8, 1); }, {1.0, false}},
+    {"bare-tire", "1 default tire on a ground box, stepped by the tire solver alone (no World, no level)",
+     [] { return std::make_unique<BareTireScene>(); }, {}},
+    {"flat-level", "the same tire and ground loaded as a level and stepped by the World",
+     [] { return flat_level(); }, {}},
 };
 
 // The prototype's figure for its own scene, per 60 Hz frame (REFERENCE.md).
@@ -81,14 +155,15 @@ int bench(const BenchOptions& options) {
       per_frame_us.push_back(elapsed.count() / options.frames);
       if (scene.input.steer != 0.0) world = scene.build();  // keep the rolling tire on its ground
     }
-    std::size_t particles = 0;
-    for (const tire::Tire& t : world->tires()) particles += t.particle_count();
-    const tire::Tire& t = world->tires().front();
+    const tire::Tire& t = world->first_tire();
+    const std::size_t particles = world->tire_count() * t.particle_count();
     const double median = percentile(per_frame_us, 0.5);
-    std::cout << scene.name << "," << world->tires().size() << "," << particles << "," << t.segments() << ","
+    std::cout << scene.name << "," << world->tire_count() << "," << particles << "," << t.segments() << ","
               << world->config().substeps << "," << world->config().iterations << "," << options.frames << ","
-              << options.repeats << "," << median << "," << percentile(per_frame_us, 0.99) << ","
-              << kPrototypeUsPerFrame / median << "\n";
+              << options.repeats << "," << median << "," << percentile(per_frame_us, 0.99) << ",";
+    // The prototype's figure is for its own scene only.
+    if (std::string_view(scene.name).starts_with("prototype")) std::cout << kPrototypeUsPerFrame / median;
+    std::cout << "\n";
   }
   return 0;
 }

@@ -22,11 +22,19 @@ nlohmann::ordered_json summary(const tire::World& world) {
                      {"velocity", vec(t.velocity())},
                      {"area_ratio", t.area_ratio()},
                      {"grounded", t.grounded()}});
+  nlohmann::ordered_json props = nlohmann::ordered_json::array();
+  const tire::RigidWorld& rigid = world.rigid();
+  for (std::uint32_t i = 0; i < rigid.props().size(); ++i) {
+    const tire::Prop& p = rigid.props()[i];
+    if (!p.alive || p.spec.name.empty()) continue;
+    const tire::Pose pose = rigid.current_pose(i);
+    props.push_back({{"name", p.spec.name}, {"position", vec(pose.position)}, {"angle", pose.angle}});
+  }
   return {{"ticks", world.tick()},
           {"time", world.time()},
           {"status", "running"},
           {"tires", tires},
-          {"props", nlohmann::ordered_json::array()},
+          {"props", props},
           {"hash", tire::to_hex(world.state_hash())}};
 }
 
