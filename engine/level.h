@@ -11,6 +11,7 @@
 #include "json_reader.h"
 #include "obstacle.h"
 #include "prop_spec.h"
+#include "script_spec.h"
 #include "solver_config.h"
 #include "tire_spec.h"
 
@@ -26,6 +27,7 @@ struct Level {
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
   std::vector<PropSpec> props;
+  ScriptSpec script;  // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
 };
 
 // Limits enforced before any work is done (CONTRACTS.md "Limits").
@@ -57,7 +59,8 @@ LevelLoad load_level_file(const std::filesystem::path& file,
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});
 
-// Adds the level's obstacles, props and tires to an empty world built with its solver and gravity.
+// Adds the level's obstacles, props, tires and script to an empty world built with its solver and
+// gravity.
 void populate_world(const Level& level, World& world);
 
 }  // namespace tire

@@ -120,6 +120,7 @@ void populate_world(const Level& level, World& world) {
   for (const Obstacle& o : level.obstacles) world.add_obstacle(o);
   for (const PropSpec& p : level.props) world.add_prop(p);
   for (const TireSpec& t : level.tires) world.add_tire(t);
+  world.set_script(level.script);
 }
 
 }  // namespace tire

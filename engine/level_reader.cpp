@@ -5,6 +5,7 @@
 
 #include "level.h"
 #include "level_reader.h"
+#include "script_reader.h"
 
 namespace tire {
 
@@ -212,7 +213,8 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
   const std::size_t issues_before = issues.size();
   JsonReader r(issues);
   Level level;
-  if (!r.object(doc, "", {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles", "props"}))
+  if (!r.object(doc, "", {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles", "props",
+                          "regions", "goal", "time_limit", "counters", "triggers"}))
     return std::nullopt;
   level.name = r.string(doc, "", "name", "", 200, true);
   level.description = r.string(doc, "", "description", "", 2000);
@@ -246,6 +248,10 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
         }
     }
   }
+  std::vector<std::string> prop_names;
+  for (const PropSpec& p : level.props)
+    if (!p.name.empty()) prop_names.push_back(p.name);
+  level.script = read_script(r, doc, prop_names);
   if (issues.size() != issues_before) return std::nullopt;
   return level;
 }

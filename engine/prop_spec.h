@@ -11,6 +11,7 @@ namespace tire {
 enum class PropShape { box, circle, polygon, chain };
 enum class PropType { static_body, dynamic_body, kinematic_body };
 enum class PathMode { once, loop, ping_pong };
+enum class PathCommand { start, stop, reverse };  // what a script can tell a kinematic path
 
 // A kinematic prop's scripted motion: along waypoints at a speed, and/or spinning at a rate.
 struct KinematicPath {

@@ -192,6 +192,12 @@ bool RigidWorld::path_command(std::string_view name, PathCommand command) {
 
 void RigidWorld::set_gravity(Vec2 gravity) { world_->SetGravity(to_b2(gravity)); }
 
+void RigidWorld::apply_impulse_now(std::string_view name, Vec2 impulse) {
+  const auto i = find_prop(name);
+  if (!i || props_[*i].spec.type != PropType::dynamic_body) return;
+  props_[*i].body->ApplyLinearImpulseToCenter(to_b2(impulse), true);
+}
+
 void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles,
                        std::vector<std::uint32_t>& props) const {
   obstacles.clear();

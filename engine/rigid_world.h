@@ -25,8 +25,6 @@ class b2Body;
 
 namespace tire {
 
-enum class PathCommand { start, stop, reverse };
-
 struct Prop {
   PropSpec spec;
   PropGeometry geometry;
@@ -80,6 +78,9 @@ class RigidWorld {
   bool path_command(std::string_view name, PathCommand command);
 
   void set_gravity(Vec2 gravity);
+  // An impulse (N·s) at a live prop's centre of mass, now (between ticks); ignored for a name not
+  // in the world or a prop that cannot move.
+  void apply_impulse_now(std::string_view name, Vec2 impulse);
 
   // Replaces `obstacles` and `props` with the indices of those whose (fattened) bounds overlap
   // `region`, ascending. Does not allocate once the vectors have grown to the largest answer.

@@ -41,9 +41,9 @@ class ScriptHost {
   virtual void spawn_tire(const TireSpec& spec) = 0;
   virtual void spawn_prop(const PropSpec& spec) = 0;
   virtual void remove_prop(std::string_view name) = 0;
-  virtual void set_gravity(Vec2 gravity) = 0;                  // m/s²
-  virtual void apply_impulse_to_player(Vec2 impulse) = 0;      // N·s, to the whole tire
-  virtual void apply_impulse_to_all_tires(Vec2 impulse) = 0;   // N·s, to each tire
+  virtual void set_gravity(Vec2 gravity) = 0;                                   // m/s²
+  virtual void apply_impulse_to_player(Vec2 impulse) = 0;                       // N·s, to the whole tire
+  virtual void apply_impulse_to_all_tires(Vec2 impulse) = 0;                    // N·s, to each tire
   virtual void apply_impulse_to_prop(std::string_view name, Vec2 impulse) = 0;  // N·s, at its centre of mass
   // `key` is one of the keys SCRIPTING.md lists ("solver.substeps", "player.friction",
   // "tires.max_speed", ...); `value` is within that key's range (integral for the integer keys).

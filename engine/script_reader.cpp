@@ -105,7 +105,8 @@ std::string quoted_list(const Names& items) {
   return out;
 }
 
-std::string quoted(std::string_view s) { return JsonReader::describe(json(std::string(s))); }
+std::string as_json_string(std::string_view s) { return JsonReader::describe(json(std::string(s))); }
+std::string in_quotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
 
 bool is_string_at(const json& obj, const char* key) {
   const auto it = obj.find(key);
@@ -125,15 +126,16 @@ void check_reference(JsonReader& r, const std::string& path, const std::string& 
   const std::string list = quoted_list(known);
   std::string message = "must name " + what;
   if (list.empty()) {
-    r.fail(path, message + ", got " + quoted(name) + ", and the level defines none");
+    r.fail(path, message + ", got " + as_json_string(name) + ", and the level defines none");
     return;
   }
   if (const std::string_view best = closest(name, known); !best.empty()) {
-    r.fail(path, message + ", got " + quoted(name) + "; did you mean " + quoted(best) + "?");
+    r.fail(path, message + ", got " + as_json_string(name) + "; did you mean " + in_quotes(best) + "?");
     return;
   }
-  const bool short_list = std::count_if(known.begin(), known.end(), [](const std::string& k) { return !k.empty(); }) <= 10;
-  r.fail(path, message + (short_list ? " (one of " + list + ")" : "") + ", got " + quoted(name));
+  const bool short_list =
+      std::count_if(known.begin(), known.end(), [](const std::string& k) { return !k.empty(); }) <= 10;
+  r.fail(path, message + (short_list ? " (one of " + list + ")" : "") + ", got " + as_json_string(name));
 }
 
 std::optional<std::size_t> index_of(const std::vector<std::string>& names, const std::string& name) {
@@ -145,8 +147,8 @@ std::optional<std::size_t> index_of(const std::vector<std::string>& names, const
 
 // A required value that must be one of `options`: the index of the one given.
 template <std::size_t N>
-std::optional<std::size_t> read_choice(JsonReader& r, const json& obj, const std::string& path, const char* key,
-                                       const std::array<std::string_view, N>& options) {
+std::optional<std::size_t> read_choice(JsonReader& r, const json& obj, const std::string& path,
+                                       const char* key, const std::array<std::string_view, N>& options) {
   const std::string p = join_path(path, key);
   const auto it = obj.find(key);
   if (it == obj.end()) {
@@ -160,7 +162,7 @@ std::optional<std::size_t> read_choice(JsonReader& r, const json& obj, const std
   std::string message = "must be one of " + quoted_list(options) + ", got " + JsonReader::describe(*it);
   if (it->is_string())
     if (const std::string_view best = closest(it->get_ref<const std::string&>(), options); !best.empty())
-      message += "; did you mean " + quoted(best) + "?";
+      message += "; did you mean " + in_quotes(best) + "?";
   r.fail(p, message);
   return std::nullopt;
 }
@@ -184,7 +186,8 @@ class ScriptReader {
     if (doc.contains("time_limit"))
       spec.time_limit = r_.number(doc, "", "time_limit", 60.0, kPositiveSeconds, "s");
     if (const auto it = doc.find("counters"); it != doc.end()) read_counters(*it, spec);
-    if (const auto it = doc.find("triggers"); it != doc.end() && r_.array(*it, "/triggers", ScriptLimits::max_triggers)) {
+    if (const auto it = doc.find("triggers");
+        it != doc.end() && r_.array(*it, "/triggers", ScriptLimits::max_triggers)) {
       spec.triggers.reserve(it->size());
       for (std::size_t i = 0; i < it->size(); ++i)
         spec.triggers.push_back(read_trigger((*it)[i], join_path("/triggers", i)));
@@ -214,8 +217,8 @@ class ScriptReader {
         if (!region.name.empty()) {
           const auto [where, inserted] = first_path.emplace(region.name, path);
           if (!inserted) {
-            r_.fail(path + "/name", "must be unique, got " + quoted(region.name) + ", which " + where->second +
-                                        " already has");
+            r_.fail(path + "/name", "must be unique, got " + as_json_string(region.name) + ", which " +
+                                        where->second + " already has");
             region.name.clear();  // references resolve to the first one
           }
         }
@@ -224,8 +227,9 @@ class ScriptReader {
         region.box.max = r_.vec2(rj, path, "max", {nan, nan}, kCoordinate, "m", true);
         if (is_finite(region.box.min) && is_finite(region.box.max) &&
             !(region.box.min.x < region.box.max.x && region.box.min.y < region.box.max.y))
-          r_.fail(path + "/max", "must be greater than min on both axes, got " + JsonReader::describe(rj["max"]) +
-                                     " with min " + JsonReader::describe(rj["min"]));
+          r_.fail(path + "/max", "must be greater than min on both axes, got " +
+                                     JsonReader::describe(rj["max"]) + " with min " +
+                                     JsonReader::describe(rj["min"]));
       }
       region_names_.push_back(region.name);
       spec.regions.push_back(std::move(region));
@@ -238,15 +242,16 @@ class ScriptReader {
       return;
     }
     if (j.size() > ScriptLimits::max_counters) {
-      r_.fail("/counters", "must have at most " + std::to_string(ScriptLimits::max_counters) + " entries, got " +
-                               std::to_string(j.size()));
+      r_.fail("/counters", "must have at most " + std::to_string(ScriptLimits::max_counters) +
+                               " entries, got " + std::to_string(j.size()));
       return;
     }
     for (const auto& [name, value] : j.items()) {  // a json object iterates in key order
       Counter c;
       if (name.empty() || name.size() > ScriptLimits::max_name_length) {
         r_.fail(join_path("/counters", name), "must be named by a non-empty string of at most " +
-                                                  std::to_string(ScriptLimits::max_name_length) + " characters");
+                                                  std::to_string(ScriptLimits::max_name_length) +
+                                                  " characters");
       } else {
         c.name = name;
       }
@@ -268,7 +273,7 @@ class ScriptReader {
 
   // A required prop name, checked once every spawned prop's name is known.
   std::string read_prop_reference(const json& obj, const std::string& path, const char* key) {
-    const std::string name = read_name(r_, obj, path, key);
+    const std::string name = r_.string(obj, path, key, "", ScriptLimits::max_prop_name_length, true);
     if (is_string_at(obj, key)) prop_references_.push_back({name, join_path(path, key), false});
     return name;
   }
@@ -280,7 +285,8 @@ class ScriptReader {
     }
     const auto type = read_choice(r_, j, path, "type", kTriggerTypes);
     if (!type) {  // without a type, judge the keys against every type's
-      r_.object(j, path, {"type", "at", "period", "start", "count", "region", "who", "prop", "counter", "value"});
+      r_.object(j, path,
+                {"type", "at", "period", "start", "count", "region", "who", "prop", "counter", "value"});
       return std::nullopt;
     }
     const std::string_view name = kTriggerTypes[*type];
@@ -339,14 +345,16 @@ class ScriptReader {
       t.when = *when;
     }
     // Region crossings and periodic triggers repeat by nature; the rest are one-off events.
-    const bool repeats = std::holds_alternative<RegionCrossing>(t.when) || std::holds_alternative<Every>(t.when);
+    const bool repeats =
+        std::holds_alternative<RegionCrossing>(t.when) || std::holds_alternative<Every>(t.when);
     t.once = r_.boolean(j, path, "once", !repeats);
     if (const auto it = j.find("do"); it == j.end()) {
       r_.fail(path + "/do", "is required: an array of actions");
     } else if (r_.array(*it, path + "/do", ScriptLimits::max_actions)) {
       t.actions.reserve(it->size());
       for (std::size_t i = 0; i < it->size(); ++i) {
-        if (auto action = read_action((*it)[i], join_path(path + "/do", i))) t.actions.push_back(std::move(*action));
+        if (auto action = read_action((*it)[i], join_path(path + "/do", i)))
+          t.actions.push_back(std::move(*action));
       }
     }
     return t;
@@ -359,8 +367,9 @@ class ScriptReader {
     }
     const auto kind = read_choice(r_, j, path, "action", kActionNames);
     if (!kind) {  // without an action, judge the keys against every action's
-      r_.object(j, path, {"action", "tire", "prop", "gravity", "target", "impulse", "key", "value", "command", "text",
-                          "seconds", "position", "counter", "add", "set"});
+      r_.object(j, path,
+                {"action", "tire", "prop", "gravity", "target", "impulse", "key", "value", "command", "text",
+                 "seconds", "position", "counter", "add", "set"});
       return std::nullopt;
     }
     const std::string_view name = kActionNames[*kind];
@@ -394,7 +403,7 @@ class ScriptReader {
     if (name == "impulse") {
       r_.object(j, path, {"action", "target", "impulse"});
       ApplyImpulse a;
-      const std::string target = read_name(r_, j, path, "target");
+      const std::string target = r_.string(j, path, "target", "", ScriptLimits::max_prop_name_length, true);
       if (target == "all_tires") {
         a.target = ImpulseTarget::all_tires;
       } else if (target != "player" && is_string_at(j, "target")) {
@@ -436,7 +445,8 @@ class ScriptReader {
       const bool has_add = j.contains("add");
       const bool has_set = j.contains("set");
       if (has_add == has_set)
-        r_.fail(path, std::string("must have exactly one of \"add\" or \"set\", got ") + (has_add ? "both" : "neither"));
+        r_.fail(path, std::string("must have exactly one of \"add\" or \"set\", got ") +
+                          (has_add ? "both" : "neither"));
       c.set = has_set && !has_add;
       c.amount = r_.integer(j, path, c.set ? "set" : "add", 0, kCounterValue);
       if (has_add && has_set) r_.integer(j, path, "set", 0, kCounterValue);  // report a bad value there too
@@ -462,10 +472,11 @@ class ScriptReader {
           if (k.key == s.key) key = &k;
       }
       if (!key) {
-        std::string message = "must be one of " + quoted_list(settable_names()) + ", got " + JsonReader::describe(*it);
+        std::string message =
+            "must be one of " + quoted_list(settable_names()) + ", got " + JsonReader::describe(*it);
         if (it->is_string())
           if (const std::string_view best = closest(s.key, settable_names()); !best.empty())
-            message += "; did you mean " + quoted(best) + "?";
+            message += "; did you mean " + in_quotes(best) + "?";
         r_.fail(path + "/key", message);
       }
     }
@@ -492,8 +503,9 @@ class ScriptReader {
   }
 
   void check_prop_references() {
-    std::vector<std::string> known(prop_names_.begin(), prop_names_.end());
-    known.insert(known.end(), spawned_props_.begin(), spawned_props_.end());
+    std::set<std::string> names(prop_names_.begin(), prop_names_.end());
+    names.insert(spawned_props_.begin(), spawned_props_.end());
+    const std::vector<std::string> known(names.begin(), names.end());
     for (const PropReference& ref : prop_references_) {
       if (!ref.name.empty() && std::find(known.begin(), known.end(), ref.name) != known.end()) continue;
       check_reference(r_, ref.path, ref.name, known,

@@ -24,9 +24,12 @@ constexpr double kTickTolerance = 1e-9;
 
 const char* to_string(ScriptStatus status) {
   switch (status) {
-    case ScriptStatus::running: return "running";
-    case ScriptStatus::won: return "won";
-    case ScriptStatus::lost: return "lost";
+    case ScriptStatus::running:
+      return "running";
+    case ScriptStatus::won:
+      return "won";
+    case ScriptStatus::lost:
+      return "lost";
   }
   return "running";
 }
@@ -45,7 +48,8 @@ ScriptRunner::ScriptRunner(ScriptSpec spec) : spec_(std::move(spec)) {
   for (const Counter& c : spec_.counters) counters_.push_back({c.name, c.initial});
   triggers_.resize(spec_.triggers.size());
   for (std::size_t i = 0; i < triggers_.size(); ++i)
-    if (std::holds_alternative<RegionCrossing>(spec_.triggers[i].when)) triggers_[i].inside.reserve(kReservedTires);
+    if (std::holds_alternative<RegionCrossing>(spec_.triggers[i].when))
+      triggers_[i].inside.reserve(kReservedTires);
   scratch_.reserve(kReservedTires);
 }
 
@@ -62,9 +66,11 @@ void ScriptRunner::update(ScriptHost& host) {
     finish(ScriptStatus::won);
     return;
   }
-  for (std::size_t i = 0; i < spec_.triggers.size() && status_ == ScriptStatus::running; ++i) evaluate(i, host);
+  for (std::size_t i = 0; i < spec_.triggers.size() && status_ == ScriptStatus::running; ++i)
+    evaluate(i, host);
   sweep_counter_triggers(host);
-  if (status_ == ScriptStatus::running && spec_.time_limit && host.tick() >= tick_at(*spec_.time_limit, host.dt()))
+  if (status_ == ScriptStatus::running && spec_.time_limit &&
+      host.tick() >= tick_at(*spec_.time_limit, host.dt()))
     finish(ScriptStatus::lost);
 }
 
@@ -79,7 +85,9 @@ void ScriptRunner::evaluate(std::size_t i, ScriptHost& host) {
   const std::size_t firings = std::visit(
       Overloaded{
           [&](const AtStart&) -> std::size_t { return state.fires == 0 ? 1 : 0; },
-          [&](const AtTime& t) -> std::size_t { return state.fires == 0 && now >= tick_at(t.at, dt) ? 1 : 0; },
+          [&](const AtTime& t) -> std::size_t {
+            return state.fires == 0 && now >= tick_at(t.at, dt) ? 1 : 0;
+          },
           [&](const Every& e) -> std::size_t {
             if (e.count && state.fires >= static_cast<std::uint64_t>(*e.count)) return 0;
             // The k-th firing's time is computed afresh, not accumulated, so it does not drift.
@@ -163,9 +171,15 @@ void ScriptRunner::run(const Action& action, ScriptHost& host) {
                  [&](const SetGravity& a) { host.set_gravity(a.gravity); },
                  [&](const ApplyImpulse& a) {
                    switch (a.target) {
-                     case ImpulseTarget::player: host.apply_impulse_to_player(a.impulse); break;
-                     case ImpulseTarget::all_tires: host.apply_impulse_to_all_tires(a.impulse); break;
-                     case ImpulseTarget::prop: host.apply_impulse_to_prop(a.prop, a.impulse); break;
+                     case ImpulseTarget::player:
+                       host.apply_impulse_to_player(a.impulse);
+                       break;
+                     case ImpulseTarget::all_tires:
+                       host.apply_impulse_to_all_tires(a.impulse);
+                       break;
+                     case ImpulseTarget::prop:
+                       host.apply_impulse_to_prop(a.prop, a.impulse);
+                       break;
                    }
                  },
                  [&](const SetParameter& a) { host.set_parameter(a.key, a.value); },

@@ -23,8 +23,9 @@ struct ScriptLimits {
   static constexpr std::size_t max_triggers = 10000;
   static constexpr std::size_t max_actions = 1000;  // per trigger
   static constexpr std::size_t max_name_length = 64;
+  static constexpr std::size_t max_prop_name_length = 100;  // as the level reader allows
   static constexpr std::size_t max_message_length = 500;
-  static constexpr double max_seconds = 86400.0;    // any time or period: one day
+  static constexpr double max_seconds = 86400.0;        // any time or period: one day
   static constexpr int max_counter_value = 1000000000;  // counters saturate at ±this
 };
 
@@ -52,9 +53,9 @@ struct AtTime {
   double at = 0.0;  // s since the level started
 };
 struct Every {
-  double period = 1.0;             // s, > 0
-  double start = 0.0;              // s, the first firing
-  std::optional<int> count;        // firings in all; none: unlimited
+  double period = 1.0;       // s, > 0
+  double start = 0.0;        // s, the first firing
+  std::optional<int> count;  // firings in all; none: unlimited
 };
 // A tire's centroid crossing a region's boundary, inwards (enter) or outwards (leave).
 struct RegionCrossing {
@@ -77,7 +78,6 @@ using Condition = std::variant<AtStart, AtTime, Every, RegionCrossing, PropEnter
 
 // ---- Actions ("do") -----------------------------------------------------------------------------
 
-enum class PathCommand { start, stop, reverse };
 
 struct SpawnTire {
   TireSpec tire;
@@ -136,10 +136,10 @@ struct Trigger {
 
 struct ScriptSpec {
   std::vector<Region> regions;
-  std::optional<std::size_t> goal;  // region index: the player's centroid inside it wins
+  std::optional<std::size_t> goal;   // region index: the player's centroid inside it wins
   std::optional<double> time_limit;  // s: reaching it while running loses
-  std::vector<Counter> counters;    // in name order
-  std::vector<Trigger> triggers;    // in file order, which is their firing order
+  std::vector<Counter> counters;     // in name order
+  std::vector<Trigger> triggers;     // in file order, which is their firing order
 };
 
 }  // namespace tire

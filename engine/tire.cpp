@@ -30,6 +30,8 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   prop_frames.reserve(16);
   pairs.reserve(4 * n);
   scratch.resize(n);
+  soft_lambda.resize(n);
+  on_tire.resize(2 * n);
 
   std::vector<DistanceConstraint> list;
   add_ring(list, 0, n, spec.compliance.outer);

@@ -89,6 +89,8 @@ struct Tire {
   std::vector<PropFrame> prop_frames;         // their poses this substep
   std::vector<ContactPair> pairs;             // particles near any of them this substep
   std::vector<Vec2> scratch;                  // per outer particle: area gradients
+  std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
+  std::vector<std::uint8_t> on_tire;          // per particle: resting on another tire, this substep
   TireControl control;
 };
 

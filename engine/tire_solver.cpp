@@ -192,7 +192,7 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
     const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
     if (c.prop >= 0 && dv != Vec2{})
       ctx.rigid->add_impulse(static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h);
-    t.grounded_flags[i] = c.active && c.normal.y >= ctx.config->ground_normal_y;
+    t.grounded_flags[i] = (c.active && c.normal.y >= ctx.config->ground_normal_y) || t.on_tire[i];
   }
   if (const double tau = t.spec.material_damping; tau > 0.0) {
     t.distance.damp(p.x.data(), p.v.data());
@@ -218,20 +218,30 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   t.control.jump = false;
 }
 
-void substep(Tire& t, const SubstepContext& ctx) {
+void begin_substep(Tire& t, const SubstepContext& ctx) {
   predict(t, ctx);
   find_contact_pairs(t, ctx);
   t.distance.reset_lambda();
   t.area_lambda = 0.0;
   std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
-  const double inv_h2 = 1.0 / (ctx.h * ctx.h);
+  std::fill(t.soft_lambda.begin(), t.soft_lambda.end(), 0.0);
+  std::fill(t.on_tire.begin(), t.on_tire.end(), std::uint8_t{0});
+}
+
+void solve_iteration(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
-  for (int it = 0; it < ctx.config->iterations; ++it) {
-    t.distance.solve(p.x.data());
-    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
-    solve_contacts(t, ctx);
-  }
-  update_velocities(t, ctx);
+  t.distance.solve(p.x.data());
+  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), 1.0 / (ctx.h * ctx.h),
+                        t.scratch.data());
+  solve_contacts(t, ctx);
+}
+
+void end_substep(Tire& t, const SubstepContext& ctx) { update_velocities(t, ctx); }
+
+void substep(Tire& t, const SubstepContext& ctx) {
+  begin_substep(t, ctx);
+  for (int it = 0; it < ctx.config->iterations; ++it) solve_iteration(t, ctx);
+  end_substep(t, ctx);
 }
 
 }  // namespace tire

@@ -20,6 +20,12 @@ struct SubstepContext {
 // the tire is grounded.
 void begin_tick(Tire& tire, const SolverConfig& config, const RigidWorld& rigid);
 
+// A substep in three phases, so that a world can solve contacts between tires inside each iteration:
+// begin (predict, find contact candidates, reset λ), iterations, end (velocities, friction,
+// damping). substep() runs the three for a tire on its own.
+void begin_substep(Tire& tire, const SubstepContext& ctx);
+void solve_iteration(Tire& tire, const SubstepContext& ctx);
+void end_substep(Tire& tire, const SubstepContext& ctx);
 void substep(Tire& tire, const SubstepContext& ctx);
 
 }  // namespace tire

@@ -1,13 +1,81 @@
 #include "world.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "state_hash.h"
+#include "world_script_host.h"
+#include "soft_contact.h"
 #include "tire_solver.h"
 
 namespace tire {
 
 World::World(const SolverConfig& config, Vec2 gravity) : config_(config), gravity_(gravity), rigid_(gravity) {}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+void World::set_script(const ScriptSpec& spec) {
+  const bool empty = spec.regions.empty() && spec.triggers.empty() && spec.counters.empty() && !spec.goal &&
+                     !spec.time_limit;
+  script_ = empty ? nullptr : std::make_unique<ScriptRunner>(spec);
+  if (script_) {
+    WorldScriptHost host(*this);
+    script_->update(host);
+  }
+}
+
+void World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
+  Tire* t = find_tire(id);
+  if (!t) return;
+  const Vec2 dv = impulse / t->total_mass();
+  for (Vec2& v : t->particles.v) v += dv;
+}
+
+namespace {
+// The tire keys a script or the tuning panel may change, and where each lives.
+bool set_tire_key(Tire& t, std::string_view key, double value) {
+  TireSpec& s = t.spec;
+  if (key == "friction") s.friction = value;
+  else if (key == "kinetic_friction") s.kinetic_friction = value;
+  else if (key == "pressure") s.pressure = t.area_constraint.pressure = value;
+  else if (key == "material_damping") s.material_damping = value;
+  else if (key == "rolling_resistance") s.rolling_resistance = value;
+  else if (key == "drive_acceleration") s.drive_acceleration = value;
+  else if (key == "jump_speed") s.jump_speed = value;
+  else if (key == "max_speed") s.max_speed = value;
+  else return false;
+  return true;
+}
+}  // namespace
+
+bool World::set_parameter(std::string_view key, double value) {
+  if (key == "solver.substeps") return config_.substeps = static_cast<int>(value), true;
+  if (key == "solver.iterations") return config_.iterations = static_cast<int>(value), true;
+  if (key == "solver.damping") return config_.damping = value, true;
+  if (key.starts_with("player.")) {
+    const Tire* p = player();
+    return p && set_tire_key(*find_tire(p->id), key.substr(7), value);
+  }
+  if (key.starts_with("tires.")) {
+    bool known = true;
+    for (Tire& t : tires_) known = set_tire_key(t, key.substr(6), value) && known;
+    return known;
+  }
+  return false;
+}
+
+void World::show_message(std::string_view text, double seconds) {
+  messages_.push_back({std::string(text), tick_ + static_cast<std::uint64_t>(std::ceil(seconds / config_.dt))});
+}
+
+void World::respawn_player() {
+  const Tire* p = player();
+  if (!p) return;
+  Tire& t = *find_tire(p->id);
+  if (checkpoint_) t.spec.position = *checkpoint_;
+  t.reset();
+}
 
 TireId World::add_tire(const TireSpec& spec) {
   const TireId id = next_id_++;
@@ -45,15 +113,36 @@ void World::step(const TickInput& input) {
   }
   rigid_.begin_tick(config_.dt);
   for (Tire& t : tires_) begin_tick(t, config_, rigid_);
+  // Tire–tire contacts only when there is more than one tire: a lone tire skips the pass.
+  tire_pairs_.clear();
+  if (tires_.size() > 1) pair_finder_.find(tires_, tire_pair_margin(), tire_pairs_);
   const double h = config_.dt / config_.substeps;
   SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_};
   for (int s = 0; s < config_.substeps; ++s) {
     ctx.time = s * h;
-    for (Tire& t : tires_) substep(t, ctx);
+    for (Tire& t : tires_) begin_substep(t, ctx);
+    for (int it = 0; it < config_.iterations; ++it) {
+      for (Tire& t : tires_) solve_iteration(t, ctx);
+      for (const TirePair& pair : tire_pairs_)
+        solve_tire_contact(tires_[pair.a], tires_[pair.b], config_.ground_normal_y);
+    }
+    for (Tire& t : tires_) end_substep(t, ctx);
   }
   rigid_.end_tick(config_.dt);
   for (Tire& t : tires_) guard_divergence(t);
   ++tick_;
+  std::erase_if(messages_, [this](const ScriptMessage& m) { return m.until_tick <= tick_; });
+  if (script_) {
+    WorldScriptHost host(*this);
+    script_->update(host);
+  }
+}
+
+double World::tire_pair_margin() const {
+  // As far as a tread particle can travel in one tick: the clamp allows one segment per substep.
+  double segment = 0.0;
+  for (const Tire& t : tires_) segment = std::max(segment, t.segment_length);
+  return config_.substeps * config_.tunnel_clamp * segment;
 }
 
 void World::guard_divergence(Tire& t) {
@@ -74,6 +163,7 @@ std::uint64_t World::state_hash() const {
     h.add_bytes(t.grounded_flags.data(), t.grounded_flags.size());
   }
   rigid_.hash_into(h);
+  if (script_) script_->hash_into(h);
   return h.digest();
 }
 

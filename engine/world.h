@@ -4,11 +4,15 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rigid_world.h"
+#include "script_runner.h"
+#include "soft_contact.h"
 #include "solver_config.h"
 #include "tire.h"
 
@@ -20,9 +24,18 @@ struct TickInput {
   bool jump = false;
 };
 
+// A message a level script put on screen.
+struct ScriptMessage {
+  std::string text;
+  std::uint64_t until_tick;  // shown while tick() < until_tick
+};
+
 class World {
  public:
   World(const SolverConfig& config, Vec2 gravity);
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
 
   // Adds a tire between ticks. The first tire, or one whose spec says player, becomes the player.
   TireId add_tire(const TireSpec& spec);
@@ -30,7 +43,28 @@ class World {
   void add_obstacle(const Obstacle& obstacle) { rigid_.add_obstacle(obstacle); }
   std::uint32_t add_prop(const PropSpec& spec) { return rigid_.add_prop(spec); }
 
-  // Advances one fixed tick of config().dt: `input` drives the player.
+  // Installs the level's script and runs its tick-0 update at once, so that level-start actions
+  // apply before any physics. An empty spec leaves the world unscripted.
+  void set_script(const ScriptSpec& spec);
+  ScriptStatus status() const { return script_ ? script_->status() : ScriptStatus::running; }
+  const ScriptRunner* script() const { return script_.get(); }
+  const std::vector<ScriptMessage>& messages() const { return messages_; }
+  std::optional<Vec2> checkpoint() const { return checkpoint_; }
+  bool next_level_requested() const { return next_level_requested_; }
+
+  // What scripts (and the game's tuning panel) can do between ticks.
+  void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
+  // "solver.substeps|iterations|damping", "player.<key>" or "tires.<key>" for the tire keys
+  // friction, kinetic_friction, pressure, material_damping, rolling_resistance,
+  // drive_acceleration, jump_speed, max_speed. False for an unknown key.
+  bool set_parameter(std::string_view key, double value);
+  void show_message(std::string_view text, double seconds);
+  void set_checkpoint(Vec2 position) { checkpoint_ = position; }
+  void request_next_level() { next_level_requested_ = true; }
+  // Puts the player back at the checkpoint (or its spawn point), at rest.
+  void respawn_player();
+
+  // Advances one fixed tick of config().dt: `input` drives the player; then the script runs.
   void step(const TickInput& input);
 
   const std::vector<Tire>& tires() const { return tires_; }
@@ -50,8 +84,8 @@ class World {
   double time() const { return static_cast<double>(tick_) * config_.dt; }
 
   // Digest of the exact state: tick, every tire's id, particle positions, velocities and grounded
-  // flags, and every prop's transform, velocity and path state. Same binary and same inputs give
-  // the same hash.
+  // flags, every prop's transform, velocity and path state, and the script's state. Same binary
+  // and same inputs give the same hash.
   std::uint64_t state_hash() const;
 
   // Warnings raised while stepping (a diverged tire that was reset, ...); the caller drains them.
@@ -59,15 +93,22 @@ class World {
 
  private:
   void guard_divergence(Tire& t);
+  double tire_pair_margin() const;
 
   SolverConfig config_;
   Vec2 gravity_;
   RigidWorld rigid_;
   std::vector<Tire> tires_;
+  TirePairFinder pair_finder_;
+  std::vector<TirePair> tire_pairs_;  // this tick's candidate pairs
   std::optional<TireId> player_;
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;
   std::vector<std::string> warnings_;
+  std::unique_ptr<ScriptRunner> script_;
+  std::vector<ScriptMessage> messages_;
+  std::optional<Vec2> checkpoint_;
+  bool next_level_requested_ = false;
 };
 
 }  // namespace tire

@@ -105,8 +105,9 @@ class FakeScriptHost : public ScriptHost {
 
   // How many recorded calls start with `prefix`.
   std::size_t count(const std::string& prefix) const {
-    return static_cast<std::size_t>(std::count_if(
-        calls.begin(), calls.end(), [&](const std::string& c) { return c.compare(0, prefix.size(), prefix) == 0; }));
+    return static_cast<std::size_t>(std::count_if(calls.begin(), calls.end(), [&](const std::string& c) {
+      return c.compare(0, prefix.size(), prefix) == 0;
+    }));
   }
 
  private:

@@ -32,7 +32,7 @@ nlohmann::ordered_json summary(const tire::World& world) {
   }
   return {{"ticks", world.tick()},
           {"time", world.time()},
-          {"status", "running"},
+          {"status", tire::to_string(world.status())},
           {"tires", tires},
           {"props", props},
           {"hash", tire::to_hex(world.state_hash())}};

@@ -1,0 +1,116 @@
+// Contacts between tires: no gap, no passing through, momentum kept, piles that settle.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "soft_contact.h"
+#include "tire_fixtures.h"
+
+using namespace tire;
+using namespace tire::test;
+
+namespace {
+// Deepest any tread particle of `a` sits inside `b`'s tread polygon (0 when none is inside).
+double deepest_inside(const Tire& a, const Tire& b) {
+  double deepest = 0.0;
+  const std::uint32_t n = b.n;
+  for (std::uint32_t i = 0; i < a.n; ++i) {
+    const Vec2 p = a.particles.x[i];
+    double inside_by = 1e300;  // distance to the nearest edge line, if inside all of them
+    bool inside = true;
+    for (std::uint32_t k = 0; k < n && inside; ++k) {
+      const Vec2 e = b.particles.x[(k + 1) % n] - b.particles.x[k];
+      const double s = cross(e, p - b.particles.x[k]) / length(e);  // > 0: to the left (inside, CCW)
+      if (s <= 0.0) inside = false;
+      inside_by = std::min(inside_by, s);
+    }
+    if (inside) deepest = std::max(deepest, inside_by);
+  }
+  return deepest;
+}
+}  // namespace
+
+TEST_CASE("the tire broad phase finds exactly the overlapping pairs, in a fixed order", "[unit][soft]") {
+  std::vector<Tire> tires;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> pos(-20, 20);
+  for (TireId i = 0; i < 60; ++i) tires.emplace_back(i, tire_at({pos(rng), pos(rng)}));
+  TirePairFinder finder;
+  std::vector<TirePair> pairs, again;
+  finder.find(tires, 0.1, pairs);
+  finder.find(tires, 0.1, again);
+  REQUIRE(pairs.size() == again.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) CHECK((pairs[k].a == again[k].a && pairs[k].b == again[k].b));
+  std::size_t brute = 0;
+  for (std::uint32_t i = 0; i < tires.size(); ++i)
+    for (std::uint32_t j = i + 1; j < tires.size(); ++j) {
+      const bool near = length(tires[i].centroid() - tires[j].centroid()) < 2 * 0.5 + 0.2 - 1e-9;
+      const bool listed = std::any_of(pairs.begin(), pairs.end(), [&](const TirePair& p) { return p.a == i && p.b == j; });
+      if (near) CHECK(listed);
+      brute += listed;
+    }
+  CHECK(brute == pairs.size());
+}
+
+TEST_CASE("two tires colliding keep momentum and never pass into each other", "[unit][soft][physics]") {
+  World world(SolverConfig{}, {0, 0});
+  TireSpec left = tire_at({-1.2, 0});
+  left.velocity = {8, 0.5};
+  TireSpec right = tire_at({1.2, 0.2});
+  right.velocity = {-4, 0};
+  right.mass = 20;
+  world.add_tire(left);
+  world.add_tire(right);
+  const auto momentum = [&] { return world.tires()[0].velocity() * 10.0 + world.tires()[1].velocity() * 20.0; };
+  const Vec2 before = momentum();
+  double worst = 0.0;
+  for (int i = 0; i < 90; ++i) {
+    world.step({});
+    worst = std::max({worst, deepest_inside(world.tires()[0], world.tires()[1]),
+                      deepest_inside(world.tires()[1], world.tires()[0])});
+  }
+  const Vec2 after = momentum();
+  INFO("velocities after: " << world.tires()[0].velocity().x << ", " << world.tires()[1].velocity().x);
+  CHECK(world.tires()[0].velocity().x < 0.0);  // they bounced off each other
+  CHECK(after.x == Approx(before.x).margin(1e-9 * 160));  // scale: |p| of each tire is 80 N·s
+  CHECK(after.y == Approx(before.y).margin(1e-9 * 160));
+  CHECK(worst < 0.02);  // at most a small overlap within a step, corrected: no passing through
+  CHECK(length(world.tires()[0].centroid() - world.tires()[1].centroid()) > 0.9);
+}
+
+TEST_CASE("a tire resting in the groove of two others stays there, and can jump off", "[unit][soft][physics]") {
+  // (One tire balanced on another is an unstable equilibrium and rolls off, as real wheels do.)
+  World world = flat_world(tire_at({-0.5, 0.5}));
+  world.add_obstacle({{{-2, 0}, {-1, 3}}});
+  world.add_obstacle({{{1, 0}, {2, 3}}});
+  world.add_tire(tire_at({0.5, 0.5}));
+  world.add_tire(tire_at({0.02, 1.5}, true));
+  run(world, 300);
+  const Tire& top = world.tires()[2];
+  // In the groove: the hubs form a triangle of side about 2R, so the top hub is near 0.5 + √3·0.5.
+  CHECK(top.centroid().y == Approx(0.5 + std::sqrt(3.0) * 0.5).margin(0.06));
+  for (int k = 0; k < 2; ++k) CHECK(deepest_inside(top, world.tires()[static_cast<std::size_t>(k)]) < 0.005);
+  CHECK(top.grounded());  // standing on a tire counts as ground
+  world.step({0.0, true});
+  run(world, 5);
+  CHECK(top.velocity().y > 2.0);
+}
+
+TEST_CASE("a pile of tires in a box settles without overlaps or NaN", "[unit][soft][physics]") {
+  World world(SolverConfig{}, {0, -9.81});
+  world.add_obstacle({{{-10, -1}, {10, 0}}});
+  world.add_obstacle({{{-4, 0}, {-3, 10}}});
+  world.add_obstacle({{{3, 0}, {4, 10}}});
+  for (int i = 0; i < 16; ++i) world.add_tire(tire_at({-2.0 + 1.1 * (i % 4) + 0.1 * (i / 4), 0.6 + 1.2 * (i / 4)}));
+  run(world, 600);
+  double worst = 0.0, fastest = 0.0;
+  for (const Tire& a : world.tires()) {
+    REQUIRE(a.is_finite());
+    fastest = std::max(fastest, length(a.velocity()));
+    for (const Tire& b : world.tires())
+      if (&a != &b) worst = std::max(worst, deepest_inside(a, b));
+  }
+  CHECK(worst < 0.01);
+  CHECK(fastest < 0.05);
+  CHECK(world.warnings().empty());
+}
