@@ -26,6 +26,7 @@ DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> con
       shares |= open.a[l] == c.a || open.a[l] == c.b || open.b[l] == c.a || open.b[l] == c.b;
     if (shares) close();
     const std::uint32_t l = open.count++;
+    slot_.push_back(static_cast<std::uint32_t>(batches_.size() * kLanes + l));
     open.a[l] = c.a;
     open.b[l] = c.b;
     open.rest_length[l] = c.rest_length;
@@ -33,6 +34,13 @@ DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> con
     if (open.count == kLanes) close();
   }
   close();
+}
+
+void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count, double compliance) {
+  for (std::size_t k = first; k < first + count && k < constraints_.size(); ++k) {
+    constraints_[k].compliance = compliance;
+    batches_[slot_[k] / kLanes].compliance[slot_[k] % kLanes] = compliance;
+  }
 }
 
 void DistanceConstraintSet::prepare(const double* w, double h, double tau) {

@@ -45,6 +45,9 @@ class DistanceConstraintSet {
   explicit DistanceConstraintSet(std::vector<DistanceConstraint> constraints);
 
   const std::vector<DistanceConstraint>& constraints() const { return constraints_; }
+  // Changes the compliance of constraints [first, first + count) (live tuning); takes effect at
+  // the next prepare().
+  void set_compliance(std::size_t first, std::size_t count, double compliance);
   std::size_t size() const { return constraints_.size(); }
   std::size_t batch_count() const { return batches_.size(); }
 
@@ -85,6 +88,7 @@ class DistanceConstraintSet {
   };
   std::vector<DistanceConstraint> constraints_;
   std::vector<Batch> batches_;
+  std::vector<std::uint32_t> slot_;  // constraint k is lane slot_[k] % kLanes of batch slot_[k] / kLanes
   Kernel kernel_ = Kernel::automatic;
 };
 

@@ -80,6 +80,19 @@ Vec2 mean(const std::vector<Vec2>& values) {
 }
 }  // namespace
 
+void Tire::set_compliance(const TireCompliance& c) {
+  spec.compliance = c;
+  distance.set_compliance(outer_ring_first(), n, c.outer);
+  distance.set_compliance(inner_ring_first(), n, c.inner);
+  distance.set_compliance(spokes_first(), distance.size() - spokes_first(), c.spoke);
+  area_constraint.compliance = c.pressure;
+}
+
+void Tire::set_mass(double mass) {
+  spec.mass = mass;
+  std::fill(particles.w.begin(), particles.w.end(), 2.0 * n / mass);
+}
+
 Vec2 Tire::centroid() const { return mean(particles.x); }
 
 Vec2 Tire::velocity() const { return mean(particles.v); }

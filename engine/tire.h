@@ -56,6 +56,15 @@ struct Tire {
   // Puts every particle back where the spec builds it, at rest; forgets contacts and λ.
   void reset();
 
+  // Live tuning: new compliances (to every constraint of each kind) and a new total mass.
+  void set_compliance(const TireCompliance& compliance);
+  void set_mass(double mass);
+
+  // The constraints of each kind, as ranges of `distance` (rings first, then spokes).
+  std::size_t outer_ring_first() const { return 0; }
+  std::size_t inner_ring_first() const { return n; }
+  std::size_t spokes_first() const { return 2 * n; }
+
   std::uint32_t segments() const { return n; }
   std::uint32_t particle_count() const { return 2 * n; }
   double total_mass() const { return spec.mass; }
@@ -92,6 +101,14 @@ struct Tire {
   std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
   std::vector<std::uint8_t> on_tire;          // per particle: resting on another tire, this substep
   TireControl control;
+
+  // A mouse grab: particle `grab_particle` pulled towards `grab_target` by a compliant XPBD
+  // constraint C = |x − target| (compliance grab_compliance), while grabbed.
+  bool grabbed = false;
+  std::uint32_t grab_particle = 0;
+  Vec2 grab_target;
+  double grab_compliance = 1e-4;  // m/N: 10 kg hangs 1 cm below the mouse
+  double grab_lambda = 0.0;
 };
 
 }  // namespace tire

@@ -226,10 +226,29 @@ void begin_substep(Tire& t, const SubstepContext& ctx) {
   std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
   std::fill(t.soft_lambda.begin(), t.soft_lambda.end(), 0.0);
   std::fill(t.on_tire.begin(), t.on_tire.end(), std::uint8_t{0});
+  t.grab_lambda = 0.0;
 }
+
+namespace {
+
+// The grab: C = |x − target| pulled to 0 with compliance α (XPBD eq. 18 with one particle).
+void solve_grab(Tire& t, double inv_h2) {
+  Vec2& x = t.particles.x[t.grab_particle];
+  const double w = t.particles.w[t.grab_particle];
+  const Vec2 d = x - t.grab_target;
+  const double len = length(d);
+  if (len <= 0.0 || w <= 0.0) return;
+  const double alpha_tilde = t.grab_compliance * inv_h2;
+  const double delta_lambda = (-len - alpha_tilde * t.grab_lambda) / (w + alpha_tilde);
+  t.grab_lambda += delta_lambda;
+  x += d * (w * delta_lambda / len);
+}
+
+}  // namespace
 
 void solve_iteration(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
+  if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
   t.distance.solve(p.x.data());
   solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), 1.0 / (ctx.h * ctx.h),
                         t.scratch.data());

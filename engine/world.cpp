@@ -44,7 +44,17 @@ bool set_tire_key(Tire& t, std::string_view key, double value) {
   else if (key == "drive_acceleration") s.drive_acceleration = value;
   else if (key == "jump_speed") s.jump_speed = value;
   else if (key == "max_speed") s.max_speed = value;
-  else return false;
+  else if (key == "mass") t.set_mass(value);
+  else if (key.starts_with("compliance.")) {
+    TireCompliance c = s.compliance;
+    const std::string_view part = key.substr(11);
+    if (part == "outer") c.outer = value;
+    else if (part == "inner") c.inner = value;
+    else if (part == "spoke") c.spoke = value;
+    else if (part == "pressure") c.pressure = value;
+    else return false;
+    t.set_compliance(c);
+  } else return false;
   return true;
 }
 }  // namespace
@@ -67,6 +77,45 @@ bool World::set_parameter(std::string_view key, double value) {
 
 void World::show_message(std::string_view text, double seconds) {
   messages_.push_back({std::string(text), tick_ + static_cast<std::uint64_t>(std::ceil(seconds / config_.dt))});
+}
+
+std::optional<TireId> World::grab(Vec2 point, double radius) {
+  release_grab();
+  // The nearest tread particle within `radius`; failing that, the tire whose hub is under the
+  // point, by its nearest tread particle.
+  Tire* chosen = nullptr;
+  std::uint32_t particle = 0;
+  double best = radius * radius;
+  for (Tire& t : tires_)
+    for (std::uint32_t i = 0; i < t.n; ++i)
+      if (const double d2 = length_squared(t.particles.x[i] - point); d2 < best) best = d2, chosen = &t, particle = i;
+  if (!chosen) {
+    for (Tire& t : tires_) {
+      if (length(t.centroid() - point) >= t.spec.outer_radius) continue;
+      chosen = &t;
+      double nearest = 1e300;
+      for (std::uint32_t i = 0; i < t.n; ++i)
+        if (const double d2 = length_squared(t.particles.x[i] - point); d2 < nearest) nearest = d2, particle = i;
+      break;
+    }
+  }
+  if (!chosen) return std::nullopt;
+  chosen->grabbed = true;
+  chosen->grab_particle = particle;
+  chosen->grab_target = point;
+  grabbed_ = chosen->id;
+  return grabbed_;
+}
+
+void World::move_grab(Vec2 target) {
+  if (grabbed_)
+    if (Tire* t = find_tire(*grabbed_)) t->grab_target = target;
+}
+
+void World::release_grab() {
+  if (grabbed_)
+    if (Tire* t = find_tire(*grabbed_)) t->grabbed = false;
+  grabbed_.reset();
 }
 
 void World::respawn_player() {

@@ -56,13 +56,20 @@ class World {
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
   // "solver.substeps|iterations|damping", "player.<key>" or "tires.<key>" for the tire keys
   // friction, kinetic_friction, pressure, material_damping, rolling_resistance,
-  // drive_acceleration, jump_speed, max_speed. False for an unknown key.
+  // drive_acceleration, jump_speed, max_speed, mass, compliance.outer|inner|spoke|pressure.
+  // False for an unknown key.
   bool set_parameter(std::string_view key, double value);
   void show_message(std::string_view text, double seconds);
   void set_checkpoint(Vec2 position) { checkpoint_ = position; }
   void request_next_level() { next_level_requested_ = true; }
   // Puts the player back at the checkpoint (or its spawn point), at rest.
   void respawn_player();
+
+  // Mouse grab: the tire under `point` (within `radius` of its tread) is pulled by its nearest
+  // tread particle towards the target, until released. Returns the tire grabbed.
+  std::optional<TireId> grab(Vec2 point, double radius);
+  void move_grab(Vec2 target);
+  void release_grab();
 
   // Advances one fixed tick of config().dt: `input` drives the player; then the script runs.
   void step(const TickInput& input);
@@ -109,6 +116,7 @@ class World {
   std::vector<ScriptMessage> messages_;
   std::optional<Vec2> checkpoint_;
   bool next_level_requested_ = false;
+  std::optional<TireId> grabbed_;
 };
 
 }  // namespace tire

@@ -40,3 +40,34 @@ TEST_CASE("the first tire is the player unless another says so", "[unit][world]"
   CHECK(steer.player() == nullptr);
   steer.step({1.0, false});  // no player: input goes nowhere, nothing breaks
 }
+
+TEST_CASE("a grabbed tire follows the mouse and falls when released", "[unit][world]") {
+  World world = flat_world(tire_at({0, 0.5}));
+  REQUIRE_FALSE(world.grab({5, 5}, 0.2));  // nothing there
+  REQUIRE(world.grab({0.1, 0.6}, 0.2) == world.tires().front().id);
+  for (int i = 1; i <= 60; ++i) {  // dragged over a second, as a mouse does
+    world.move_grab(Vec2{0.1, 0.6} + (Vec2{2, 3} - Vec2{0.1, 0.6}) * (i / 60.0));
+    world.step({});
+  }
+  run(world, 180);
+  const Tire& t = world.tires().front();
+  CHECK(length(t.particles.x[t.grab_particle] - Vec2{2, 3}) < 0.1);  // hanging from the grab point
+  world.release_grab();
+  run(world, 480);
+  CHECK(t.centroid().y < 0.6);  // fell, bounced and settled back on the ground
+}
+
+TEST_CASE("compliance and mass can be tuned live", "[unit][world]") {
+  World world = flat_world(tire_at({0, 0.5}));
+  run(world, 120);
+  const double stiff_sag = 0.5 - world.tires().front().centroid().y;
+  REQUIRE(world.set_parameter("tires.compliance.pressure", 1e-3));
+  REQUIRE(world.set_parameter("tires.compliance.spoke", 1e-4));
+  REQUIRE(world.set_parameter("tires.mass", 20));
+  CHECK_FALSE(world.set_parameter("tires.compliance.bogus", 1));
+  run(world, 240);
+  const Tire& t = world.tires().front();
+  CHECK(t.spec.compliance.spoke == 1e-4);
+  CHECK(t.particle_mass() * t.particle_count() == Approx(20));
+  CHECK(0.5 - t.centroid().y > 2 * stiff_sag);  // softer and heavier: it sags more
+}
