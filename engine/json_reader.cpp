@@ -107,11 +107,11 @@ double JsonReader::number(const json& obj, const std::string& path, const char* 
   const std::string p = join_path(path, key);
   const auto it = obj.find(key);
   if (it == obj.end()) {
-    if (required) fail(p, std::string("is required: a number in ") + range.text() + " " + unit);
+    if (required) fail(p, "is required: a number in " + range.text() + (*unit ? " " : "") + unit);
     return fallback;
   }
   if (!it->is_number() || !range.contains(it->get<double>()) || !std::isfinite(it->get<double>())) {
-    fail(p, "must be a number in " + range.text() + " " + unit + ", got " + describe(*it));
+    fail(p, "must be a number in " + range.text() + (*unit ? " " : "") + unit + ", got " + describe(*it));
     return fallback;
   }
   return it->get<double>();

@@ -1,9 +1,9 @@
 // Level files: size and depth limits, parse errors with line and column, --set overrides.
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
+#include "file_io.h"
 #include "level.h"
 #include "world.h"
 
@@ -99,21 +99,10 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
 }
 
 LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    return {std::nullopt, {name + ": " + (std::filesystem::exists(file, ec) ? "not a regular file" : "no such file")}};
-  }
-  const auto size = std::filesystem::file_size(file, ec);
-  if (ec) return {std::nullopt, {name + ": cannot read: " + ec.message()}};
-  if (size > LevelLimits::max_file_bytes)
-    return {std::nullopt, {name + ": file is " + std::to_string(size) + " bytes; the limit is " +
-                           std::to_string(LevelLimits::max_file_bytes)}};
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) return {std::nullopt, {name + ": cannot read the file"}};
-  return load_level_text(text.str(), name, overrides);
+  std::string error;
+  const auto text = read_file(file, LevelLimits::max_file_bytes, error);
+  if (!text) return {std::nullopt, {file.string() + ": " + error}};
+  return load_level_text(*text, file.string(), overrides);
 }
 
 void populate_world(const Level& level, World& world) {

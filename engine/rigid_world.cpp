@@ -101,6 +101,10 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
   b2ChainShape chain;
   std::vector<b2Vec2> points;
   for (const Vec2& p : prop.geometry.vertices) points.push_back(to_b2(p));
+  // Box2D's chains are one-sided too, but solid on the left of their direction (their normals
+  // point right, as a counter-clockwise polygon's do); ours are solid on the right. Same side:
+  // reverse the points.
+  if (spec.shape == PropShape::chain) std::reverse(points.begin(), points.end());
   switch (spec.shape) {
     case PropShape::box:
     case PropShape::polygon:

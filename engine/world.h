@@ -24,6 +24,9 @@ struct TickInput {
   bool jump = false;
 };
 
+// How near a tread particle a mouse press must be to grab its tire (m).
+inline constexpr double kGrabRadius = 0.3;
+
 // A message a level script put on screen.
 struct ScriptMessage {
   std::string text;

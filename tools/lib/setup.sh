@@ -2,7 +2,7 @@
 # Sourced, not run. Idempotent: a second call with nothing changed costs a few seconds.
 
 TIRE_PACKAGES=(g++ cmake pkg-config libsdl2-dev libbox2d-dev nlohmann-json3-dev catch2
-  libcli11-dev libimgui-dev)
+  libcli11-dev libimgui-dev libssl-dev)
 
 tire_missing_packages() {
   local p missing=()

@@ -14,8 +14,17 @@ struct RunOptions {
   double steer = 0.0;
   std::vector<long long> jump_at;
   long long trace_every = 0;  // > 0: a readable line about the player every this many ticks (stderr)
+  std::string input;          // a replay whose inputs drive the run
+  std::string record;         // write the run as a replay here
 };
 int run(const RunOptions& options);
+
+struct ReplayOptions {
+  std::vector<std::string> files;
+  bool update = false;               // rewrite the expectations from this run
+  bool allow_level_change = false;   // run even if the level's content hash changed
+};
+int replay(const ReplayOptions& options);
 
 int validate(const std::vector<std::string>& files);
 

@@ -19,6 +19,17 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--trace", run.trace_every, "Every N ticks, print a readable line about the player on stderr")
       ->check(CLI::PositiveNumber);
 
+  run_cmd->add_option("--input", run.input, "Drive the player with the inputs of this replay file");
+  run_cmd->add_option("--record", run.record, "Record the run as a replay file (written atomically)");
+
+  tirectl::ReplayOptions replay;
+  CLI::App* replay_cmd =
+      app.add_subcommand("replay", "Run replays headless and check their expectations (exit 0 pass, 1 fail, 2 bad input)");
+  replay_cmd->add_option("files", replay.files, "Replay files (JSON)")->required();
+  replay_cmd->add_flag("--update", replay.update, "Rewrite each replay's expectations from this run, saying what changed");
+  replay_cmd->add_flag("--allow-level-change", replay.allow_level_change,
+                       "Run a replay even if its level's content changed since it was recorded");
+
   std::vector<std::string> validate_files;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check level files; one line per problem");
   validate_cmd->add_option("files", validate_files, "Level files (JSON)")->required();
@@ -38,6 +49,7 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) return tirectl::run(run);
     if (*validate_cmd) return tirectl::validate(validate_files);
+    if (*replay_cmd) return tirectl::replay(replay);
     if (*bench_cmd) return tirectl::bench(bench);
   } catch (const std::exception& e) {
     std::cerr << "tirectl: " << e.what() << "\n";

@@ -1,10 +1,14 @@
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "file_io.h"
 #include "level.h"
+#include "replay.h"
 #include "state_hash.h"
 #include "world.h"
 
@@ -55,22 +59,64 @@ int run(const RunOptions& options) {
     for (const std::string& error : load.errors) std::cerr << error << "\n";
     return 2;
   }
-  tire::World world(load.level->solver, load.level->gravity);
-  tire::populate_world(*load.level, world);
+  // The inputs: a replay's, or those of --steer and --jump-at.
+  std::vector<tire::ReplayInput> inputs;
+  if (!options.input.empty()) {
+    const tire::ReplayLoad replay = tire::load_replay_file(options.input);
+    if (!replay.replay) {
+      for (const std::string& error : replay.errors) std::cerr << error << "\n";
+      return 2;
+    }
+    inputs = replay.replay->inputs;
+  } else {
+    tire::ReplayInput hold;
+    hold.steer = options.steer;
+    inputs.push_back(hold);
+    std::vector<long long> jumps = options.jump_at;
+    std::sort(jumps.begin(), jumps.end());
+    jumps.erase(std::unique(jumps.begin(), jumps.end()), jumps.end());
+    for (const long long tick : jumps)
+      if (tick < options.ticks) {
+        tire::ReplayInput jump;
+        jump.tick = static_cast<std::uint64_t>(tick);
+        jump.jump = true;
+        inputs.push_back(jump);
+      }
+    std::stable_sort(inputs.begin(), inputs.end(), [](const auto& a, const auto& b) { return a.tick < b.tick; });
+  }
 
-  std::vector<long long> jumps = options.jump_at;
-  std::sort(jumps.begin(), jumps.end());
-  auto next_jump = jumps.begin();
+  std::optional<tire::ReplayRecorder> recorder;
+  if (!options.record.empty()) {
+    const std::filesystem::path out = std::filesystem::absolute(options.record);
+    const std::filesystem::path level = std::filesystem::absolute(options.level);
+    std::string error;
+    const auto bytes = tire::read_file(level, tire::LevelLimits::max_file_bytes, error);
+    recorder.emplace(std::filesystem::relative(level, out.parent_path()).generic_string(), tire::sha256_hex(*bytes));
+  }
+
+  std::unique_ptr<tire::World> world = tire::make_world(*load.level);
+  double steer = 0.0;
+  std::size_t next = 0;
   for (long long tick = 0; tick < options.ticks; ++tick) {
     bool jump = false;
-    while (next_jump != jumps.end() && *next_jump == tick) jump = true, ++next_jump;
-    while (next_jump != jumps.end() && *next_jump < tick) ++next_jump;
-    world.step({options.steer, jump});
-    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world);
-    for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
-    world.warnings().clear();
+    while (next < inputs.size() && inputs[next].tick == static_cast<std::uint64_t>(tick)) {
+      if (recorder) recorder->input(inputs[next]);
+      tire::apply_input(inputs[next++], *world, *load.level, steer, jump);
+    }
+    world->step({steer, jump});
+    if (recorder) recorder->after_step(*world);
+    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(*world);
+    for (const std::string& w : world->warnings()) std::cerr << "tirectl: warning: " << w << "\n";
+    world->warnings().clear();
   }
-  std::cout << summary(world).dump(2) << "\n";
+  if (recorder) {
+    std::string error;
+    if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*world)), error)) {
+      std::cerr << "tirectl: " << error << "\n";
+      return 2;
+    }
+  }
+  std::cout << summary(*world).dump(2) << "\n";
   return 0;
 }
 
