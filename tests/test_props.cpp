@@ -354,3 +354,36 @@ TEST_CASE("props are read with every mistake reported at its path", "[unit][prop
   CHECK(has("p.json: /props/6/points/2: must be [x, y]"));
   CHECK_FALSE(has("/props/6/points: must be a convex"));  // no knock-on error from the bad point
 }
+
+TEST_CASE("tires and Box2D bodies stand on the same side of a chain", "[unit][props][physics]") {
+  // A chain drawn left to right is solid below, for the tire's contacts and for Box2D's alike.
+  World world(SolverConfig{}, {0, -9.81});
+  PropSpec ground;
+  ground.shape = PropShape::chain;
+  ground.points = {{-10, 0}, {0, -0.5}, {10, -0.5}};
+  world.add_prop(ground);
+  PropSpec crate;
+  crate.name = "crate";
+  crate.type = PropType::dynamic_body;
+  crate.size = {0.6, 0.6};
+  crate.position = {4, 1};
+  world.add_prop(crate);
+  world.add_tire(tire_at({-4, 1.5}));
+  run(world, 180);
+  const Pose crate_pose = world.rigid().current_pose(*world.rigid().find_prop("crate"));
+  CHECK(crate_pose.position.y == Approx(-0.5 + 0.3).margin(0.03));
+  CHECK(world.tires().front().centroid().y > -0.5);
+  // And a closed chain is solid inside for both: the crate dropped onto it stays on top.
+  World ring(SolverConfig{}, {0, -9.81});
+  PropSpec box;
+  box.shape = PropShape::chain;
+  box.loop = true;
+  box.points = {{-3, -1}, {3, -1}, {3, 0}, {-3, 0}};
+  ring.add_prop(box);
+  crate.position = {0, 1};
+  ring.add_prop(crate);
+  ring.add_tire(tire_at({-1.5, 1.0}));
+  run(ring, 180);
+  CHECK(ring.rigid().current_pose(*ring.rigid().find_prop("crate")).position.y == Approx(0.3).margin(0.03));
+  CHECK(ring.tires().front().centroid().y > 0.4);
+}
