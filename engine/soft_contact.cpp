@@ -6,19 +6,23 @@
 
 namespace tire {
 
-void TirePairFinder::find(const std::vector<Tire>& tires, double margin, std::vector<TirePair>& out) {
+void TirePairFinder::find(const std::vector<Tire>& tires, double dt, double gravity, std::vector<TirePair>& out) {
   out.clear();
   const auto n = static_cast<std::uint32_t>(tires.size());
   bounds_.resize(n);
   order_.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::vector<Vec2>& x = tires[i].particles.x;
+    const std::vector<Vec2>& v = tires[i].particles.v;
     Aabb b{x.front(), x.front()};
+    double speed2 = 0.0;
     for (std::uint32_t k = 0; k < tires[i].n; ++k) {  // the tread bounds the tire
       b.min = {std::min(b.min.x, x[k].x), std::min(b.min.y, x[k].y)};
       b.max = {std::max(b.max.x, x[k].x), std::max(b.max.y, x[k].y)};
+      speed2 = std::max(speed2, length_squared(v[k]));
     }
-    bounds_[i] = b.expanded(margin);
+    // Both tires of a pair are expanded, so each covers its own travel.
+    bounds_[i] = b.expanded(std::sqrt(speed2) * dt + 0.5 * gravity * dt * dt + kTirePairSkin);
     order_[i] = {bounds_[i].min.x, i};
   }
   std::sort(order_.begin(), order_.end(), [](const Entry& l, const Entry& r) {
@@ -58,11 +62,8 @@ void push_out(Tire& a, Tire& b, double ground_normal_y) {
   Vec2* xb = b.particles.x.data();
   const Vec2* xb_prev = b.particles.x_prev.data();
   const double* wb = b.particles.w.data();
-  Vec2 hub;
-  double reach2 = 0.0;
-  for (std::uint32_t k = 0; k < nb; ++k) hub += xb[k];
-  hub = hub / static_cast<double>(nb);
-  for (std::uint32_t k = 0; k < nb; ++k) reach2 = std::max(reach2, length_squared(xb[k] - hub));
+  const Vec2 hub = b.tread_hub;
+  const double reach2 = b.tread_reach * b.tread_reach;
   const double mu = std::sqrt(a.spec.friction * b.spec.friction);
 
   for (std::uint32_t i = 0; i < a.n; ++i) {
@@ -105,6 +106,9 @@ void push_out(Tire& a, Tire& b, double ground_normal_y) {
 }  // namespace
 
 void solve_tire_contact(Tire& a, Tire& b, double ground_normal_y) {
+  // Bounding circles apart: nothing to do.
+  const double reach = a.tread_reach + b.tread_reach;
+  if (length_squared(a.tread_hub - b.tread_hub) >= reach * reach) return;
   push_out(a, b, ground_normal_y);
   push_out(b, a, ground_normal_y);
 }

@@ -21,11 +21,13 @@ struct TirePair {
   std::uint32_t b;
 };
 
-// Broad phase: sort-and-sweep of the tires' bounds (expanded by `margin`) along x. Sub-quadratic
-// for a spread-out scene, deterministic (ties broken by index), no allocation once warmed up.
+// Broad phase: sort-and-sweep of the tires' bounds along x, each expanded by how far its tread can
+// travel this tick (its fastest particle's speed over dt, plus what gravity adds, plus a skin).
+// Sub-quadratic for a spread-out scene, deterministic (ties broken by index), no allocation once
+// warmed up.
 class TirePairFinder {
  public:
-  void find(const std::vector<Tire>& tires, double margin, std::vector<TirePair>& out);
+  void find(const std::vector<Tire>& tires, double dt, double gravity, std::vector<TirePair>& out);
 
  private:
   struct Entry {
@@ -36,7 +38,11 @@ class TirePairFinder {
   std::vector<Aabb> bounds_;
 };
 
-// One iteration of contacts between two tires, both ways. `ground_normal_y` marks particles that
+// Room for what the constraints move a particle within a tick, beyond its velocity (m).
+inline constexpr double kTirePairSkin = 0.05;
+
+// One iteration of contacts between two tires, both ways. Uses each tire's tread_hub and
+// tread_reach from its own iteration. `ground_normal_y` marks particles that
 // rest on the other tire as grounded (a tire can jump off a pile).
 void solve_tire_contact(Tire& a, Tire& b, double ground_normal_y);
 

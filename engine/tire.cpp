@@ -28,6 +28,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   candidates.reserve(16);
   prop_candidates.reserve(16);
   prop_frames.reserve(16);
+  prop_impulses.reserve(64);
   pairs.reserve(4 * n);
   scratch.resize(n);
   soft_lambda.resize(n);

@@ -35,6 +35,16 @@ struct ContactPair {
   double mu_kinetic;
 };
 
+// A reaction impulse a tire's contact owes a dynamic prop. Collected per tire while tires are
+// solved (possibly in parallel) and handed to the props afterwards in tire order, so the result
+// never depends on which thread solved what.
+struct PropImpulse {
+  std::uint32_t prop;
+  Vec2 impulse;  // N·s
+  Vec2 point;    // where it acts (world)
+  double time;   // into the tick (s)
+};
+
 // A nearby prop's predicted pose at the start and end of the current substep.
 struct PropFrame {
   std::uint32_t prop;
@@ -97,8 +107,11 @@ struct Tire {
   std::vector<std::uint32_t> prop_candidates; // props near the tire this tick (broad phase)
   std::vector<PropFrame> prop_frames;         // their poses this substep
   std::vector<ContactPair> pairs;             // particles near any of them this substep
+  std::vector<PropImpulse> prop_impulses;     // owed to props since they were last handed over
   std::vector<Vec2> scratch;                  // per outer particle: area gradients
   std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
+  Vec2 tread_hub;                             // mean of the tread particles, after this iteration's own solve
+  double tread_reach = 0.0;                   // largest distance of a tread particle from tread_hub
   std::vector<std::uint8_t> on_tire;          // per particle: resting on another tire, this substep
   TireControl control;
 

@@ -106,8 +106,7 @@ void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
 // inverse mass w = 1/M + (r×n)²/I (Müller 2020 eq. 2–3) and the reaction impulse −m Δx/h.
 void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext& ctx) {
   const PropFrame& frame = t.prop_frames[pair.index];
-  RigidWorld& rigid = *ctx.rigid;
-  const Prop& prop = rigid.props()[frame.prop];
+  const Prop& prop = ctx.rigid->props()[frame.prop];
   Vec2& x = t.particles.x[pair.particle];
   const Vec2 x_prev = t.particles.x_prev[pair.particle];
   const auto local = local_contact(prop.geometry, frame.start.to_local(x_prev), frame.end.to_local(x));
@@ -129,7 +128,7 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
                   tangent_share);
   rec.surface_velocity = surface_velocity;
   rec.prop = static_cast<std::int32_t>(frame.prop);
-  if (prop.is_dynamic()) rigid.add_impulse(frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end);
+  if (prop.is_dynamic()) t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end});
 }
 
 void solve_contacts(Tire& t, const SubstepContext& ctx) {
@@ -190,8 +189,8 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const ContactRecord& c = t.contacts[i];
     const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
-    if (c.prop >= 0 && dv != Vec2{})
-      ctx.rigid->add_impulse(static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h);
+    if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
+      t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
     t.grounded_flags[i] = (c.active && c.normal.y >= ctx.config->ground_normal_y) || t.on_tire[i];
   }
   if (const double tau = t.spec.material_damping; tau > 0.0) {
@@ -253,14 +252,31 @@ void solve_iteration(Tire& t, const SubstepContext& ctx) {
   solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), 1.0 / (ctx.h * ctx.h),
                         t.scratch.data());
   solve_contacts(t, ctx);
+  // Where the tread is now, for the contacts between tires that follow this iteration.
+  Vec2 hub;
+  for (std::uint32_t i = 0; i < t.n; ++i) hub += p.x[i];
+  hub = hub / static_cast<double>(t.n);
+  double reach2 = 0.0;
+  for (std::uint32_t i = 0; i < t.n; ++i) reach2 = std::max(reach2, length_squared(p.x[i] - hub));
+  t.tread_hub = hub;
+  t.tread_reach = std::sqrt(reach2);
 }
 
 void end_substep(Tire& t, const SubstepContext& ctx) { update_velocities(t, ctx); }
 
-void substep(Tire& t, const SubstepContext& ctx) {
+void apply_prop_impulses(Tire& t, RigidWorld& rigid) {
+  for (const PropImpulse& p : t.prop_impulses) rigid.add_impulse(p.prop, p.impulse, p.point, p.time);
+  t.prop_impulses.clear();
+}
+
+void substep(Tire& t, const SubstepContext& ctx, RigidWorld& rigid) {
   begin_substep(t, ctx);
-  for (int it = 0; it < ctx.config->iterations; ++it) solve_iteration(t, ctx);
+  for (int it = 0; it < ctx.config->iterations; ++it) {
+    solve_iteration(t, ctx);
+    apply_prop_impulses(t, rigid);
+  }
   end_substep(t, ctx);
+  apply_prop_impulses(t, rigid);
 }
 
 }  // namespace tire

@@ -13,7 +13,7 @@ struct SubstepContext {
   double time = 0.0;  // of the substep's start, from the start of the tick (s)
   Vec2 gravity;
   const SolverConfig* config = nullptr;
-  RigidWorld* rigid = nullptr;  // obstacles and props; props take the tires' reaction impulses
+  const RigidWorld* rigid = nullptr;  // obstacles and props, read only while tires are solved
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and
@@ -22,10 +22,14 @@ void begin_tick(Tire& tire, const SolverConfig& config, const RigidWorld& rigid)
 
 // A substep in three phases, so that a world can solve contacts between tires inside each iteration:
 // begin (predict, find contact candidates, reset λ), iterations, end (velocities, friction,
-// damping). substep() runs the three for a tire on its own.
+// damping). Each touches only its own tire, so tires can be solved in parallel; impulses owed to
+// props wait in the tire until apply_prop_impulses. substep() runs the three for a tire on its own.
 void begin_substep(Tire& tire, const SubstepContext& ctx);
 void solve_iteration(Tire& tire, const SubstepContext& ctx);
 void end_substep(Tire& tire, const SubstepContext& ctx);
-void substep(Tire& tire, const SubstepContext& ctx);
+void substep(Tire& tire, const SubstepContext& ctx, RigidWorld& rigid);
+
+// Hands the reaction impulses a tire's contacts owe to props over to them (and forgets them).
+void apply_prop_impulses(Tire& tire, RigidWorld& rigid);
 
 }  // namespace tire

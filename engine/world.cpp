@@ -1,6 +1,8 @@
 #include "world.h"
 
 #include <algorithm>
+#include <bit>
+#include <thread>
 #include <cmath>
 
 #include "state_hash.h"
@@ -10,7 +12,8 @@
 
 namespace tire {
 
-World::World(const SolverConfig& config, Vec2 gravity) : config_(config), gravity_(gravity), rigid_(gravity) {}
+World::World(const SolverConfig& config, Vec2 gravity)
+    : config_(config), gravity_(gravity), rigid_(gravity), threads_(std::max(1u, std::thread::hardware_concurrency())) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
@@ -130,6 +133,13 @@ TireId World::add_tire(const TireSpec& spec) {
   const TireId id = next_id_++;
   tires_.emplace_back(id, spec);
   if (spec.player || !player_) player_ = id;
+  // Room for the contacts between tires, so that stepping never allocates: a tire in a pile
+  // touches at most six others, and a pair is counted once.
+  const std::size_t pairs = 4 * tires_.size();
+  tire_pairs_.reserve(pairs);
+  colored_pairs_.reserve(pairs);
+  pair_color_.reserve(pairs);
+  tire_colors_.reserve(tires_.size());
   return id;
 }
 
@@ -161,21 +171,40 @@ void World::step(const TickInput& input) {
     }
   }
   rigid_.begin_tick(config_.dt);
-  for (Tire& t : tires_) begin_tick(t, config_, rigid_);
+  for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) begin_tick(tires_[i], config_, rigid_);
+  });
   // Tire–tire contacts only when there is more than one tire: a lone tire skips the pass.
   tire_pairs_.clear();
-  if (tires_.size() > 1) pair_finder_.find(tires_, tire_pair_margin(), tire_pairs_);
+  if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
+  color_pairs();
   const double h = config_.dt / config_.substeps;
   SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_};
+  const auto hand_over_impulses = [&] {
+    for (Tire& t : tires_) apply_prop_impulses(t, rigid_);
+  };
   for (int s = 0; s < config_.substeps; ++s) {
     ctx.time = s * h;
-    for (Tire& t : tires_) begin_substep(t, ctx);
+    for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) begin_substep(tires_[i], ctx);
+    });
     for (int it = 0; it < config_.iterations; ++it) {
-      for (Tire& t : tires_) solve_iteration(t, ctx);
-      for (const TirePair& pair : tire_pairs_)
-        solve_tire_contact(tires_[pair.a], tires_[pair.b], config_.ground_normal_y);
+      for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) solve_iteration(tires_[i], ctx);
+      });
+      hand_over_impulses();
+      for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
+        const TirePair* first = colored_pairs_.data() + color_begin_[c];
+        for_tires(color_begin_[c + 1] - color_begin_[c], [&](std::size_t b, std::size_t e) {
+          for (std::size_t k = b; k < e; ++k)
+            solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
+        });
+      }
     }
-    for (Tire& t : tires_) end_substep(t, ctx);
+    for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) end_substep(tires_[i], ctx);
+    });
+    hand_over_impulses();
   }
   rigid_.end_tick(config_.dt);
   for (Tire& t : tires_) guard_divergence(t);
@@ -187,11 +216,53 @@ void World::step(const TickInput& input) {
   }
 }
 
-double World::tire_pair_margin() const {
-  // As far as a tread particle can travel in one tick: the clamp allows one segment per substep.
-  double segment = 0.0;
-  for (const Tire& t : tires_) segment = std::max(segment, t.segment_length);
-  return config_.substeps * config_.tunnel_clamp * segment;
+namespace {
+// Below this many tires a tick is too short to be worth waking threads for.
+constexpr std::size_t kParallelMinTires = 32;
+}  // namespace
+
+void World::set_threads(unsigned threads) {
+  threads_ = std::max(1u, threads);
+  pool_.reset();
+}
+
+template <typename F>
+void World::for_tires(std::size_t n, F&& fn) {
+  if (threads_ > 1 && tires_.size() >= kParallelMinTires) {
+    if (!pool_) pool_ = std::make_unique<WorkerPool>(threads_);
+    pool_->parallel_for(n, fn);
+  } else {
+    fn(std::size_t{0}, n);
+  }
+}
+
+void World::color_pairs() {
+  // Greedy colouring in pair order: each pair takes the lowest colour neither tire uses yet. A tire
+  // with 64 neighbours or more sends its extra pairs to a last colour of their own.
+  constexpr std::uint32_t kColors = 64;
+  tire_colors_.assign(tires_.size(), 0);
+  pair_color_.resize(tire_pairs_.size());
+  std::uint32_t color_count = 0;
+  for (std::size_t k = 0; k < tire_pairs_.size(); ++k) {
+    const TirePair p = tire_pairs_[k];
+    const std::uint64_t used = tire_colors_[p.a] | tire_colors_[p.b];
+    const auto c = static_cast<std::uint32_t>(std::countr_one(used));  // 64 when all are taken
+    if (c < kColors) {
+      tire_colors_[p.a] |= std::uint64_t{1} << c;
+      tire_colors_[p.b] |= std::uint64_t{1} << c;
+    }
+    pair_color_[k] = static_cast<std::uint8_t>(c);
+    color_count = std::max(color_count, c + 1);
+  }
+  // Counting sort by colour, keeping pair order within a colour.
+  color_begin_.assign(color_count + 1, 0);
+  for (const std::uint8_t c : pair_color_) ++color_begin_[c + 1u];
+  for (std::uint32_t c = 0; c < color_count; ++c) color_begin_[c + 1] += color_begin_[c];
+  colored_pairs_.resize(tire_pairs_.size());
+  for (std::size_t k = 0; k < tire_pairs_.size(); ++k) colored_pairs_[color_begin_[pair_color_[k]]++] = tire_pairs_[k];
+  // The scatter moved each start to the next colour's start: shift back.
+  for (std::uint32_t c = color_count; c > 0; --c) color_begin_[c] = color_begin_[c - 1];
+  color_begin_[0] = 0;
 }
 
 void World::guard_divergence(Tire& t) {

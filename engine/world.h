@@ -13,6 +13,7 @@
 #include "rigid_world.h"
 #include "script_runner.h"
 #include "soft_contact.h"
+#include "worker_pool.h"
 #include "solver_config.h"
 #include "tire.h"
 
@@ -77,6 +78,11 @@ class World {
   // Advances one fixed tick of config().dt: `input` drives the player; then the script runs.
   void step(const TickInput& input);
 
+  // Threads used for scenes of many tires (default: the hardware's). Results are identical for
+  // any count: tires are solved independently, shared effects are applied in a fixed order.
+  void set_threads(unsigned threads);
+  unsigned threads() const { return threads_; }
+
   const std::vector<Tire>& tires() const { return tires_; }
   Tire* find_tire(TireId id);
   const Tire* player() const;
@@ -103,14 +109,25 @@ class World {
 
  private:
   void guard_divergence(Tire& t);
-  double tire_pair_margin() const;
+  void color_pairs();
+  // fn(begin, end) over tire indices [0, n): in parallel when the scene is big enough.
+  template <typename F>
+  void for_tires(std::size_t n, F&& fn);
 
   SolverConfig config_;
   Vec2 gravity_;
   RigidWorld rigid_;
   std::vector<Tire> tires_;
   TirePairFinder pair_finder_;
-  std::vector<TirePair> tire_pairs_;  // this tick's candidate pairs
+  std::vector<TirePair> tire_pairs_;     // this tick's candidate pairs
+  // The pairs sorted into colours: no two pairs of a colour share a tire, so a colour's pairs are
+  // solved in parallel; colours always go in the same order, whatever the thread count.
+  std::vector<TirePair> colored_pairs_;
+  std::vector<std::uint32_t> color_begin_;  // colour c is colored_pairs_[color_begin_[c], color_begin_[c+1])
+  std::vector<std::uint64_t> tire_colors_;  // per tire: colours its pairs use (scratch)
+  std::vector<std::uint8_t> pair_color_;    // per pair (scratch)
+  unsigned threads_ = 1;
+  std::unique_ptr<WorkerPool> pool_;  // made on first need
   std::optional<TireId> player_;
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;

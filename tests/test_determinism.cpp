@@ -38,3 +38,32 @@ TEST_CASE("a different input gives a different hash", "[unit][determinism]") {
   CHECK(a.state_hash() != b.state_hash());
   CHECK(to_hex(a.state_hash()).size() == 16);
 }
+
+TEST_CASE("results do not depend on the number of threads", "[unit][determinism]") {
+  // A pile big enough to run in parallel, with crates for the deferred prop impulses.
+  auto build = [](unsigned threads) {
+    auto world = std::make_unique<World>(SolverConfig{}, Vec2{0, -9.81});
+    world->set_threads(threads);
+    world->add_obstacle({{{-1, -1}, {16, 0}}});
+    world->add_obstacle({{{-1, 0}, {0, 50}}});
+    world->add_obstacle({{{15, 0}, {16, 50}}});
+    for (int i = 0; i < 100; ++i) world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
+    for (int i = 0; i < 6; ++i) {
+      PropSpec crate;
+      crate.type = PropType::dynamic_body;
+      crate.size = {0.6, 0.6};
+      crate.density = 20;
+      crate.position = {1.0 + 2.2 * i, 9.0};
+      world->add_prop(crate);
+    }
+    return world;
+  };
+  auto one = build(1), two = build(2), three = build(3);
+  for (int tick = 0; tick < 90; ++tick) {
+    one->step({1.0, tick == 40});
+    two->step({1.0, tick == 40});
+    three->step({1.0, tick == 40});
+    REQUIRE(one->state_hash() == two->state_hash());
+    REQUIRE(one->state_hash() == three->state_hash());
+  }
+}

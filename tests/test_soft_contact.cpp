@@ -37,14 +37,17 @@ TEST_CASE("the tire broad phase finds exactly the overlapping pairs, in a fixed 
   for (TireId i = 0; i < 60; ++i) tires.emplace_back(i, tire_at({pos(rng), pos(rng)}));
   TirePairFinder finder;
   std::vector<TirePair> pairs, again;
-  finder.find(tires, 0.1, pairs);
-  finder.find(tires, 0.1, again);
+  finder.find(tires, 1.0 / 60.0, 0.0, pairs);  // at rest: bounds grow by the skin only
+  finder.find(tires, 1.0 / 60.0, 0.0, again);
   REQUIRE(pairs.size() == again.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) CHECK((pairs[k].a == again[k].a && pairs[k].b == again[k].b));
   std::size_t brute = 0;
   for (std::uint32_t i = 0; i < tires.size(); ++i)
     for (std::uint32_t j = i + 1; j < tires.size(); ++j) {
-      const bool near = length(tires[i].centroid() - tires[j].centroid()) < 2 * 0.5 + 0.2 - 1e-9;
+      // Square bounds of side 2R + 2·skin overlap when the hubs are that close on both axes.
+      const Vec2 d = tires[i].centroid() - tires[j].centroid();
+      const double side = 2 * 0.5 + 2 * kTirePairSkin;
+      const bool near = std::abs(d.x) < side - 1e-9 && std::abs(d.y) < side - 1e-9;
       const bool listed = std::any_of(pairs.begin(), pairs.end(), [&](const TirePair& p) { return p.a == i && p.b == j; });
       if (near) CHECK(listed);
       brute += listed;

@@ -1,6 +1,7 @@
 // Performance scenes, timed with a monotonic clock outside the simulation. CSV on stdout.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -49,7 +50,7 @@ class BareTireScene final : public Steppable {
     tire::SubstepContext ctx{h, 0.0, {0.0, -9.81}, &config_, &rigid_};
     for (int s = 0; s < config_.substeps; ++s) {
       ctx.time = s * h;
-      tire::substep(tire_, ctx);
+      tire::substep(tire_, ctx, rigid_);
     }
   }
   const tire::Tire& first_tire() const override { return tire_; }
@@ -79,6 +80,34 @@ std::unique_ptr<Steppable> flat_level() {
   const tire::LevelLoad load = tire::load_level_text(kFlatLevel, "flat-level");
   auto world = std::make_unique<tire::World>(load.level->solver, load.level->gravity);
   tire::populate_world(*load.level, *world);
+  return std::make_unique<WorldScene>(std::move(world));
+}
+
+// A walled pile: `count` default tires (28 segments, 8 substeps × 1 iteration) stacked in rows in a
+// box as wide as about sqrt(count) tires, already touching, with soft–soft contacts on; optionally
+// with `crates` dynamic Box2D boxes mixed in.
+std::unique_ptr<Steppable> pile(int count, int crates = 0) {
+  tire::SolverConfig config;
+  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
+  const int per_row = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)) * 1.5)));
+  const double width = per_row * 1.05;
+  world->add_obstacle({{{-1.0, -1.0}, {width + 1.0, 0.0}}});
+  world->add_obstacle({{{-1.0, 0.0}, {0.0, 1000.0}}});
+  world->add_obstacle({{{width, 0.0}, {width + 1.0, 1000.0}}});
+  for (int i = 0; i < count; ++i) {
+    tire::TireSpec spec;
+    const int row = i / per_row, column = i % per_row;
+    spec.position = {0.55 + 1.05 * column + 0.25 * (row % 2), 0.5 + 1.0 * row};
+    world->add_tire(spec);
+  }
+  for (int i = 0; i < crates; ++i) {
+    tire::PropSpec crate;
+    crate.type = tire::PropType::dynamic_body;
+    crate.size = {0.6, 0.6};
+    crate.density = 20;
+    crate.position = {0.5 + std::fmod(i * 2.3, width - 1.0), 1.0 + count / per_row + 0.8 * i / 4};
+    world->add_prop(crate);
+  }
   return std::make_unique<WorldScene>(std::move(world));
 }
 
@@ -117,6 +146,11 @@ const Scene kScenes[] = {
      [] { return std::make_unique<BareTireScene>(); }, {}},
     {"flat-level", "the same tire and ground loaded as a level and stepped by the World",
      [] { return flat_level(); }, {}},
+    {"pile-1", "1 tire in a walled box", [] { return pile(1); }, {}},
+    {"pile-10", "10 tires piled in a walled box, soft-soft contacts on", [] { return pile(10); }, {}},
+    {"pile-100", "100 tires piled in a walled box", [] { return pile(100); }, {}},
+    {"pile-1000", "1000 tires piled in a walled box", [] { return pile(1000); }, {}},
+    {"mixed-200", "200 tires and 40 dynamic Box2D crates in a walled box", [] { return pile(200, 40); }, {}},
 };
 
 // The prototype's figure for its own scene, per 60 Hz frame (REFERENCE.md).
