@@ -13,7 +13,9 @@
 namespace tire {
 
 World::World(const SolverConfig& config, Vec2 gravity)
-    : config_(config), gravity_(gravity), rigid_(gravity), threads_(std::max(1u, std::thread::hardware_concurrency())) {}
+    : config_(config), gravity_(gravity), rigid_(gravity), threads_(std::max(1u, std::thread::hardware_concurrency())) {
+  color_begin_.reserve(66);  // at most 64 colours and the overflow one, plus the end
+}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
