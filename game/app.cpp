@@ -1,0 +1,436 @@
+#include "app.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "draw.h"
+#include "hud.h"
+#include "menus.h"
+#include "screenshot.h"
+#include "tuning_panel.h"
+
+namespace game {
+
+namespace {
+
+double seconds_since(Uint64 start) {
+  return static_cast<double>(SDL_GetPerformanceCounter() - start) / static_cast<double>(SDL_GetPerformanceFrequency());
+}
+
+bool is_any(SDL_Scancode k, std::initializer_list<SDL_Scancode> keys) {
+  return std::find(keys.begin(), keys.end(), k) != keys.end();
+}
+
+}  // namespace
+
+App::App(GameOptions options) : options_(std::move(options)) {}
+
+App::~App() {
+  imgui_.reset();
+  if (renderer_) SDL_DestroyRenderer(renderer_);
+  if (window_) SDL_DestroyWindow(window_);
+  if (sdl_started_) SDL_Quit();
+}
+
+bool App::open_window() {
+  const auto fail = [](const char* what) {
+    std::cerr << "tire-game: cannot open a window: " << what << ": " << SDL_GetError()
+              << ". Set DISPLAY or run headless with SDL_VIDEODRIVER=offscreen, or use build/bin/tirectl.\n";
+    return false;
+  };
+  if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) return fail("SDL_Init");
+  sdl_started_ = true;
+  // With no display SDL quietly falls back to its invisible drivers; only use them when asked to.
+  const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
+  if ((driver == "offscreen" || driver == "dummy" || driver == "evdev") && !SDL_getenv("SDL_VIDEODRIVER")) {
+    SDL_SetError("no display found (SDL could only offer its invisible '%s' video driver)", driver.c_str());
+    return fail("SDL_Init");
+  }
+  window_ = SDL_CreateWindow("Soft tire", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, 1280, 720,
+                             SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+  if (!window_) return fail("SDL_CreateWindow");
+  const Uint32 vsync = options_.frames ? 0u : static_cast<Uint32>(SDL_RENDERER_PRESENTVSYNC);
+  renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_ACCELERATED | vsync);
+  if (!renderer_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
+  if (!renderer_) return fail("SDL_CreateRenderer");
+  SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
+  imgui_ = std::make_unique<ImGuiLayer>();
+  if (!imgui_->init(window_, renderer_)) return fail("Dear ImGui");
+  return true;
+}
+
+// ---- Levels --------------------------------------------------------------------------------------
+
+bool App::load_level(const std::filesystem::path& file) {
+  tire::LevelLoad load = tire::load_level_file(file);
+  if (!load.level) {
+    level_errors_ = std::move(load.errors);
+    error_file_ = file.string();
+    return false;
+  }
+  level_errors_.clear();
+  auto level = std::make_shared<const tire::Level>(std::move(*load.level));
+  if (!session_.loaded()) session_.start(file.string(), std::move(level));
+  else session_.queue(LoadLevelEvent{file.string(), std::move(level)});
+  hot_reload_.watch(file);
+  return true;
+}
+
+void App::restart() {
+  if (session_.loaded()) session_.queue(LoadLevelEvent{session_.path(), session_.level_ptr()});
+}
+
+void App::go_to_level(int delta) {
+  levels_ = scan_levels(options_.levels_dir);
+  if (levels_.empty()) {
+    warn("no levels in " + options_.levels_dir.string());
+    return;
+  }
+  const auto n = static_cast<long long>(levels_.size());
+  const auto current = find_level(levels_, session_.path());
+  long long next = 0;
+  if (current) next = ((static_cast<long long>(*current) + delta) % n + n) % n;
+  else next = delta >= 0 ? 0 : n - 1;
+  load_level(levels_[static_cast<std::size_t>(next)].path);
+}
+
+// Called when the session has started a new world (load, restart, reload).
+void App::after_level_change() {
+  seen_generation_ = session_.generation();
+  level_tuning_ = session_.tuning();
+  bounds_ = level_bounds(session_.world());
+  world_renderer_.set_floor(underground_height(session_.world()));
+  const tire::Tire* player = session_.world().player();
+  camera_.snap(player ? camera_.aim(player->centroid(), {}) : (bounds_.min + bounds_.max) * 0.5, bounds_);
+  accumulator_ = 0.0;
+  pending_jump_ = false;
+  grabbing_ = false;
+  next_level_handled_ = false;
+  finished_at_.reset();
+  if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
+}
+
+bool App::level_over() const { return session_.world().status() != tire::ScriptStatus::running; }
+
+void App::warn(const std::string& text) {
+  std::cerr << "tire-game: " << text << "\n";
+  warnings_.push_back({text, now_ + 6.0});
+  if (warnings_.size() > 6) warnings_.erase(warnings_.begin());
+}
+
+// ---- Input ---------------------------------------------------------------------------------------
+
+void App::handle_event(const SDL_Event& e) {
+  if (e.type == SDL_QUIT) {
+    quit_ = true;
+    return;
+  }
+  // Key releases always count (a key must never stay held because ImGui had focus).
+  if (e.type == SDL_KEYUP) {
+    held_.erase(e.key.keysym.scancode);
+    imgui_->process_event(e);
+    return;
+  }
+  const bool imgui_wants = imgui_->process_event(e);
+  switch (e.type) {
+    case SDL_KEYDOWN:
+      if (imgui_wants || e.key.repeat) return;
+      held_.insert(e.key.keysym.scancode);
+      key_down(e.key.keysym.scancode);
+      break;
+    case SDL_MOUSEBUTTONDOWN:
+      if (e.button.button == SDL_BUTTON_LEFT && !menu_open_) clicks_.push_back({e.button.x, e.button.y});
+      break;
+    case SDL_MOUSEMOTION:
+      if (grabbing_) mouse_motion(e.motion.x, e.motion.y);
+      break;
+    case SDL_MOUSEBUTTONUP:
+      if (e.button.button == SDL_BUTTON_LEFT && grabbing_) mouse_up();
+      break;
+    default: break;
+  }
+}
+
+void App::key_down(SDL_Scancode k) {
+  switch (k) {
+    case SDL_SCANCODE_F1: show_help_ = !show_help_; return;
+    case SDL_SCANCODE_F2: show_tuning_ = !show_tuning_; return;
+    case SDL_SCANCODE_F3: debug_.enabled = !debug_.enabled; return;
+    default: break;
+  }
+  if (menu_open_) {
+    if (levels_.empty()) menu_selected_ = 0;
+    else if (is_any(k, {SDL_SCANCODE_UP, SDL_SCANCODE_W}))
+      menu_selected_ = (menu_selected_ + levels_.size() - 1) % levels_.size();
+    else if (is_any(k, {SDL_SCANCODE_DOWN, SDL_SCANCODE_S})) menu_selected_ = (menu_selected_ + 1) % levels_.size();
+    else if (is_any(k, {SDL_SCANCODE_RETURN, SDL_SCANCODE_KP_ENTER})) {
+      if (load_level(levels_[menu_selected_].path)) menu_open_ = false;
+    }
+    if (k == SDL_SCANCODE_ESCAPE) menu_open_ = false;
+    return;
+  }
+  if (k == SDL_SCANCODE_ESCAPE) {
+    levels_ = scan_levels(options_.levels_dir);
+    menu_selected_ = find_level(levels_, session_.path()).value_or(0);
+    menu_open_ = true;
+    return;
+  }
+  if (level_over()) {
+    const bool won = session_.world().status() == tire::ScriptStatus::won;
+    if (k == SDL_SCANCODE_N || (won && is_any(k, {SDL_SCANCODE_RETURN, SDL_SCANCODE_KP_ENTER}))) {
+      go_to_level(+1);
+      return;
+    }
+    if (k == SDL_SCANCODE_R || (!won && is_any(k, {SDL_SCANCODE_RETURN, SDL_SCANCODE_KP_ENTER}))) {
+      restart();
+      return;
+    }
+  }
+  switch (k) {
+    case SDL_SCANCODE_R: restart(); break;
+    case SDL_SCANCODE_P: paused_ = !paused_; break;
+    case SDL_SCANCODE_PERIOD:
+      if (paused_) step_requested_ = true;
+      break;
+    case SDL_SCANCODE_N: go_to_level(+1); break;
+    case SDL_SCANCODE_B: go_to_level(-1); break;
+    case SDL_SCANCODE_SPACE:
+    case SDL_SCANCODE_UP:
+    case SDL_SCANCODE_W: pending_jump_ = true; break;
+    default: break;
+  }
+}
+
+tire::Vec2 App::mouse_to_world(int x, int y) const {
+  // Mouse coordinates are in window points; the camera works in output pixels (high-DPI aware).
+  int ww = 1, wh = 1;
+  SDL_GetWindowSize(window_, &ww, &wh);
+  const double sx = static_cast<double>(camera_.width()) / std::max(ww, 1);
+  const double sy = static_cast<double>(camera_.height()) / std::max(wh, 1);
+  return camera_.to_world(x * sx, y * sy);
+}
+
+void App::take_clicks() {
+  if (!imgui_->wants_mouse() && !menu_open_)
+    for (const SDL_Point& c : clicks_) mouse_down(c.x, c.y);
+  clicks_.clear();
+}
+
+void App::mouse_down(int x, int y) {
+  const tire::Vec2 p = mouse_to_world(x, y);
+  const double radius = std::max(0.2, camera_.metres(14.0));
+  for (const tire::Tire& t : session_.world().tires()) {
+    if (length(t.centroid() - p) <= t.spec.outer_radius + radius) {
+      session_.queue(GrabEvent{p, radius});
+      grabbing_ = true;
+      return;
+    }
+  }
+  session_.queue(SpawnTireEvent{p});
+}
+
+void App::mouse_motion(int x, int y) { session_.queue(MoveGrabEvent{mouse_to_world(x, y)}); }
+
+void App::mouse_up() {
+  session_.queue(ReleaseGrabEvent{});
+  grabbing_ = false;
+}
+
+tire::TickInput App::tick_input() const {
+  tire::TickInput in;
+  if (menu_open_ || level_over()) return in;
+  const auto held = [this](SDL_Scancode a, SDL_Scancode b) { return held_.contains(a) || held_.contains(b); };
+  in.steer = (held(SDL_SCANCODE_RIGHT, SDL_SCANCODE_D) ? 1.0 : 0.0) - (held(SDL_SCANCODE_LEFT, SDL_SCANCODE_A) ? 1.0 : 0.0);
+  in.jump = pending_jump_;
+  return in;
+}
+
+// ---- Simulation ----------------------------------------------------------------------------------
+
+void App::step_once() {
+  const tire::TickInput input = tick_input();
+  const Uint64 start = SDL_GetPerformanceCounter();
+  session_.step(input);
+  frame_physics_seconds_ += seconds_since(start);
+  pending_jump_ = false;
+  ++steps_this_frame_;
+  for (const std::string& w : session_.take_warnings()) warn(w);
+}
+
+void App::advance(double frame_seconds) {
+  steps_this_frame_ = 0;
+  frame_physics_seconds_ = 0.0;
+  const bool running = !paused_ && !menu_open_;
+  if (running) accumulator_ += frame_seconds;
+  while (running && accumulator_ >= session_.world().config().dt && steps_this_frame_ < kMaxStepsPerFrame) {
+    accumulator_ -= session_.world().config().dt;
+    step_once();
+    if (session_.generation() != seen_generation_) after_level_change();
+    if (session_.world().next_level_requested()) break;
+  }
+  // A slow frame: drop the time the cap left over rather than owe it to the next frames.
+  const double dt = session_.world().config().dt;
+  if (accumulator_ >= dt) accumulator_ = std::fmod(accumulator_, dt);
+  if (step_requested_ && paused_) step_once();
+  step_requested_ = false;
+  if (level_over() && !finished_at_) finished_at_ = session_.world().time();
+  // A script asked for the next level.
+  if (session_.world().next_level_requested() && !next_level_handled_) {
+    next_level_handled_ = true;
+    go_to_level(+1);
+  }
+}
+
+// ---- Drawing -------------------------------------------------------------------------------------
+
+void App::draw_frame(double wall_seconds) {
+  int w = 0, h = 0;
+  SDL_GetRendererOutputSize(renderer_, &w, &h);
+  camera_.resize(w, h);
+
+  const double dt = session_.world().config().dt;
+  const double alpha = paused_ || menu_open_ ? 1.0 : std::clamp(accumulator_ / dt, 0.0, 1.0);
+  // The camera holds still while the mouse drags a tire, so the cursor keeps pointing where it pulls.
+  if (const tire::Tire* p = session_.world().player(); p && !grabbing_)
+    camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity()), bounds_, wall_seconds);
+
+  SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
+  SDL_RenderClear(renderer_);
+  Draw draw(renderer_);
+  world_renderer_.draw(draw, camera_, session_, alpha, debug_);
+  draw_ui();
+  imgui_->render();
+}
+
+void App::draw_ui() {
+  const tire::World& world = session_.world();
+  HudInfo hud;
+  hud.level = session_.level().name;
+  hud.time = world.time();
+  hud.tick = world.tick();
+  if (const tire::Tire* p = world.player()) {
+    hud.speed = length(p->velocity());
+    hud.grounded = p->grounded();
+  }
+  hud.fps = fps_;
+  hud.physics_ms = physics_ms_;
+  hud.steps_last_frame = steps_this_frame_;
+  hud.tires = world.tires().size();
+  hud.paused = paused_;
+  hud.status = tire::to_string(world.status());
+  draw_hud(hud);
+  draw_script_messages(world, imgui_->big_font());
+
+  if (show_tuning_) {
+    for (TuneEvent& e : draw_tuning_panel(session_.tuning(), level_tuning_, debug_, &show_tuning_))
+      session_.queue(std::move(e));
+  }
+  if (show_help_) draw_help(&show_help_);
+
+  if (menu_open_) {
+    const MenuChoice choice =
+        draw_level_menu(levels_, menu_selected_, find_level(levels_, session_.path()), options_.levels_dir.string(),
+                        imgui_->big_font());
+    if (choice == MenuChoice::load && menu_selected_ < levels_.size() && load_level(levels_[menu_selected_].path))
+      menu_open_ = false;
+    else if (choice == MenuChoice::resume) menu_open_ = false;
+    else if (choice == MenuChoice::quit) quit_ = true;
+  } else if (level_over()) {
+    switch (draw_end_screen(world.status(), session_.level().name, finished_at_.value_or(world.time()),
+                            imgui_->big_font())) {
+      case EndChoice::next: go_to_level(+1); break;
+      case EndChoice::retry: restart(); break;
+      case EndChoice::none: break;
+    }
+  }
+  draw_level_errors(error_file_, level_errors_);
+  std::erase_if(warnings_, [this](const Warning& w) { return w.until < now_; });
+  std::vector<std::string> texts;
+  for (const Warning& w : warnings_) texts.push_back(w.text);
+  draw_warnings(texts);
+}
+
+// ---- Loop ----------------------------------------------------------------------------------------
+
+int App::run() {
+  if (!load_level(options_.level)) {
+    for (const std::string& e : level_errors_) std::cerr << e << "\n";
+    return 2;
+  }
+  if (!open_window()) return 1;
+  after_level_change();
+  levels_ = scan_levels(options_.levels_dir);
+
+  const Uint64 start = SDL_GetPerformanceCounter();
+  double last = 0.0;
+  long long frame = 0;
+  while (true) {
+    if (options_.frames && frame >= *options_.frames) break;
+    // Scripted keys go through SDL's queue, exactly like real ones.
+    for (const ScriptedKey& k : options_.keys.events_at(frame)) {
+      SDL_Event e{};
+      e.type = k.down ? SDL_KEYDOWN : SDL_KEYUP;
+      e.key.state = k.down ? SDL_PRESSED : SDL_RELEASED;
+      e.key.windowID = SDL_GetWindowID(window_);
+      e.key.keysym.scancode = k.key;
+      e.key.keysym.sym = SDL_GetKeyFromScancode(k.key);
+      SDL_PushEvent(&e);
+    }
+    SDL_Event e;
+    while (SDL_PollEvent(&e)) handle_event(e);
+    imgui_->new_frame();
+    take_clicks();
+    session_.flush();  // spawns, grabs, tuning and loads apply now, between ticks
+    if (session_.generation() != seen_generation_) after_level_change();
+
+    now_ = seconds_since(start);
+    const double wall = std::clamp(now_ - last, 0.0, 0.25);
+    last = now_;
+    if (wall > 0.0) fps_ = fps_ == 0.0 ? 1.0 / wall : fps_ * 0.95 + 0.05 / wall;
+    // --frames: every frame is exactly one tick, so automated runs are reproducible.
+    const double frame_seconds = options_.frames ? session_.world().config().dt : wall;
+    advance(frame_seconds);
+    physics_ms_ = physics_ms_ * 0.9 + 0.1 * frame_physics_seconds_ * 1000.0;
+    if (hot_reload_.poll(now_)) {
+      if (load_level(session_.path())) warn("reloaded " + session_.path());
+    }
+
+    draw_frame(frame_seconds);  // may set quit_ (the menu's Quit)
+    const bool last_frame = quit_ || (options_.frames && frame + 1 >= *options_.frames);
+    if (last_frame && !options_.screenshot.empty()) {
+      if (const std::string err = save_screenshot(renderer_, options_.screenshot); !err.empty())
+        std::cerr << "tire-game: cannot save the screenshot " << options_.screenshot << ": " << err << "\n";
+    }
+    SDL_RenderPresent(renderer_);
+    ++frame;
+    if (quit_) break;
+    // Without vsync (or when it is not honoured), do not spin faster than ~240 frames per second.
+    if (!options_.frames) {
+      const double spent = seconds_since(start) - now_;
+      if (spent < 1.0 / 240.0) SDL_Delay(static_cast<Uint32>((1.0 / 240.0 - spent) * 1000.0));
+    }
+  }
+  print_summary(frame);
+  return 0;
+}
+
+void App::print_summary(long long frames) const {
+  nlohmann::json out;
+  out["frames"] = frames;
+  out["level"] = session_.level().name;
+  out["ticks"] = session_.world().tick();
+  out["status"] = tire::to_string(session_.world().status());
+  if (const tire::Tire* p = session_.world().player()) {
+    const tire::Vec2 c = p->centroid();
+    out["player"] = {c.x, c.y};
+  } else {
+    out["player"] = nullptr;
+  }
+  std::cout << out.dump() << std::endl;
+}
+
+}  // namespace game

@@ -1,0 +1,121 @@
+// The game's window and main loop: input, the fixed-timestep simulation (World::step through
+// GameSession), interpolated drawing, the HUD and panels, the level menu, win/lose screens and hot
+// reload. Wall-clock time paces the loop and feeds the FPS and physics-time readouts; it never
+// reaches the simulation, which only ever advances by whole ticks of the level's dt.
+#pragma once
+
+#include <SDL.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "game_session.h"
+#include "hot_reload.h"
+#include "imgui_layer.h"
+#include "key_script.h"
+#include "level_list.h"
+#include "renderer.h"
+
+namespace game {
+
+struct GameOptions {
+  std::filesystem::path level;       // the level to start with
+  std::filesystem::path levels_dir;  // where the level menu and next/previous look
+  std::optional<long long> frames;   // run exactly this many frames, one tick each, then exit
+  KeyScript keys;                    // scripted key presses (--press)
+  std::string screenshot;            // save the last frame here (BMP)
+};
+
+class App {
+ public:
+  // At most this many ticks per rendered frame; time beyond it is dropped (no spiral of death).
+  static constexpr int kMaxStepsPerFrame = 5;
+
+  explicit App(GameOptions options);
+  ~App();
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  // Runs until the window closes (or the frame count is reached). Exit code: 0 done, 1 no window,
+  // 2 the level does not load.
+  int run();
+
+ private:
+  bool open_window();
+  bool load_level(const std::filesystem::path& file);
+  void go_to_level(int delta);
+  void restart();
+  void after_level_change();
+
+  void handle_event(const SDL_Event& event);
+  void key_down(SDL_Scancode key);
+  void take_clicks();
+  void mouse_down(int x, int y);
+  void mouse_motion(int x, int y);
+  void mouse_up();
+  tire::Vec2 mouse_to_world(int x, int y) const;
+
+  void advance(double frame_seconds);
+  void step_once();
+  tire::TickInput tick_input() const;
+  void draw_frame(double wall_seconds);
+  void draw_ui();
+  void print_summary(long long frames) const;
+  bool level_over() const;
+  void warn(const std::string& text);
+
+  GameOptions options_;
+  SDL_Window* window_ = nullptr;
+  SDL_Renderer* renderer_ = nullptr;
+  std::unique_ptr<ImGuiLayer> imgui_;
+  bool sdl_started_ = false;
+
+  GameSession session_;
+  std::uint64_t seen_generation_ = 0;
+  Tuning level_tuning_;
+  Camera camera_;
+  tire::Aabb bounds_;
+  WorldRenderer world_renderer_;
+  DebugOptions debug_;
+
+  std::vector<LevelEntry> levels_;
+  HotReload hot_reload_;
+  std::vector<std::string> level_errors_;
+  std::string error_file_;
+  struct Warning {
+    std::string text;
+    double until;  // wall seconds
+  };
+  std::vector<Warning> warnings_;
+
+  // Input state.
+  std::set<SDL_Scancode> held_;
+  // Left clicks wait for ImGui's next frame, which knows whether they landed on one of its windows.
+  std::vector<SDL_Point> clicks_;
+  bool pending_jump_ = false;
+  bool step_requested_ = false;
+  bool grabbing_ = false;
+  bool paused_ = false;
+  bool show_help_ = false;
+  bool show_tuning_ = false;
+  bool menu_open_ = false;
+  std::size_t menu_selected_ = 0;
+  bool next_level_handled_ = false;
+  std::optional<double> finished_at_;  // level time when the level was won or lost
+  bool quit_ = false;
+
+  // Timing.
+  double accumulator_ = 0.0;  // s of simulated time owed, < dt after each frame
+  double now_ = 0.0;          // wall seconds since start
+  double fps_ = 0.0;
+  double physics_ms_ = 0.0;
+  double frame_physics_seconds_ = 0.0;
+  int steps_this_frame_ = 0;
+};
+
+}  // namespace game

@@ -1,0 +1,120 @@
+#include "camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "world.h"
+
+namespace game {
+
+void Camera::resize(int width, int height) {
+  width_ = std::max(width, 1);
+  height_ = std::max(height, 1);
+  scale_ = std::min(height_ / kViewHeight, width_ / kViewWidth);
+}
+
+tire::Aabb Camera::view() const {
+  const double hw = width_ * 0.5 / scale_;
+  const double hh = height_ * 0.5 / scale_;
+  return {{center_.x - hw, center_.y - hh}, {center_.x + hw, center_.y + hh}};
+}
+
+tire::Vec2 Camera::aim(tire::Vec2 position, tire::Vec2 velocity) const {
+  const double hh = height_ * 0.5 / scale_;
+  return {position.x + std::clamp(velocity.x * 0.3, -2.0, 2.0), position.y + 0.35 * hh};
+}
+
+void Camera::follow(tire::Vec2 target, const tire::Aabb& bounds, double seconds) {
+  // Critically damped-ish easing: closes ~1 − e^(−6 t) of the gap.
+  const double k = 1.0 - std::exp(-6.0 * std::clamp(seconds, 0.0, 0.25));
+  center_ += (target - center_) * k;
+  // Never lose the player: a target outside the level's bounds (flung high, fallen off) grows them.
+  tire::Aabb b = bounds;
+  const double hh = height_ * 0.5 / scale_;
+  b.min = {std::min(b.min.x, target.x - 1.0), std::min(b.min.y, target.y - hh)};
+  b.max = {std::max(b.max.x, target.x + 1.0), std::max(b.max.y, target.y + hh)};
+  clamp(b);
+}
+
+void Camera::snap(tire::Vec2 target, const tire::Aabb& bounds) {
+  center_ = target;
+  clamp(bounds);
+}
+
+void Camera::clamp(const tire::Aabb& bounds) {
+  const double hw = width_ * 0.5 / scale_;
+  const double hh = height_ * 0.5 / scale_;
+  if (bounds.max.x - bounds.min.x >= 2 * hw) center_.x = std::clamp(center_.x, bounds.min.x + hw, bounds.max.x - hw);
+  else center_.x = 0.5 * (bounds.min.x + bounds.max.x);
+  if (bounds.max.y - bounds.min.y >= 2 * hh) center_.y = std::clamp(center_.y, bounds.min.y + hh, bounds.max.y - hh);
+  else center_.y = bounds.min.y + hh;
+}
+
+namespace {
+void grow(tire::Aabb& box, bool& any, tire::Vec2 p) {
+  if (!any) {
+    box = {p, p};
+    any = true;
+    return;
+  }
+  box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
+  box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
+}
+}  // namespace
+
+double underground_height(const tire::World& world) {
+  double widest = -1.0, height = -1e9;
+  for (const tire::Obstacle& o : world.rigid().obstacles())
+    if (const double w = o.box.max.x - o.box.min.x; w > widest) widest = w, height = o.box.min.y;
+  if (widest > 0.0) return height;
+  const auto& props = world.rigid().props();
+  bool any = false;
+  for (std::uint32_t i = 0; i < props.size(); ++i) {
+    if (!props[i].alive || props[i].spec.type != tire::PropType::static_body) continue;
+    const tire::Pose pose = world.rigid().current_pose(i);
+    for (const tire::Vec2& v : props[i].geometry.vertices) {
+      const double y = pose.to_world(v).y - props[i].geometry.thickness;
+      height = any ? std::min(height, y) : y;
+      any = true;
+    }
+  }
+  return height;
+}
+
+tire::Aabb level_bounds(const tire::World& world, double margin, double below) {
+  tire::Aabb box{{-10, -2}, {10, 8}};
+  bool any = false;
+  for (const tire::Obstacle& o : world.rigid().obstacles()) {
+    grow(box, any, o.box.min);
+    grow(box, any, o.box.max);
+  }
+  const auto& props = world.rigid().props();
+  for (std::uint32_t i = 0; i < props.size(); ++i) {
+    if (!props[i].alive) continue;
+    const tire::Pose pose = world.rigid().current_pose(i);
+    const tire::Aabb local = props[i].geometry.local_bounds();
+    for (const tire::Vec2 c : {local.min, local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}})
+      grow(box, any, pose.to_world(c));
+    for (const tire::Vec2& w : props[i].spec.path.waypoints) {
+      grow(box, any, w + local.min);
+      grow(box, any, w + local.max);
+    }
+  }
+  if (const tire::ScriptRunner* script = world.script())
+    for (const tire::Region& r : script->spec().regions) {
+      grow(box, any, r.box.min);
+      grow(box, any, r.box.max);
+    }
+  for (const tire::Tire& t : world.tires()) {
+    const tire::Vec2 c = t.centroid();
+    const double r = t.spec.outer_radius;
+    grow(box, any, c - tire::Vec2{r, r});
+    grow(box, any, c + tire::Vec2{r, r});
+  }
+  if (!any) return box;
+  box.min -= tire::Vec2{margin, below};
+  box.max += tire::Vec2{margin, margin + 3.0};
+  return box;
+}
+
+}  // namespace game

@@ -1,0 +1,135 @@
+#include "game_session.h"
+
+#include <algorithm>
+#include <type_traits>
+#include <utility>
+
+namespace game {
+
+void GameSession::start(std::string path, std::shared_ptr<const tire::Level> level) {
+  auto world = std::make_unique<tire::World>(level->solver, level->gravity);
+  tire::populate_world(*level, *world);
+  world_ = std::move(world);
+  level_ = std::move(level);
+  path_ = std::move(path);
+  tuning_ = Tuning::from_world(*world_);
+  spawn_mass_.clear();
+  previous_x_.clear();
+  previous_poses_.clear();
+  note_spawn_masses();
+  ++generation_;
+}
+
+void GameSession::queue(SessionEvent event) {
+  if (std::holds_alternative<MoveGrabEvent>(event) && !queue_.empty() &&
+      std::holds_alternative<MoveGrabEvent>(queue_.back())) {
+    queue_.back() = std::move(event);
+    return;
+  }
+  queue_.push_back(std::move(event));
+}
+
+void GameSession::flush() {
+  if (queue_.empty()) return;
+  // The observer sees each batch as applied; a level load starts a new world, so split there.
+  std::vector<SessionEvent> batch;
+  for (SessionEvent& e : queue_) {
+    const bool load = std::holds_alternative<LoadLevelEvent>(e);
+    if (load && !batch.empty()) {
+      if (observer_) observer_->on_events(world_->tick(), batch);
+      batch.clear();
+    }
+    const std::uint64_t tick = world_ ? world_->tick() : 0;
+    apply(e);
+    batch.push_back(std::move(e));
+    if (load) {
+      if (observer_) observer_->on_events(tick, batch);
+      batch.clear();
+    }
+  }
+  if (!batch.empty() && observer_) observer_->on_events(world_->tick(), batch);
+  queue_.clear();
+}
+
+void GameSession::apply(const SessionEvent& event) {
+  std::visit(
+      [this](const auto& e) {
+        using T = std::decay_t<decltype(e)>;
+        if constexpr (std::is_same_v<T, LoadLevelEvent>) {
+          start(e.path, e.level);
+        } else if constexpr (std::is_same_v<T, SpawnTireEvent>) {
+          tire::TireSpec spec;
+          spec.position = e.position;
+          spec.player = false;
+          world_->add_tire(spec);
+          note_spawn_masses();
+        } else if constexpr (std::is_same_v<T, GrabEvent>) {
+          world_->grab(e.point, e.radius);
+        } else if constexpr (std::is_same_v<T, MoveGrabEvent>) {
+          world_->move_grab(e.target);
+        } else if constexpr (std::is_same_v<T, ReleaseGrabEvent>) {
+          world_->release_grab();
+        } else if constexpr (std::is_same_v<T, TuneEvent>) {
+          if (apply_tuning(*world_, spawn_mass_, e.key, e.value)) tuning_.set(e.key, e.value);
+        }
+      },
+      event);
+}
+
+void GameSession::note_spawn_masses() {
+  for (const tire::Tire& t : world_->tires())
+    if (!spawn_mass_.contains(t.id)) spawn_mass_.emplace(t.id, t.spec.mass);
+}
+
+void GameSession::step(const tire::TickInput& input) {
+  flush();
+  for (const tire::Tire& t : world_->tires()) previous_x_[t.id] = t.particles.x;  // reuses capacity
+  if (previous_x_.size() > 2 * world_->tires().size() + 16) {
+    std::erase_if(previous_x_, [this](const auto& entry) { return !world_->find_tire(entry.first); });
+  }
+  const auto& props = world_->rigid().props();
+  previous_poses_.resize(props.size());
+  for (std::uint32_t i = 0; i < props.size(); ++i)
+    if (props[i].alive) previous_poses_[i] = world_->rigid().current_pose(i);
+  if (observer_) observer_->on_step(world_->tick(), input);
+  world_->step(input);
+  note_spawn_masses();  // tires a script spawned
+}
+
+void GameSession::interpolated_positions(const tire::Tire& t, double alpha, std::vector<tire::Vec2>& out) const {
+  const std::vector<tire::Vec2>& now = t.particles.x;
+  out.resize(now.size());
+  const auto it = previous_x_.find(t.id);
+  if (it == previous_x_.end() || it->second.size() != now.size()) {
+    std::copy(now.begin(), now.end(), out.begin());
+    return;
+  }
+  const std::vector<tire::Vec2>& before = it->second;
+  for (std::size_t i = 0; i < now.size(); ++i) out[i] = before[i] + (now[i] - before[i]) * alpha;
+}
+
+tire::Vec2 GameSession::interpolated_centroid(const tire::Tire& t, double alpha) const {
+  const tire::Vec2 now = t.centroid();
+  const auto it = previous_x_.find(t.id);
+  if (it == previous_x_.end() || it->second.empty() || it->second.size() != t.particles.x.size()) return now;
+  tire::Vec2 sum;
+  for (const tire::Vec2& p : it->second) sum += p;
+  const tire::Vec2 before = sum / static_cast<double>(it->second.size());
+  return before + (now - before) * alpha;
+}
+
+tire::Pose GameSession::interpolated_pose(std::uint32_t prop, double alpha) const {
+  const tire::Pose now = world_->rigid().current_pose(prop);
+  if (prop >= previous_poses_.size()) return now;
+  const tire::Pose& before = previous_poses_[prop];
+  return tire::Pose::make(before.position + (now.position - before.position) * alpha,
+                          before.angle + (now.angle - before.angle) * alpha);
+}
+
+std::vector<std::string> GameSession::take_warnings() {
+  std::vector<std::string> out;
+  if (world_) out.swap(world_->warnings());
+  return out;
+}
+
+}  // namespace game

@@ -1,0 +1,71 @@
+// One level being played: the World, the Level it was built from, the tuning in force and what
+// rendering needs to interpolate between ticks. Every input reaches the World through here
+// (session_input.h): events are queued, then applied between ticks by flush(); step() flushes and
+// then calls World::step, the same fixed tick tirectl runs.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "level.h"
+#include "session_input.h"
+#include "tuning.h"
+#include "world.h"
+
+namespace game {
+
+class GameSession {
+ public:
+  // Builds a fresh world from `level` at once (no observer call: use a LoadLevelEvent for that).
+  void start(std::string path, std::shared_ptr<const tire::Level> level);
+
+  // Queues an event for the next flush. Consecutive MoveGrabEvents collapse into the last one.
+  void queue(SessionEvent event);
+  // Applies the queued events now (between ticks) and tells the observer.
+  void flush();
+  // flush(), remember the positions for interpolation, then World::step(input).
+  void step(const tire::TickInput& input);
+
+  void set_observer(SessionObserver* observer) { observer_ = observer; }
+
+  bool loaded() const { return world_ != nullptr; }
+  tire::World& world() { return *world_; }
+  const tire::World& world() const { return *world_; }
+  const tire::Level& level() const { return *level_; }
+  const std::shared_ptr<const tire::Level>& level_ptr() const { return level_; }
+  const std::string& path() const { return path_; }
+  const Tuning& tuning() const { return tuning_; }
+  // Counts level loads: a change tells the app to reset its camera and grab state.
+  std::uint64_t generation() const { return generation_; }
+
+  // Particle positions blended between the previous tick and the current one: alpha 0 is the
+  // previous tick, 1 the current. A tire with no previous tick (just spawned) is drawn as it is.
+  void interpolated_positions(const tire::Tire& tire, double alpha, std::vector<tire::Vec2>& out) const;
+  tire::Vec2 interpolated_centroid(const tire::Tire& tire, double alpha) const;
+  // A live prop's pose, blended the same way.
+  tire::Pose interpolated_pose(std::uint32_t prop, double alpha) const;
+
+  // Warnings the world raised since the last call.
+  std::vector<std::string> take_warnings();
+
+ private:
+  void apply(const SessionEvent& event);
+  void note_spawn_masses();
+
+  std::unique_ptr<tire::World> world_;
+  std::shared_ptr<const tire::Level> level_;
+  std::string path_;
+  Tuning tuning_;
+  std::uint64_t generation_ = 0;
+  std::vector<SessionEvent> queue_;
+  SessionObserver* observer_ = nullptr;
+  std::map<tire::TireId, double> spawn_mass_;
+  std::unordered_map<tire::TireId, std::vector<tire::Vec2>> previous_x_;
+  std::vector<tire::Pose> previous_poses_;
+};
+
+}  // namespace game

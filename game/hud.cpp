@@ -1,0 +1,130 @@
+#include "hud.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "world.h"
+
+namespace game {
+
+namespace {
+constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                      ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+
+const char* const kKeys[][2] = {
+    {"Left / A", "steer left (hold)"},
+    {"Right / D", "steer right (hold)"},
+    {"Space / Up / W", "jump (when on the ground)"},
+    {"R", "restart the level"},
+    {"P", "pause / resume"},
+    {". (period)", "one tick forward while paused"},
+    {"N / B", "next / previous level"},
+    {"Esc", "level menu"},
+    {"F1", "this help"},
+    {"F2", "tuning panel"},
+    {"F3", "debug drawing"},
+    {"Left click (empty space)", "spawn a tire"},
+    {"Left drag (on a tire)", "grab and pull it"},
+};
+}  // namespace
+
+void draw_hud(const HudInfo& info) {
+  ImGui::SetNextWindowPos({10, 10});
+  ImGui::SetNextWindowBgAlpha(0.55f);
+  if (ImGui::Begin("##hud", nullptr, kOverlay)) {
+    ImGui::TextUnformatted(info.level.c_str());
+    ImGui::Separator();
+    ImGui::Text("time   %7.2f s   tick %llu", info.time, static_cast<unsigned long long>(info.tick));
+    ImGui::Text("speed  %7.2f m/s (%.0f km/h)%s", info.speed, info.speed * 3.6, info.grounded ? "" : "  airborne");
+    ImGui::Text("FPS    %7.0f", info.fps);
+    ImGui::Text("physics %6.2f ms/frame (%d ticks)", info.physics_ms, info.steps_last_frame);
+    ImGui::Text("tires  %7zu", info.tires);
+    if (info.paused) ImGui::TextColored({1.0f, 0.85f, 0.3f, 1.0f}, "PAUSED  (P resume, . step)");
+    ImGui::TextDisabled("F1 help   F2 tuning   F3 debug   Esc levels");
+  }
+  ImGui::End();
+}
+
+void draw_help(bool* open) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
+  if (ImGui::Begin("Keys (F1 closes)", open,
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+      for (const auto& row : kKeys) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored({1.0f, 0.8f, 0.35f, 1.0f}, "%s", row[0]);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[1]);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Spacing();
+    ImGui::TextDisabled("Edit the level file while playing: it reloads on save.");
+  }
+  ImGui::End();
+}
+
+void draw_script_messages(const tire::World& world, ImFont* big) {
+  const auto& messages = world.messages();
+  if (messages.empty()) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float max_width = vp->Size.x * 0.8f;
+  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, std::max(vp->Size.y * 0.3f, 250.0f)}, ImGuiCond_Always, {0.5f, 0.5f});
+  ImGui::SetNextWindowSizeConstraints({0, 0}, {max_width, vp->Size.y * 0.5f});
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  if (ImGui::Begin("##messages", nullptr, kOverlay)) {
+    if (big) ImGui::PushFont(big);
+    const float wrap = max_width - 2.0f * ImGui::GetStyle().WindowPadding.x;
+    for (const tire::ScriptMessage& m : messages) {
+      const float w = ImGui::CalcTextSize(m.text.c_str()).x;
+      if (w > wrap) {
+        // Too long for one line: wrap it at the window's width.
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
+        ImGui::TextUnformatted(m.text.c_str());
+        ImGui::PopTextWrapPos();
+        continue;
+      }
+      // Centre each line in the window.
+      const float avail = ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
+      if (avail > w) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (avail - w) * 0.5f);
+      ImGui::TextUnformatted(m.text.c_str());
+    }
+    if (big) ImGui::PopFont();
+  }
+  ImGui::End();
+}
+
+void draw_level_errors(const std::string& file, const std::vector<std::string>& errors) {
+  if (errors.empty()) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y - 12.0f}, ImGuiCond_Always, {0.5f, 1.0f});
+  ImGui::SetNextWindowSizeConstraints({300, 0}, {vp->Size.x - 40.0f, vp->Size.y * 0.45f});
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(70, 0, 0, 235));
+  ImGui::PushStyleColor(ImGuiCol_TitleBg, IM_COL32(150, 20, 20, 255));
+  ImGui::PushStyleColor(ImGuiCol_TitleBgActive, IM_COL32(170, 25, 25, 255));
+  const std::string title = "Level errors: " + file + " (still playing the last good level)";
+  if (ImGui::Begin(title.c_str(), nullptr,
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoFocusOnAppearing)) {
+    for (const std::string& e : errors) ImGui::TextColored({1.0f, 0.45f, 0.45f, 1.0f}, "%s", e.c_str());
+  }
+  ImGui::End();
+  ImGui::PopStyleColor(3);
+}
+
+void draw_warnings(const std::vector<std::string>& warnings) {
+  if (warnings.empty()) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({10, vp->Size.y - 10.0f}, ImGuiCond_Always, {0.0f, 1.0f});
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  if (ImGui::Begin("##warnings", nullptr, kOverlay))
+    for (const std::string& w : warnings) ImGui::TextColored({1.0f, 0.6f, 0.2f, 1.0f}, "%s", w.c_str());
+  ImGui::End();
+}
+
+}  // namespace game

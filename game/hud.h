@@ -1,0 +1,40 @@
+// The text on top of the world, all drawn with ImGui: the HUD (level, time, speed, FPS, physics
+// time), the help overlay (F1), the script's messages, the level's validation errors after a failed
+// hot reload, and the world's warnings.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct ImFont;
+
+namespace tire {
+class World;
+}
+
+namespace game {
+
+struct HudInfo {
+  std::string level;
+  double time = 0.0;        // s of simulated time
+  std::uint64_t tick = 0;
+  double speed = 0.0;       // player hub speed (m/s)
+  double fps = 0.0;
+  double physics_ms = 0.0;  // wall time spent in World::step per frame (smoothed)
+  int steps_last_frame = 0;
+  std::size_t tires = 0;
+  bool paused = false;
+  bool grounded = false;
+  std::string status;       // running, won, lost
+};
+
+void draw_hud(const HudInfo& info);
+void draw_help(bool* open);
+void draw_script_messages(const tire::World& world, ImFont* big);
+// A red window listing why the level file failed to reload (the last good level keeps playing).
+void draw_level_errors(const std::string& file, const std::vector<std::string>& errors);
+// Recent warnings (a diverged tire that was reset, a failed screenshot ...).
+void draw_warnings(const std::vector<std::string>& warnings);
+
+}  // namespace game

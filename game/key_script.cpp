@@ -1,0 +1,67 @@
+#include "key_script.h"
+
+#include <cctype>
+#include <charconv>
+
+namespace game {
+
+namespace {
+
+std::optional<long long> parse_frame(const std::string& text) {
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || value < 0) return std::nullopt;
+  return value;
+}
+
+SDL_Scancode scancode_of(const std::string& given) {
+  std::string name;
+  for (const char c : given) name.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  struct Alias {
+    const char* alias;
+    const char* sdl;
+  };
+  static constexpr Alias kAliases[] = {{"enter", "return"}, {"esc", "escape"}, {"period", "."}, {"dot", "."}, {"comma", ","}};
+  for (const Alias& a : kAliases)
+    if (name == a.alias) return SDL_GetScancodeFromName(a.sdl);
+  return SDL_GetScancodeFromName(name.c_str());
+}
+
+}  // namespace
+
+std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& error) {
+  const auto colon = spec.rfind(':');
+  if (colon == std::string::npos || colon == 0) {
+    error = "--press " + spec + ": expected KEY:FRAME or KEY:FIRST-LAST, e.g. right:0-300 or space:120";
+    return std::nullopt;
+  }
+  KeyPress press;
+  const std::string name = spec.substr(0, colon);
+  press.key = scancode_of(name);
+  if (press.key == SDL_SCANCODE_UNKNOWN) {
+    error = "--press " + spec + ": unknown key \"" + name + "\" (use SDL key names: left, right, up, space, r, p, ...)";
+    return std::nullopt;
+  }
+  const std::string frames = spec.substr(colon + 1);
+  const auto dash = frames.find('-');
+  const auto first = parse_frame(frames.substr(0, dash));
+  const auto last = dash == std::string::npos ? first : parse_frame(frames.substr(dash + 1));
+  if (!first || !last || *last < *first) {
+    error = "--press " + spec + ": \"" + frames + "\" is not a frame or an increasing frame range (FIRST-LAST)";
+    return std::nullopt;
+  }
+  press.first = *first;
+  press.last = *last;
+  return press;
+}
+
+std::vector<ScriptedKey> KeyScript::events_at(long long frame) const {
+  std::vector<ScriptedKey> out;
+  for (const KeyPress& p : presses_)
+    if (p.last + 1 == frame) out.push_back({p.key, false});
+  for (const KeyPress& p : presses_)
+    if (p.first == frame) out.push_back({p.key, true});
+  return out;
+}
+
+}  // namespace game

@@ -1,0 +1,89 @@
+#include "menus.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace game {
+
+namespace {
+void centred_text(const char* text, ImVec4 color) {
+  const float w = ImGui::CalcTextSize(text).x;
+  const float avail = ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
+  if (avail > w) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (avail - w) * 0.5f);
+  ImGui::TextColored(color, "%s", text);
+}
+}  // namespace
+
+MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& selected,
+                           std::optional<std::size_t> current, const std::string& levels_dir, ImFont* big) {
+  MenuChoice choice = MenuChoice::none;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
+  ImGui::SetNextWindowSizeConstraints({420, 0}, {vp->Size.x - 40.0f, vp->Size.y - 40.0f});
+  if (ImGui::Begin("##levelmenu", nullptr,
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+    if (big) ImGui::PushFont(big);
+    centred_text("Levels", {1.0f, 0.8f, 0.35f, 1.0f});
+    if (big) ImGui::PopFont();
+    ImGui::TextDisabled("%s", levels_dir.c_str());
+    ImGui::Separator();
+    if (levels.empty()) ImGui::TextColored({1.0f, 0.5f, 0.5f, 1.0f}, "No *.json levels in this directory.");
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      const LevelEntry& e = levels[i];
+      std::string label = e.path.filename().string() + "   " + (e.valid ? e.name : "(does not load)");
+      if (current && *current == i) label += "   [playing]";
+      label += "##" + std::to_string(i);
+      const bool is_selected = selected == i;
+      int colours = 0;
+      if (!e.valid) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 120, 120, 255)), ++colours;
+      if (is_selected) ImGui::PushStyleColor(ImGuiCol_Header, IM_COL32(230, 150, 40, 200)), ++colours;
+      if (ImGui::Selectable(((is_selected ? "> " : "   ") + label).c_str(), is_selected)) {
+        selected = i;
+        choice = MenuChoice::load;
+      }
+      ImGui::PopStyleColor(colours);
+    }
+    ImGui::Separator();
+    if (ImGui::Button("Resume (Esc)")) choice = MenuChoice::resume;
+    ImGui::SameLine();
+    if (ImGui::Button("Quit")) choice = MenuChoice::quit;
+    ImGui::SameLine();
+    ImGui::TextDisabled("Up/Down choose, Enter loads");
+  }
+  ImGui::End();
+  return choice;
+}
+
+EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time, ImFont* big) {
+  EndChoice choice = EndChoice::none;
+  const bool won = status == tire::ScriptStatus::won;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.38f + 30.0f}, ImGuiCond_Always, {0.5f, 0.0f});
+  ImGui::SetNextWindowSizeConstraints({380, 0}, {vp->Size.x, vp->Size.y});
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, won ? IM_COL32(20, 70, 35, 235) : IM_COL32(80, 20, 20, 235));
+  if (ImGui::Begin("##end", nullptr,
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+    if (big) ImGui::PushFont(big);
+    centred_text(won ? "Level complete!" : "You lost", won ? ImVec4{0.6f, 1.0f, 0.6f, 1.0f} : ImVec4{1.0f, 0.6f, 0.6f, 1.0f});
+    if (big) ImGui::PopFont();
+    char line[256];
+    std::snprintf(line, sizeof line, "%s  -  %.2f s", level.c_str(), time);
+    centred_text(line, {0.9f, 0.9f, 0.9f, 1.0f});
+    ImGui::Spacing();
+    if (won) {
+      if (ImGui::Button("Next level (N / Enter)")) choice = EndChoice::next;
+      ImGui::SameLine();
+      if (ImGui::Button("Retry (R)")) choice = EndChoice::retry;
+    } else {
+      if (ImGui::Button("Retry (R / Enter)")) choice = EndChoice::retry;
+      ImGui::SameLine();
+      if (ImGui::Button("Skip to next level (N)")) choice = EndChoice::next;
+    }
+  }
+  ImGui::End();
+  ImGui::PopStyleColor();
+  return choice;
+}
+
+}  // namespace game

@@ -1,0 +1,28 @@
+// Full-screen choices, drawn with ImGui: the level select menu (Esc) and the win / lose screens.
+// Keys are handled by the app (so they work the same when scripted); the mouse works here too.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "level_list.h"
+#include "script_runner.h"
+
+struct ImFont;
+
+namespace game {
+
+enum class MenuChoice { none, load, resume, quit };
+
+// The level list with `selected` highlighted and `current` marked. A click on a level selects it
+// and returns load.
+MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& selected,
+                           std::optional<std::size_t> current, const std::string& levels_dir, ImFont* big);
+
+enum class EndChoice { none, next, retry };
+
+// "Level complete" or "You lost", with the next-level / retry buttons.
+EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time, ImFont* big);
+
+}  // namespace game

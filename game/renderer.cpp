@@ -1,0 +1,332 @@
+#include "renderer.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "world.h"
+
+namespace game {
+
+namespace {
+
+constexpr SDL_Color kSkyTop = rgba(104, 158, 214);
+constexpr SDL_Color kSkyBottom = rgba(206, 228, 243);
+constexpr SDL_Color kGridMinor = rgba(255, 255, 255, 34);
+constexpr SDL_Color kGridMajor = rgba(255, 255, 255, 70);
+constexpr SDL_Color kEarth = rgba(122, 92, 62);
+constexpr SDL_Color kEarthEdge = rgba(74, 54, 36);
+constexpr SDL_Color kBedrock = rgba(66, 52, 42);
+constexpr SDL_Color kGrass = rgba(96, 160, 64);
+constexpr SDL_Color kStatic = rgba(104, 116, 134);
+constexpr SDL_Color kDynamic = rgba(214, 146, 66);
+constexpr SDL_Color kKinematic = rgba(64, 170, 176);
+constexpr SDL_Color kSidewall = rgba(38, 38, 42);
+constexpr SDL_Color kTreadDark = rgba(22, 22, 24);
+constexpr SDL_Color kTreadLight = rgba(78, 78, 84);
+constexpr SDL_Color kRimPlayer = rgba(240, 176, 48);
+constexpr SDL_Color kRimOther = rgba(176, 182, 194);
+constexpr SDL_Color kHubCap = rgba(60, 60, 66);
+
+SDL_Color darker(SDL_Color c, float f = 0.6f) {
+  return rgba(static_cast<int>(c.r * f), static_cast<int>(c.g * f), static_cast<int>(c.b * f), c.a);
+}
+
+SDL_Color prop_color(const tire::Prop& p) {
+  switch (p.spec.type) {
+    case tire::PropType::dynamic_body: return kDynamic;
+    case tire::PropType::kinematic_body: return kKinematic;
+    case tire::PropType::static_body: break;
+  }
+  return kStatic;
+}
+
+ScreenPoint lerp(ScreenPoint a, ScreenPoint b, float t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; }
+
+void arrow(Draw& d, ScreenPoint a, ScreenPoint b, float width, SDL_Color c) {
+  d.line(a, b, width, c);
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  const float len = std::sqrt(dx * dx + dy * dy);
+  if (len < 4.0f) return;
+  const float ux = dx / len, uy = dy / len, head = std::min(10.0f, len * 0.4f);
+  d.triangle(b, {b.x - ux * head - uy * head * 0.5f, b.y - uy * head + ux * head * 0.5f},
+             {b.x - ux * head + uy * head * 0.5f, b.y - uy * head - ux * head * 0.5f}, c);
+}
+
+tire::Aabb prop_bounds(const tire::Prop& p, const tire::Pose& pose) {
+  const tire::Aabb local = p.geometry.local_bounds();
+  tire::Aabb box{pose.to_world(local.min), pose.to_world(local.min)};
+  for (const tire::Vec2 c : {local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}}) {
+    const tire::Vec2 w = pose.to_world(c);
+    box.min = {std::min(box.min.x, w.x), std::min(box.min.y, w.y)};
+    box.max = {std::max(box.max.x, w.x), std::max(box.max.y, w.y)};
+  }
+  return box;
+}
+
+}  // namespace
+
+void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& session, double alpha,
+                         const DebugOptions& debug) {
+  const tire::World& world = session.world();
+  draw_background(d, camera);
+  draw_goal(d, camera, world);
+  draw_obstacles(d, camera, world);
+  draw_props(d, camera, session, alpha);
+  const tire::Tire* player = world.player();
+  for (const tire::Tire& t : world.tires())
+    if (&t != player) draw_tire(d, camera, session, t, alpha, false);
+  if (player) draw_tire(d, camera, session, *player, alpha, true);
+  if (debug.enabled) draw_debug(d, camera, session, alpha, debug);
+  draw_grab(d, camera, session, alpha);
+  d.flush();
+}
+
+void WorldRenderer::draw_background(Draw& d, const Camera& camera) {
+  d.vertical_gradient(camera.width(), camera.height(), kSkyTop, kSkyBottom);
+  // A metre grid, so that motion shows against the sky.
+  const tire::Aabb view = camera.view();
+  for (double x = std::floor(view.min.x); x <= view.max.x; x += 1.0) {
+    const bool major = std::fmod(std::abs(x), 5.0) < 0.5;
+    const float sx = camera.to_screen({x, 0}).x;
+    d.line({sx, 0}, {sx, static_cast<float>(camera.height())}, major ? 1.5f : 1.0f, major ? kGridMajor : kGridMinor);
+  }
+  for (double y = std::floor(view.min.y); y <= view.max.y; y += 1.0) {
+    const bool major = std::fmod(std::abs(y), 5.0) < 0.5;
+    const float sy = camera.to_screen({0, y}).y;
+    d.line({0, sy}, {static_cast<float>(camera.width()), sy}, major ? 1.5f : 1.0f, major ? kGridMajor : kGridMinor);
+  }
+  if (floor_ > view.min.y) {
+    const float top = camera.to_screen({0, floor_}).y;
+    d.rect({0, top}, {static_cast<float>(camera.width()), static_cast<float>(camera.height())}, kBedrock);
+  }
+}
+
+void WorldRenderer::draw_obstacles(Draw& d, const Camera& camera, const tire::World& world) {
+  const tire::Aabb view = camera.view();
+  const float grass = std::max(3.0f, camera.pixels(0.08));
+  for (const tire::Obstacle& o : world.rigid().obstacles()) {
+    if (!o.box.overlaps(view)) continue;
+    const ScreenPoint a = camera.to_screen(o.box.min), b = camera.to_screen(o.box.max);
+    d.rect(a, b, kEarth);
+    d.rect_outline(a, b, 1.5f, kEarthEdge);
+    d.rect({a.x, b.y}, {b.x, std::min(a.y, b.y + grass)}, kGrass);
+  }
+}
+
+void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
+  const auto& props = session.world().rigid().props();
+  for (std::uint32_t i = 0; i < props.size(); ++i) {
+    const tire::Prop& p = props[i];
+    if (!p.alive) continue;
+    const tire::Pose pose = session.interpolated_pose(i, alpha);
+    const SDL_Color fill = prop_color(p);
+    const SDL_Color edge = darker(fill);
+    const tire::PropGeometry& g = p.geometry;
+    shape_.clear();
+    for (const tire::Vec2& v : g.vertices) shape_.push_back(camera.to_screen(pose.to_world(v)));
+    switch (g.shape) {
+      case tire::PropShape::box:
+      case tire::PropShape::polygon:
+        d.convex(shape_, fill);
+        d.polyline(shape_, true, 2.0f, edge);
+        break;
+      case tire::PropShape::circle: {
+        const ScreenPoint c = camera.to_screen(pose.position);
+        const float r = camera.pixels(g.radius);
+        d.circle(c, r, edge, 32);
+        d.circle(c, std::max(1.0f, r - 2.0f), fill, 32);
+        // A radius, so that rolling shows.
+        d.line(c, camera.to_screen(pose.to_world({g.radius, 0})), 2.0f, edge);
+        break;
+      }
+      case tire::PropShape::chain: {
+        // Terrain, solid on the side opposite its edge normals. An edge that faces up is filled
+        // down to the underground, like the ground; any other edge (a wall, an overhang) is
+        // thickened by the chain's thickness, with mitred joints. Then the surface line.
+        const std::size_t count = g.vertices.size();
+        const std::size_t edges = std::min(g.loop ? count : count - 1, g.normals.size());
+        const double depth = std::max(g.thickness, 0.1);
+        const bool terrain = p.spec.type == tire::PropType::static_body;
+        const SDL_Color body = terrain ? kEarth : darker(fill, 0.85f);
+        const auto vertex_offset = [&](std::size_t v) {
+          const bool has_prev = edges > 0 && (g.loop || v > 0), has_next = v < edges;
+          const tire::Vec2 prev = has_prev ? g.normals[(v + edges - 1) % edges] : tire::Vec2{};
+          const tire::Vec2 next = has_next ? g.normals[v] : tire::Vec2{};
+          tire::Vec2 n = prev + next;
+          const double len = length(n);
+          if (len <= 0.0) return tire::Vec2{};
+          n = n / len;
+          return n * (depth / std::max(0.35, dot(n, has_next ? next : prev)));
+        };
+        for (std::size_t e = 0; e < edges; ++e) {
+          const std::size_t f = (e + 1) % count;
+          const tire::Vec2 a = pose.to_world(g.vertices[e]), b = pose.to_world(g.vertices[f]);
+          const tire::Vec2 n = pose.rotate(g.normals[e]);
+          if (terrain && n.y > 0.3 && floor_ < std::min(a.y, b.y)) {
+            d.quad(camera.to_screen(a), camera.to_screen(b), camera.to_screen({b.x, floor_}),
+                   camera.to_screen({a.x, floor_}), body);
+          } else {
+            d.quad(camera.to_screen(a), camera.to_screen(b),
+                   camera.to_screen(pose.to_world(g.vertices[f] - vertex_offset(f))),
+                   camera.to_screen(pose.to_world(g.vertices[e] - vertex_offset(e))), body);
+          }
+        }
+        d.polyline(shape_, g.loop, std::max(3.0f, camera.pixels(0.08)), terrain ? kGrass : fill);
+        break;
+      }
+    }
+  }
+}
+
+void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::World& world) {
+  const tire::ScriptRunner* script = world.script();
+  if (!script || !script->spec().goal) return;
+  const tire::Region& goal = script->spec().regions[*script->spec().goal];
+  const ScreenPoint a = camera.to_screen(goal.box.min), b = camera.to_screen(goal.box.max);
+  d.rect(a, b, rgba(80, 220, 110, 46));
+  d.rect_outline(a, b, 1.5f, rgba(40, 160, 70, 120));
+  // A chequered flag on a pole in the middle of the region.
+  const double height = std::min(goal.box.max.y - goal.box.min.y, 2.5);
+  const tire::Vec2 base{0.5 * (goal.box.min.x + goal.box.max.x), goal.box.min.y};
+  const tire::Vec2 top = base + tire::Vec2{0, height};
+  d.line(camera.to_screen(base), camera.to_screen(top), std::max(2.0f, camera.pixels(0.05)), rgba(70, 70, 70));
+  const double fw = 0.8, fh = 0.5, cell = 0.1;
+  for (int i = 0; i < static_cast<int>(fw / cell + 0.5); ++i)
+    for (int j = 0; j < static_cast<int>(fh / cell + 0.5); ++j) {
+      const tire::Vec2 m = top + tire::Vec2{i * cell, -(j + 1) * cell};
+      d.rect(camera.to_screen(m), camera.to_screen(m + tire::Vec2{cell, cell}),
+             (i + j) % 2 ? rgba(20, 20, 20) : rgba(250, 250, 250));
+    }
+}
+
+void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::Tire& t,
+                              double alpha, bool is_player) {
+  session.interpolated_positions(t, alpha, positions_);
+  const std::uint32_t n = t.n;
+  outer_.resize(n);
+  inner_.resize(n);
+  tire::Vec2 hub_world;
+  for (std::uint32_t i = 0; i < 2 * n; ++i) hub_world += positions_[i];
+  hub_world = hub_world / static_cast<double>(2 * n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    outer_[i] = camera.to_screen(positions_[i]);
+    inner_[i] = camera.to_screen(positions_[n + i]);
+  }
+  const ScreenPoint hub = camera.to_screen(hub_world);
+  // Sidewall: the whole tire as a fan from the hub over the tread.
+  d.fan(hub, outer_, kSidewall);
+  // Tread: a band along the outer ring in alternating blocks, which turn as the tire rolls.
+  band_.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) band_[i] = lerp(outer_[i], inner_[i], 0.42f);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    d.quad(outer_[i], outer_[j], band_[j], band_[i], (i % 2) ? kTreadLight : kTreadDark);
+  }
+  // Rim, with four spokes drawn on it.
+  const SDL_Color rim = is_player ? kRimPlayer : kRimOther;
+  d.fan(hub, inner_, rim);
+  const float spoke_width = std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.12));
+  for (std::uint32_t k = 0; k < 4 && n >= 4; ++k) d.line(hub, inner_[k * n / 4], spoke_width, darker(rim, 0.7f));
+  d.polyline(inner_, true, 1.5f, darker(rim, 0.55f));
+  d.circle(hub, std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.3)), kHubCap, 16);
+  if (t.grabbed) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
+}
+
+void WorldRenderer::draw_grab(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
+  for (const tire::Tire& t : session.world().tires()) {
+    if (!t.grabbed) continue;
+    session.interpolated_positions(t, alpha, positions_);
+    const ScreenPoint from = camera.to_screen(positions_[t.grab_particle]);
+    const ScreenPoint to = camera.to_screen(t.grab_target);
+    d.line(from, to, 2.0f, rgba(255, 230, 90));
+    d.circle(to, 5.0f, rgba(255, 230, 90), 12);
+    d.circle(from, 4.0f, rgba(230, 80, 40), 12);
+  }
+}
+
+void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,
+                               const DebugOptions& debug) {
+  const tire::World& world = session.world();
+  const auto& props = world.rigid().props();
+  const auto& obstacles = world.rigid().obstacles();
+  ImDrawList* labels = ImGui::GetBackgroundDrawList();
+
+  if (debug.regions)
+    if (const tire::ScriptRunner* script = world.script())
+      for (const tire::Region& r : script->spec().regions) {
+        const ScreenPoint a = camera.to_screen({r.box.min.x, r.box.max.y});
+        d.rect_outline(a, camera.to_screen({r.box.max.x, r.box.min.y}), 1.5f, rgba(40, 70, 220, 200));
+        labels->AddText({a.x + 4, a.y + 2}, IM_COL32(30, 50, 200, 255), r.name.c_str());
+      }
+
+  for (const tire::Tire& t : world.tires()) {
+    session.interpolated_positions(t, alpha, positions_);
+    const std::uint32_t n = t.n;
+    if (debug.structure) {
+      const auto& constraints = t.distance.constraints();
+      for (std::size_t k = t.spokes_first(); k < constraints.size(); ++k)
+        d.line(camera.to_screen(positions_[constraints[k].a]), camera.to_screen(positions_[constraints[k].b]), 1.0f,
+               rgba(120, 220, 255, 200));
+      inner_.resize(n);
+      outer_.resize(n);
+      for (std::uint32_t i = 0; i < n; ++i) {
+        outer_[i] = camera.to_screen(positions_[i]);
+        inner_[i] = camera.to_screen(positions_[n + i]);
+      }
+      d.polyline(inner_, true, 1.5f, rgba(0, 200, 255));
+      d.polyline(outer_, true, 1.5f, rgba(255, 255, 255, 220));
+      for (const ScreenPoint& p : outer_) d.circle(p, 2.0f, rgba(255, 255, 255), 6);
+      for (const ScreenPoint& p : inner_) d.circle(p, 2.0f, rgba(0, 200, 255), 6);
+    }
+    if (debug.contacts)
+      for (std::uint32_t i = 0; i < 2 * n; ++i) {
+        if (!t.contacts[i].active) continue;
+        const ScreenPoint p = camera.to_screen(t.particles.x[i]);
+        d.circle(p, 3.5f, rgba(255, 40, 40), 8);
+        arrow(d, p, camera.to_screen(t.particles.x[i] + t.contacts[i].normal * 0.25), 2.0f, rgba(255, 40, 40));
+      }
+    if (debug.velocities) {
+      const tire::Vec2 c = session.interpolated_centroid(t, alpha);
+      arrow(d, camera.to_screen(c), camera.to_screen(c + t.velocity() * 0.25), 3.0f, rgba(255, 220, 0));
+    }
+    if (debug.aabbs) {
+      tire::Aabb box{positions_[0], positions_[0]};
+      for (const tire::Vec2& p : positions_) {
+        box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
+        box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
+      }
+      d.rect_outline(camera.to_screen(box.min), camera.to_screen(box.max), 1.5f, rgba(60, 230, 90));
+    }
+    if (debug.broadphase) {
+      const ScreenPoint hub = camera.to_screen(t.centroid());
+      for (const std::uint32_t o : t.candidates) {
+        if (o >= obstacles.size()) continue;
+        const tire::Aabb& b = obstacles[o].box;
+        d.rect_outline(camera.to_screen(b.min), camera.to_screen(b.max), 3.0f, rgba(255, 140, 0));
+        d.line(hub, camera.to_screen((b.min + b.max) * 0.5), 1.0f, rgba(255, 140, 0));
+      }
+      for (const std::uint32_t p : t.prop_candidates) {
+        if (p >= props.size() || !props[p].alive) continue;
+        const tire::Aabb b = prop_bounds(props[p], world.rigid().current_pose(p));
+        d.rect_outline(camera.to_screen(b.min), camera.to_screen(b.max), 3.0f, rgba(230, 0, 230));
+        d.line(hub, camera.to_screen((b.min + b.max) * 0.5), 1.0f, rgba(230, 0, 230));
+      }
+      for (const tire::ContactPair& pair : t.pairs)
+        if (pair.particle < t.particles.x.size())
+          d.circle(camera.to_screen(t.particles.x[pair.particle]), 3.0f, rgba(230, 0, 230), 6);
+    }
+  }
+  if (debug.aabbs) {
+    for (std::uint32_t i = 0; i < props.size(); ++i) {
+      if (!props[i].alive) continue;
+      const tire::Aabb b = prop_bounds(props[i], session.interpolated_pose(i, alpha));
+      d.rect_outline(camera.to_screen(b.min), camera.to_screen(b.max), 1.5f, rgba(60, 230, 90));
+    }
+    for (const tire::Obstacle& o : obstacles)
+      d.rect_outline(camera.to_screen(o.box.min), camera.to_screen(o.box.max), 1.5f, rgba(60, 230, 90));
+  }
+}
+
+}  // namespace game

@@ -1,0 +1,62 @@
+// Everything that reaches the World from the player, in one place: per tick a TickInput (steer,
+// jump) and, between ticks, a list of events (spawn a tire, grab/move/release, a tuning change, a
+// level (re)load). GameSession applies them, always between two World::step calls, and reports
+// each batch to a SessionObserver, so a replay recorder can be attached there and see exactly what
+// the simulation saw, tick by tick. Nothing here knows about SDL.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "level.h"
+#include "world.h"
+
+namespace game {
+
+// A left click on empty space: a default TireSpec (not the player) with its hub at `position`.
+struct SpawnTireEvent {
+  tire::Vec2 position;
+};
+// A press on a tire: World::grab(point, radius).
+struct GrabEvent {
+  tire::Vec2 point;
+  double radius = 0.0;  // m
+};
+// Dragging: World::move_grab(target).
+struct MoveGrabEvent {
+  tire::Vec2 target;
+};
+// Button released: World::release_grab().
+struct ReleaseGrabEvent {};
+// A tuning change, key = value. Keys are World::set_parameter's ("tires.compliance.outer",
+// "tires.pressure", "solver.substeps", ...) plus the game's own "tires.mass_scale" (each tire's
+// mass becomes its spawn mass times the value), "tires.friction" (static and kinetic together) and
+// "gravity.x" / "gravity.y" (World::set_gravity). See tuning.h.
+struct TuneEvent {
+  std::string key;
+  double value = 0.0;
+};
+// Restart, level change or hot reload: a fresh World built from `level` (already validated).
+struct LoadLevelEvent {
+  std::string path;
+  std::shared_ptr<const tire::Level> level;
+};
+
+using SessionEvent =
+    std::variant<SpawnTireEvent, GrabEvent, MoveGrabEvent, ReleaseGrabEvent, TuneEvent, LoadLevelEvent>;
+
+// Watches every input as it is applied: the hook for a replay recorder.
+class SessionObserver {
+ public:
+  virtual ~SessionObserver() = default;
+  // `events` were applied just now, before the step of tick `tick` (the world's tick() at the time;
+  // a LoadLevelEvent resets it to 0 for the events after it).
+  virtual void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) = 0;
+  // World::step(input) is about to advance the world from tick `tick` to `tick + 1`.
+  virtual void on_step(std::uint64_t tick, const tire::TickInput& input) = 0;
+};
+
+}  // namespace game

@@ -1,0 +1,225 @@
+// The game's logic that needs no window: the --press parser, tuning changes, the session's event
+// routing and interpolation, hot reload, the level list and the camera.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "camera.h"
+#include "game_session.h"
+#include "hot_reload.h"
+#include "key_script.h"
+#include "level_list.h"
+#include "tuning.h"
+
+using namespace game;
+
+namespace {
+
+std::shared_ptr<const tire::Level> flat_level() {
+  const tire::LevelLoad load = tire::load_level_text(
+      R"({"name": "Flat", "tires": [{"position": [0, 0.5]}], "obstacles": [{"min": [-20, -1], "max": [20, 0]}]})",
+      "flat.json");
+  REQUIRE(load.level);
+  return std::make_shared<const tire::Level>(*load.level);
+}
+
+struct Recorder : SessionObserver {
+  std::vector<std::pair<std::uint64_t, std::size_t>> batches;  // tick, event count
+  std::vector<std::uint64_t> steps;
+  void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) override {
+    batches.emplace_back(tick, events.size());
+  }
+  void on_step(std::uint64_t tick, const tire::TickInput&) override { steps.push_back(tick); }
+};
+
+}  // namespace
+
+TEST_CASE("press specs (--press KEY:FRAMES) parse into key and frames", "[unit][game]") {
+  std::string error;
+  const auto range = parse_key_press("right:0-300", error);
+  REQUIRE(range);
+  CHECK(range->key == SDL_SCANCODE_RIGHT);
+  CHECK(range->first == 0);
+  CHECK(range->last == 300);
+  const auto single = parse_key_press("Space:120", error);
+  REQUIRE(single);
+  CHECK(single->key == SDL_SCANCODE_SPACE);
+  CHECK(single->first == 120);
+  CHECK(single->last == 120);
+  CHECK(parse_key_press("period:3", error)->key == SDL_SCANCODE_PERIOD);
+  CHECK(parse_key_press("esc:3", error)->key == SDL_SCANCODE_ESCAPE);
+  CHECK(parse_key_press("f2:3", error)->key == SDL_SCANCODE_F2);
+
+  CHECK_FALSE(parse_key_press("right", error));
+  CHECK_THAT(error, Catch::Contains("KEY:FRAME"));
+  CHECK_FALSE(parse_key_press("nosuchkey:1", error));
+  CHECK_THAT(error, Catch::Contains("unknown key"));
+  CHECK_FALSE(parse_key_press("right:9-3", error));
+  CHECK_FALSE(parse_key_press("right:-3", error));
+  CHECK_FALSE(parse_key_press("right:x", error));
+}
+
+TEST_CASE("a key script presses and releases on the right frames", "[unit][game]") {
+  KeyScript script;
+  std::string error;
+  script.add(*parse_key_press("right:0-2", error));
+  script.add(*parse_key_press("space:1", error));
+  CHECK(script.events_at(0).size() == 1);
+  CHECK(script.events_at(0)[0].down);
+  const auto frame1 = script.events_at(1);
+  REQUIRE(frame1.size() == 1);
+  CHECK(frame1[0].key == SDL_SCANCODE_SPACE);
+  const auto frame2 = script.events_at(2);  // space goes up
+  REQUIRE(frame2.size() == 1);
+  CHECK_FALSE(frame2[0].down);
+  const auto frame3 = script.events_at(3);  // right goes up
+  REQUIRE(frame3.size() == 1);
+  CHECK(frame3[0].key == SDL_SCANCODE_RIGHT);
+  CHECK_FALSE(frame3[0].down);
+  CHECK(script.events_at(4).empty());
+}
+
+TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][game]") {
+  GameSession session;
+  session.start("flat.json", flat_level());
+  session.queue(SpawnTireEvent{{3, 2}});
+  session.flush();
+  REQUIRE(session.world().tires().size() == 2);
+
+  Tuning wanted = session.tuning();
+  wanted.pressure = 1.5;
+  wanted.mass_scale = 2.0;
+  wanted.friction = 0.3;
+  wanted.gravity_y = -3.0;
+  wanted.substeps = 12;
+  wanted.compliance_spoke = 1e-4;
+  const std::vector<TuneEvent> changes = tuning_changes(session.tuning(), wanted);
+  CHECK(changes.size() == 6);
+  for (const TuneEvent& e : changes) session.queue(e);
+  session.flush();
+
+  for (const tire::Tire& t : session.world().tires()) {
+    CHECK(t.spec.pressure == 1.5);
+    CHECK(t.spec.mass == Approx(20.0));  // default spec mass 10 kg, times 2
+    CHECK(t.spec.friction == 0.3);
+    CHECK(t.spec.kinetic_friction == 0.3);
+    CHECK(t.spec.compliance.spoke == 1e-4);
+  }
+  CHECK(session.world().gravity().y == -3.0);
+  CHECK(session.world().config().substeps == 12);
+  CHECK(session.tuning().mass_scale == 2.0);
+
+  // Scaling again multiplies the spawn mass, not the current one.
+  session.queue(TuneEvent{"tires.mass_scale", 0.5});
+  session.flush();
+  CHECK(session.world().tires()[0].spec.mass == Approx(5.0));
+  // An unknown key changes nothing.
+  session.queue(TuneEvent{"tires.nonsense", 1.0});
+  session.flush();
+  CHECK(session.tuning().mass_scale == 0.5);
+}
+
+TEST_CASE("every input reaches the world through the session, between ticks", "[unit][game]") {
+  GameSession session;
+  Recorder recorder;
+  session.set_observer(&recorder);
+  session.start("flat.json", flat_level());
+  const std::uint64_t first_generation = session.generation();
+
+  session.queue(SpawnTireEvent{{2, 3}});
+  session.queue(GrabEvent{{0, 0.5}, 0.3});
+  session.queue(MoveGrabEvent{{0, 1.0}});
+  session.queue(MoveGrabEvent{{0, 2.0}});  // collapses into the previous move
+  session.step({1.0, false});
+  REQUIRE(recorder.batches.size() == 1);
+  CHECK(recorder.batches[0] == std::make_pair(std::uint64_t{0}, std::size_t{3}));
+  CHECK(recorder.steps == std::vector<std::uint64_t>{0});
+  CHECK(session.world().tires().size() == 2);
+  CHECK(session.world().tires()[0].grabbed);
+  CHECK(session.world().tires()[0].grab_target == tire::Vec2{0, 2.0});
+
+  session.queue(ReleaseGrabEvent{});
+  session.step({});
+  CHECK_FALSE(session.world().tires()[0].grabbed);
+
+  // A level load starts a fresh world.
+  session.queue(LoadLevelEvent{"flat.json", session.level_ptr()});
+  session.flush();
+  CHECK(session.generation() == first_generation + 1);
+  CHECK(session.world().tick() == 0);
+  CHECK(session.world().tires().size() == 1);
+}
+
+TEST_CASE("drawing interpolates between the last two ticks", "[unit][game]") {
+  GameSession session;
+  session.start("flat.json", flat_level());
+  const tire::Tire& t = session.world().tires()[0];
+  std::vector<tire::Vec2> out;
+  session.interpolated_positions(t, 0.5, out);  // no previous tick yet: as it is
+  CHECK(out == t.particles.x);
+  for (int i = 0; i < 30; ++i) session.step({1.0, false});
+  const std::vector<tire::Vec2> now = session.world().tires()[0].particles.x;
+  session.interpolated_positions(session.world().tires()[0], 1.0, out);
+  CHECK(out == now);
+  session.interpolated_positions(session.world().tires()[0], 0.0, out);
+  CHECK(out != now);
+  const tire::Vec2 half = session.interpolated_centroid(session.world().tires()[0], 0.5);
+  const tire::Vec2 before = session.interpolated_centroid(session.world().tires()[0], 0.0);
+  const tire::Vec2 after = session.world().tires()[0].centroid();
+  CHECK(half.x == Approx(0.5 * (before.x + after.x)));
+}
+
+TEST_CASE("hot reload notices a changed file once", "[unit][game]") {
+  const auto file = std::filesystem::temp_directory_path() / "tire-game-hot-reload-test.json";
+  { std::ofstream(file) << "{}"; }
+  HotReload watcher(1.0);
+  watcher.watch(file);
+  CHECK_FALSE(watcher.poll(0.0));
+  { std::ofstream(file) << "{\"changed\": true}"; }  // a different size, whatever the clock's resolution
+  CHECK_FALSE(watcher.poll(0.5));  // not yet time to look
+  CHECK(watcher.poll(1.0));
+  CHECK_FALSE(watcher.poll(2.0));
+  std::filesystem::remove(file);
+  CHECK_FALSE(watcher.poll(3.0));  // a vanished file is not a change
+}
+
+TEST_CASE("the level list is sorted by file name and names each level", "[unit][game]") {
+  const auto dir = std::filesystem::temp_directory_path() / "tire-game-level-list-test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "02-b.json") << R"({"name": "Bee"})"; }
+  { std::ofstream(dir / "01-a.json") << R"({"name": "Ay"})"; }
+  { std::ofstream(dir / "03-broken.json") << R"({"name": )"; }
+  { std::ofstream(dir / "notes.txt") << "not a level"; }
+  const std::vector<LevelEntry> levels = scan_levels(dir);
+  REQUIRE(levels.size() == 3);
+  CHECK(levels[0].name == "Ay");
+  CHECK(levels[1].name == "Bee");
+  CHECK_FALSE(levels[2].valid);
+  CHECK(levels[2].name == "03-broken.json");
+  CHECK(find_level(levels, dir / "02-b.json") == std::optional<std::size_t>{1});
+  CHECK_FALSE(find_level(levels, dir / "nope.json"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the camera scales with the window and stays inside the level", "[unit][game]") {
+  Camera camera;
+  camera.resize(1280, 720);
+  CHECK(camera.scale() == Approx(720 / Camera::kViewHeight));
+  camera.resize(640, 720);  // narrow: the width decides
+  CHECK(camera.scale() == Approx(640 / Camera::kViewWidth));
+  camera.resize(1280, 720);
+  const tire::Aabb bounds{{-50, -2}, {50, 4}};  // lower than the view: rests on its bottom
+  camera.snap({-49, 0}, bounds);
+  CHECK(camera.view().min.x == Approx(-50));
+  CHECK(camera.view().min.y == Approx(-2));
+  // A point maps to the screen and back.
+  const ScreenPoint p = camera.to_screen({-45, 1});
+  const tire::Vec2 back = camera.to_world(p.x, p.y);
+  CHECK(back.x == Approx(-45).margin(1e-4));
+  CHECK(back.y == Approx(1).margin(1e-4));
+  CHECK(p.y < camera.to_screen({-45, 0}).y);  // y up in the world is up on the screen
+}
