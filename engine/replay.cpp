@@ -8,10 +8,67 @@
 
 namespace tire {
 
+// Defined in json_reader.cpp (shared with the level loader).
+struct JsonBudget {
+  int max_depth;
+  std::size_t max_values;
+  std::size_t max_string_bytes;
+  const char* document;
+};
+std::optional<nlohmann::json> parse_json_bounded(const std::string& text, const JsonBudget& budget, std::string& error);
+
 namespace {
 
 using json = nlohmann::json;
 const Range kCoordinate{-LevelLimits::max_coordinate, LevelLimits::max_coordinate};
+
+// What a replay may hold, enforced before the work it asks for, and tighter than ReplayLimits (whose
+// 10^8 ticks would run for days and whose 10^7 inputs would need gigabytes as a JSON tree): a day
+// of play at 60 Hz, half a million inputs (an hour of dragging every tick is 216 000), and a JSON
+// tree of at most about 350 MB.
+constexpr std::uintmax_t kMaxFileBytes = 64ull << 20;
+constexpr std::uint64_t kMaxTicks = 24ull * 3600 * 60;
+constexpr std::size_t kMaxInputs = 500'000;
+constexpr std::size_t kMaxCheckpoints = 500'000;
+constexpr std::size_t kMaxBoxes = 100'000;
+constexpr std::size_t kMaxSpawns = LevelLimits::max_tires;
+constexpr std::size_t kMaxRestarts = 10'000;
+constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, 2'500'000, 4096, "a replay"};
+
+// The range of each key a replay may tune: those the level reference gives the same key (a tire's
+// mass up to ten times the largest a level allows: the game's tuning panel scales masses by up to 10).
+struct TunableRange {
+  std::string_view key;  // after "tires." or "player."; or a solver key in full
+  Range range;
+  bool integer;
+  const char* unit;
+};
+constexpr TunableRange kTunableRanges[] = {
+    {"solver.substeps", {1, 256}, true, ""},
+    {"solver.iterations", {1, 64}, true, ""},
+    {"solver.damping", {0, 1000}, false, "1/s"},
+    {"friction", {0, 10}, false, ""},
+    {"kinetic_friction", {0, 10}, false, ""},
+    {"pressure", {0.1, 4}, false, "(fraction of the rest area)"},
+    {"material_damping", {0, 1}, false, "s"},
+    {"rolling_resistance", {0, 1}, false, ""},
+    {"drive_acceleration", {0, 1000}, false, "m/s^2"},
+    {"jump_speed", {0, 100}, false, "m/s"},
+    {"max_speed", {0, 1000, true}, false, "m/s"},
+    {"mass", {0, 1e7, true}, false, "kg"},
+    {"compliance.outer", {0, 1}, false, "m/N"},
+    {"compliance.inner", {0, 1}, false, "m/N"},
+    {"compliance.spoke", {0, 1}, false, "m/N"},
+    {"compliance.pressure", {0, 1}, false, "m^4/J"},
+};
+
+const TunableRange* tunable_range(std::string_view key) {
+  for (const std::string_view prefix : {std::string_view("player."), std::string_view("tires.")})
+    if (key.starts_with(prefix)) key.remove_prefix(prefix.size());
+  for (const TunableRange& t : kTunableRanges)
+    if (t.key == key) return &t;
+  return nullptr;
+}
 
 bool is_hex(const std::string& s, std::size_t length) {
   return s.size() == length && std::all_of(s.begin(), s.end(), [](char c) {
@@ -51,7 +108,8 @@ bool read_flag(JsonReader& r, const json& j, const std::string& path, const char
 
 ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, std::uint64_t ticks) {
   ReplayInput in;
-  if (!r.object(j, path, {"tick", "steer", "jump", "spawn", "grab", "drag", "release", "set", "gravity", "restart"}))
+  if (!r.object(j, path,
+                {"tick", "steer", "jump", "spawn", "grab", "grab_radius", "drag", "release", "set", "gravity", "restart"}))
     return in;
   bool ok = true;
   // Inputs act before the step of their tick, so the last one that can act is ticks − 1.
@@ -60,6 +118,7 @@ ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, st
   in.jump = read_flag(r, j, path, "jump");
   if (j.contains("spawn")) in.spawn = r.vec2(j, path, "spawn", {}, kCoordinate, "m");
   if (j.contains("grab")) in.grab = r.vec2(j, path, "grab", {}, kCoordinate, "m");
+  in.grab_radius = r.number(j, path, "grab_radius", kGrabRadius, {0.0, 100.0}, "m");
   if (j.contains("drag")) in.drag = r.vec2(j, path, "drag", {}, kCoordinate, "m");
   in.release = read_flag(r, j, path, "release");
   if (j.contains("gravity")) in.gravity = r.vec2(j, path, "gravity", {}, {-1000.0, 1000.0}, "m/s^2");
@@ -72,7 +131,13 @@ ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, st
         r.fail(join_path(p, "key"), "must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"" +
                                         key + "\"");
       else if (!key.empty()) in.set_key = key;
-      in.set_value = r.number(*it, p, "value", 0.0, {-1e9, 1e9}, "", true);
+      // A value the world can take: 10^9 substeps would never finish a tick, a mass of 0 divides by it.
+      if (const TunableRange* t = in.set_key ? tunable_range(*in.set_key) : nullptr)
+        in.set_value = t->integer ? r.integer(*it, p, "value", 1, t->range, true)
+                                  : r.number(*it, p, "value", t->range.min_open ? t->range.max : t->range.min,
+                                             t->range, t->unit, true);
+      else
+        in.set_value = r.number(*it, p, "value", 0.0, {-1e9, 1e9}, "", true);
     }
   }
   if (j.size() == 1 && j.contains("tick")) r.fail(path, "has a tick but no input (steer, jump, spawn, ...)");
@@ -88,7 +153,7 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
       r.fail(path + "/hash", "must be 16 lowercase hex digits, got " + JsonReader::describe(j["hash"]));
     else e.hash = j["hash"].get<std::string>();
   }
-  if (const auto it = j.find("checkpoints"); it != j.end() && r.array(*it, path + "/checkpoints", ReplayLimits::max_inputs)) {
+  if (const auto it = j.find("checkpoints"); it != j.end() && r.array(*it, path + "/checkpoints", kMaxCheckpoints)) {
     std::uint64_t previous = 0;
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string p = join_path(path + "/checkpoints", i);
@@ -104,7 +169,7 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
       e.checkpoints.push_back(cp);
     }
   }
-  if (const auto it = j.find("boxes"); it != j.end() && r.array(*it, path + "/boxes", 100000)) {
+  if (const auto it = j.find("boxes"); it != j.end() && r.array(*it, path + "/boxes", kMaxBoxes)) {
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string p = join_path(path + "/boxes", i);
       const json& b = (*it)[i];
@@ -128,7 +193,7 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
 bool is_tunable_key(std::string_view key) {
   static constexpr std::string_view kTireKeys[] = {
       "friction", "kinetic_friction", "pressure", "material_damping", "rolling_resistance", "drive_acceleration",
-      "jump_speed", "max_speed", "mass", "compliance.outer", "compliance.inner", "compliance.spoke",
+      "jump_speed", "max_speed", "mass", "mass_scale", "compliance.outer", "compliance.inner", "compliance.spoke",
       "compliance.pressure"};
   if (key == "solver.substeps" || key == "solver.iterations" || key == "solver.damping") return true;
   for (const std::string_view prefix : {std::string_view("player."), std::string_view("tires.")})
@@ -151,14 +216,22 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
     r.fail("/level_sha256", "must be 64 lowercase hex digits (SHA-256 of the level file), got " +
                                 JsonReader::describe(doc["level_sha256"]));
   replay.ticks = static_cast<std::uint64_t>(
-      r.integer(doc, "", "ticks", 0, {0, static_cast<double>(ReplayLimits::max_ticks)}, true));
-  if (const auto it = doc.find("inputs"); it != doc.end() && r.array(*it, "/inputs", ReplayLimits::max_inputs)) {
+      r.integer(doc, "", "ticks", 0, {0, static_cast<double>(kMaxTicks)}, true));
+  if (const auto it = doc.find("inputs"); it != doc.end() && r.array(*it, "/inputs", kMaxInputs)) {
+    std::size_t spawns = 0, restarts = 0;
+    replay.inputs.reserve(it->size());
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string path = join_path("/inputs", i);
       replay.inputs.push_back(read_input(r, (*it)[i], path, replay.ticks));
       if (i > 0 && replay.inputs[i].tick < replay.inputs[i - 1].tick)
         r.fail(path + "/tick", "inputs must be in tick order: " + std::to_string(replay.inputs[i].tick) +
                                    " comes after " + std::to_string(replay.inputs[i - 1].tick));
+      // Each spawn builds a tire and each restart the whole level: bounded like a level's tires.
+      if (replay.inputs[i].spawn && ++spawns == kMaxSpawns + 1)
+        r.fail(path + "/spawn", "a replay may spawn at most " + std::to_string(kMaxSpawns) + " tires; this is one more");
+      if (replay.inputs[i].restart && ++restarts == kMaxRestarts + 1)
+        r.fail(path + "/restart", "a replay may restart the level at most " + std::to_string(kMaxRestarts) +
+                                      " times; this is one more");
     }
   }
   if (const auto it = doc.find("expect"); it != doc.end()) replay.expect = read_expect(r, *it, "/expect", replay.ticks);
@@ -167,19 +240,10 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
 }
 
 ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
-  json doc;
-  try {
-    doc = json::parse(text, [](int depth, json::parse_event_t, json&) {
-      if (depth > LevelLimits::max_depth) throw std::length_error("nesting");
-      return true;
-    });
-  } catch (const std::length_error&) {
-    return {std::nullopt, {file + ": nesting deeper than " + std::to_string(LevelLimits::max_depth) + " levels"}};
-  } catch (const json::exception& e) {
-    const std::string what = e.what();
-    const auto close = what.find("] ");
-    return {std::nullopt, {file + ": invalid JSON: " + (close == std::string::npos ? what : what.substr(close + 2))}};
-  }
+  std::string parse_error;
+  std::optional<json> parsed = parse_json_bounded(text, kReplayBudget, parse_error);
+  if (!parsed) return {std::nullopt, {file + ": " + parse_error}};
+  const json& doc = *parsed;
   std::vector<JsonIssue> issues;
   ReplayLoad out;
   out.replay = read_replay(doc, issues);
@@ -190,7 +254,7 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
 
 ReplayLoad load_replay_file(const std::filesystem::path& file) {
   std::string error;
-  const auto text = read_file(file, ReplayLimits::max_file_bytes, error);
+  const auto text = read_file(file, std::min(kMaxFileBytes, ReplayLimits::max_file_bytes), error);
   if (!text) return {std::nullopt, {file.string() + ": " + error}};
   return load_replay_text(*text, file.string());
 }
@@ -205,6 +269,7 @@ std::string replay_to_json(const Replay& replay) {
     if (in.jump) o["jump"] = true;
     if (in.spawn) o["spawn"] = vec(*in.spawn);
     if (in.grab) o["grab"] = vec(*in.grab);
+    if (in.grab && in.grab_radius != kGrabRadius) o["grab_radius"] = in.grab_radius;
     if (in.drag) o["drag"] = vec(*in.drag);
     if (in.release) o["release"] = true;
     if (in.set_key) o["set"] = {{"key", *in.set_key}, {"value", in.set_value}};
@@ -247,7 +312,7 @@ void apply_input(const ReplayInput& in, World& world, const Level& level, double
     spec.position = *in.spawn;
     world.add_tire(spec);
   }
-  if (in.grab) world.grab(*in.grab, kGrabRadius);
+  if (in.grab) world.grab(*in.grab, in.grab_radius);
   if (in.drag) world.move_grab(*in.drag);
   if (in.release) world.release_grab();
   if (in.set_key) world.set_parameter(*in.set_key, in.set_value);
@@ -258,7 +323,13 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
   ReplayOutcome out;
   std::unique_ptr<World> world = make_world(level);
   double steer = 0.0;
-  std::size_t next_input = 0, next_checkpoint = 0;
+  std::size_t next_input = 0, next_checkpoint = 0, next_box = 0;
+  // The boxes in tick order (file order within a tick): each tick looks only at its own, so that
+  // 100 000 boxes cost nothing on the ticks they do not name.
+  std::vector<const ReplayBox*> boxes;
+  boxes.reserve(replay.expect.boxes.size());
+  for (const ReplayBox& b : replay.expect.boxes) boxes.push_back(&b);
+  std::stable_sort(boxes.begin(), boxes.end(), [](const ReplayBox* a, const ReplayBox* b) { return a->tick < b->tick; });
   const auto check = [&](std::uint64_t tick) {
     while (next_checkpoint < replay.expect.checkpoints.size() && replay.expect.checkpoints[next_checkpoint].tick == tick) {
       const ReplayCheckpoint& want = replay.expect.checkpoints[next_checkpoint++];
@@ -273,7 +344,8 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
                                std::to_string(out.last_matching_tick.value_or(0)) + ")");
       }
     }
-    for (const ReplayBox& b : replay.expect.boxes) {
+    for (; next_box < boxes.size() && boxes[next_box]->tick <= tick; ++next_box) {
+      const ReplayBox& b = *boxes[next_box];
       if (b.tick != tick) continue;
       if (b.tire >= world->tires().size()) {
         out.failures.push_back("tick " + std::to_string(tick) + ": no tire " + std::to_string(b.tire) + " (there are " +

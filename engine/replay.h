@@ -28,6 +28,7 @@ struct ReplayInput {
   bool jump = false;
   std::optional<Vec2> spawn;    // a default tire at this point (a mouse click)
   std::optional<Vec2> grab;     // grab the tire at this point (mouse press)
+  double grab_radius = kGrabRadius;  // how near a tread particle the press must be (m)
   std::optional<Vec2> drag;     // move the grab (mouse drag)
   bool release = false;         // let go (mouse release)
   std::optional<std::string> set_key;  // a tuning change: World::set_parameter(key, value)

@@ -20,7 +20,7 @@ void add_ring(std::vector<DistanceConstraint>& out, std::uint32_t first, std::ui
 }  // namespace
 
 Tire::Tire(TireId id_, const TireSpec& spec_)
-    : id(id_), spec(spec_), n(static_cast<std::uint32_t>(spec_.segments)),
+    : id(id_), spec(spec_), spawn_mass(spec_.mass), n(static_cast<std::uint32_t>(spec_.segments)),
       segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
   particles.resize(2 * n);
   contacts.resize(2 * n);

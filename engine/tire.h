@@ -93,6 +93,7 @@ struct Tire {
 
   TireId id;
   TireSpec spec;
+  double spawn_mass;            // the mass it was built with: "mass_scale" scales this
   std::uint32_t n;              // particles per ring
   double segment_length;        // rest length of one outer-ring segment (m)
 

@@ -50,6 +50,7 @@ bool set_tire_key(Tire& t, std::string_view key, double value) {
   else if (key == "jump_speed") s.jump_speed = value;
   else if (key == "max_speed") s.max_speed = value;
   else if (key == "mass") t.set_mass(value);
+  else if (key == "mass_scale") t.set_mass(t.spawn_mass * value);
   else if (key.starts_with("compliance.")) {
     TireCompliance c = s.compliance;
     const std::string_view part = key.substr(11);

@@ -60,8 +60,8 @@ class World {
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
   // "solver.substeps|iterations|damping", "player.<key>" or "tires.<key>" for the tire keys
   // friction, kinetic_friction, pressure, material_damping, rolling_resistance,
-  // drive_acceleration, jump_speed, max_speed, mass, compliance.outer|inner|spoke|pressure.
-  // False for an unknown key.
+  // drive_acceleration, jump_speed, max_speed, mass, mass_scale (times the tire's spawn mass),
+  // compliance.outer|inner|spoke|pressure. False for an unknown key.
   bool set_parameter(std::string_view key, double value);
   void show_message(std::string_view text, double seconds);
   void set_checkpoint(Vec2 position) { checkpoint_ = position; }

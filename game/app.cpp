@@ -74,8 +74,13 @@ bool App::load_level(const std::filesystem::path& file) {
   }
   level_errors_.clear();
   auto level = std::make_shared<const tire::Level>(std::move(*load.level));
-  if (!session_.loaded()) session_.start(file.string(), std::move(level));
-  else session_.queue(LoadLevelEvent{file.string(), std::move(level)});
+  if (!session_.loaded()) {
+    recorder_.begin(file, level->gravity);
+    session_.start(file.string(), std::move(level));
+    session_.set_observer(&recorder_);
+  } else {
+    session_.queue(LoadLevelEvent{file.string(), std::move(level)});
+  }
   hot_reload_.watch(file);
   return true;
 }
@@ -115,6 +120,17 @@ void App::after_level_change() {
 }
 
 bool App::level_over() const { return session_.world().status() != tire::ScriptStatus::running; }
+
+// Saves the session so far into replays/ beside the levels folder, under a name with the level and
+// the time, written atomically.
+void App::save_replay() {
+  const std::filesystem::path dir = std::filesystem::absolute(options_.levels_dir).parent_path() / "replays";
+  const std::filesystem::path file = recorder_.default_file(dir);
+  if (const std::string err = recorder_.save(session_.world(), file); !err.empty())
+    warn("cannot save the replay: " + err);
+  else
+    warn("replay saved: " + file.string() + " (" + std::to_string(recorder_.ticks()) + " ticks)");
+}
 
 void App::warn(const std::string& text) {
   std::cerr << "tire-game: " << text << "\n";
@@ -160,6 +176,7 @@ void App::key_down(SDL_Scancode k) {
     case SDL_SCANCODE_F1: show_help_ = !show_help_; return;
     case SDL_SCANCODE_F2: show_tuning_ = !show_tuning_; return;
     case SDL_SCANCODE_F3: debug_.enabled = !debug_.enabled; return;
+    case SDL_SCANCODE_F5: save_replay(); return;
     default: break;
   }
   if (menu_open_) {
@@ -412,6 +429,12 @@ int App::run() {
     if (!options_.frames) {
       const double spent = seconds_since(start) - now_;
       if (spent < 1.0 / 240.0) SDL_Delay(static_cast<Uint32>((1.0 / 240.0 - spent) * 1000.0));
+    }
+  }
+  if (!options_.record.empty()) {
+    if (const std::string err = recorder_.save(session_.world(), options_.record); !err.empty()) {
+      std::cerr << "tire-game: cannot save the replay " << options_.record << ": " << err << "\n";
+      return 2;
     }
   }
   print_summary(frame);

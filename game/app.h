@@ -20,6 +20,7 @@
 #include "key_script.h"
 #include "level_list.h"
 #include "renderer.h"
+#include "session_recorder.h"
 
 namespace game {
 
@@ -29,6 +30,7 @@ struct GameOptions {
   std::optional<long long> frames;   // run exactly this many frames, one tick each, then exit
   KeyScript keys;                    // scripted key presses (--press)
   std::string screenshot;            // save the last frame here (BMP)
+  std::string record;                // save the session's replay here on exit
 };
 
 class App {
@@ -68,6 +70,7 @@ class App {
   void print_summary(long long frames) const;
   bool level_over() const;
   void warn(const std::string& text);
+  void save_replay();
 
   GameOptions options_;
   SDL_Window* window_ = nullptr;
@@ -76,6 +79,7 @@ class App {
   bool sdl_started_ = false;
 
   GameSession session_;
+  SessionRecorder recorder_;  // every session is recorded; F5 saves
   std::uint64_t seen_generation_ = 0;
   Tuning level_tuning_;
   Camera camera_;

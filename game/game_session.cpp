@@ -13,10 +13,8 @@ void GameSession::start(std::string path, std::shared_ptr<const tire::Level> lev
   level_ = std::move(level);
   path_ = std::move(path);
   tuning_ = Tuning::from_world(*world_);
-  spawn_mass_.clear();
   previous_x_.clear();
   previous_poses_.clear();
-  note_spawn_masses();
   ++generation_;
 }
 
@@ -62,7 +60,6 @@ void GameSession::apply(const SessionEvent& event) {
           spec.position = e.position;
           spec.player = false;
           world_->add_tire(spec);
-          note_spawn_masses();
         } else if constexpr (std::is_same_v<T, GrabEvent>) {
           world_->grab(e.point, e.radius);
         } else if constexpr (std::is_same_v<T, MoveGrabEvent>) {
@@ -70,16 +67,12 @@ void GameSession::apply(const SessionEvent& event) {
         } else if constexpr (std::is_same_v<T, ReleaseGrabEvent>) {
           world_->release_grab();
         } else if constexpr (std::is_same_v<T, TuneEvent>) {
-          if (apply_tuning(*world_, spawn_mass_, e.key, e.value)) tuning_.set(e.key, e.value);
+          if (apply_tuning(*world_, e.key, e.value)) tuning_.set(e.key, e.value);
         }
       },
       event);
 }
 
-void GameSession::note_spawn_masses() {
-  for (const tire::Tire& t : world_->tires())
-    if (!spawn_mass_.contains(t.id)) spawn_mass_.emplace(t.id, t.spec.mass);
-}
 
 void GameSession::step(const tire::TickInput& input) {
   flush();
@@ -93,7 +86,7 @@ void GameSession::step(const tire::TickInput& input) {
     if (props[i].alive) previous_poses_[i] = world_->rigid().current_pose(i);
   if (observer_) observer_->on_step(world_->tick(), input);
   world_->step(input);
-  note_spawn_masses();  // tires a script spawned
+  if (observer_) observer_->on_stepped(*world_);
 }
 
 void GameSession::interpolated_positions(const tire::Tire& t, double alpha, std::vector<tire::Vec2>& out) const {

@@ -54,7 +54,6 @@ class GameSession {
 
  private:
   void apply(const SessionEvent& event);
-  void note_spawn_masses();
 
   std::unique_ptr<tire::World> world_;
   std::shared_ptr<const tire::Level> level_;
@@ -63,7 +62,6 @@ class GameSession {
   std::uint64_t generation_ = 0;
   std::vector<SessionEvent> queue_;
   SessionObserver* observer_ = nullptr;
-  std::map<tire::TireId, double> spawn_mass_;
   std::unordered_map<tire::TireId, std::vector<tire::Vec2>> previous_x_;
   std::vector<tire::Pose> previous_poses_;
 };

@@ -26,6 +26,7 @@ const char* const kKeys[][2] = {
     {"F1", "this help"},
     {"F2", "tuning panel"},
     {"F3", "debug drawing"},
+    {"F5", "save a replay of this session into replays/"},
     {"Left click (empty space)", "spawn a tire"},
     {"Left drag (on a tire)", "grab and pull it"},
 };

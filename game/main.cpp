@@ -1,4 +1,4 @@
-// tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE]
+// tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--press", presses, "scripted key press KEY:FRAME or KEY:FIRST-LAST, e.g. right:0-300, space:120");
   cli.add_option("--screenshot", screenshot, "save the last frame to FILE (BMP)");
+  std::string record;
+  cli.add_option("--record", record, "save a replay of the session to FILE on exit (tirectl replay checks it)");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -38,6 +40,7 @@ int main(int argc, char** argv) {
   options.level = level.empty() ? options.levels_dir / "01-first-roll.json" : std::filesystem::path(level);
   if (frames >= 0) options.frames = frames;
   options.screenshot = screenshot;
+  options.record = record;
   for (const std::string& spec : presses) {
     std::string error;
     const auto press = game::parse_key_press(spec, error);

@@ -32,9 +32,9 @@ struct MoveGrabEvent {
 // Button released: World::release_grab().
 struct ReleaseGrabEvent {};
 // A tuning change, key = value. Keys are World::set_parameter's ("tires.compliance.outer",
-// "tires.pressure", "solver.substeps", ...) plus the game's own "tires.mass_scale" (each tire's
-// mass becomes its spawn mass times the value), "tires.friction" (static and kinetic together) and
-// "gravity.x" / "gravity.y" (World::set_gravity). See tuning.h.
+// "tires.pressure", "tires.mass_scale", "solver.substeps", ...) plus the game's own
+// "tires.friction" (static and kinetic together) and "gravity.x" / "gravity.y"
+// (World::set_gravity). See tuning.h.
 struct TuneEvent {
   std::string key;
   double value = 0.0;
@@ -57,6 +57,8 @@ class SessionObserver {
   virtual void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) = 0;
   // World::step(input) is about to advance the world from tick `tick` to `tick + 1`.
   virtual void on_step(std::uint64_t tick, const tire::TickInput& input) = 0;
+  // ... and has just done so.
+  virtual void on_stepped(const tire::World& world) = 0;
 };
 
 }  // namespace game

@@ -81,23 +81,13 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to) {
   return out;
 }
 
-bool apply_tuning(tire::World& world, const std::map<tire::TireId, double>& spawn_mass, std::string_view key,
-                  double value) {
+bool apply_tuning(tire::World& world, std::string_view key, double value) {
   if (key == "gravity.x") {
     world.set_gravity({value, world.gravity().y});
     return true;
   }
   if (key == "gravity.y") {
     world.set_gravity({world.gravity().x, value});
-    return true;
-  }
-  if (key == "tires.mass_scale") {
-    // No engine key scales each tire by its own mass, so set each tire's mass directly.
-    for (const tire::Tire& t : world.tires()) {
-      const auto it = spawn_mass.find(t.id);
-      const double base = it != spawn_mass.end() ? it->second : t.spec.mass;
-      world.find_tire(t.id)->set_mass(base * value);
-    }
     return true;
   }
   if (key == "tires.friction")

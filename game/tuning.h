@@ -43,9 +43,9 @@ double tuning_value(const Tuning& t, std::string_view key);
 // The key = value changes that turn `from` into `to`.
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 
-// Applies one change to the world. `spawn_mass` maps each tire id to the mass it was spawned with
-// (for "tires.mass_scale"). Returns false for an unknown key.
-bool apply_tuning(tire::World& world, const std::map<tire::TireId, double>& spawn_mass, std::string_view key,
-                  double value);
+// Applies one change to the world: World::set_parameter for the engine's keys ("tires.mass_scale"
+// scales each tire's spawn mass), both frictions for "tires.friction", World::set_gravity for
+// "gravity.x" and "gravity.y". False for an unknown key.
+bool apply_tuning(tire::World& world, std::string_view key, double value);
 
 }  // namespace game

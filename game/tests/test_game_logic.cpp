@@ -33,6 +33,7 @@ struct Recorder : SessionObserver {
     batches.emplace_back(tick, events.size());
   }
   void on_step(std::uint64_t tick, const tire::TickInput&) override { steps.push_back(tick); }
+  void on_stepped(const tire::World&) override {}
 };
 
 }  // namespace

@@ -1,0 +1,121 @@
+#include "session_recorder.h"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+
+#include "file_io.h"
+
+namespace game {
+
+namespace {
+std::string level_sha(const std::filesystem::path& file) {
+  std::string error;
+  const auto bytes = tire::read_file(file, tire::LevelLimits::max_file_bytes, error);
+  return bytes ? tire::sha256_hex(*bytes) : std::string(64, '0');
+}
+}  // namespace
+
+void SessionRecorder::begin(const std::filesystem::path& level_file, tire::Vec2 gravity) {
+  level_file_ = std::filesystem::absolute(level_file);
+  level_sha256_ = level_sha(level_file_);
+  // The level path is made relative to the replay file when saved; the recorder holds a placeholder.
+  recorder_.emplace(level_file_.string(), level_sha256_);
+  steer_ = 0.0;
+  gravity_ = gravity;
+}
+
+void SessionRecorder::input(tire::ReplayInput in) {
+  if (!recorder_) return;
+  in.tick = recorder_->ticks();
+  recorder_->input(in);
+}
+
+void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& events) {
+  for (const SessionEvent& event : events) {
+    std::visit(
+        [this](const auto& e) {
+          using T = std::decay_t<decltype(e)>;
+          tire::ReplayInput in;
+          if constexpr (std::is_same_v<T, LoadLevelEvent>) {
+            const std::filesystem::path file = std::filesystem::absolute(e.path);
+            if (recorder_ && file == level_file_ && level_sha(file) == level_sha256_) {
+              in.restart = true;  // the same level, restarted: one recording goes on
+              input(in);
+              steer_ = 0.0;
+              gravity_ = e.level->gravity;
+            } else {
+              begin(file, e.level->gravity);  // another level, or the file changed: a new recording
+            }
+          } else if constexpr (std::is_same_v<T, SpawnTireEvent>) {
+            in.spawn = e.position;
+            input(in);
+          } else if constexpr (std::is_same_v<T, GrabEvent>) {
+            in.grab = e.point;
+            in.grab_radius = e.radius;
+            input(in);
+          } else if constexpr (std::is_same_v<T, MoveGrabEvent>) {
+            in.drag = e.target;
+            input(in);
+          } else if constexpr (std::is_same_v<T, ReleaseGrabEvent>) {
+            in.release = true;
+            input(in);
+          } else if constexpr (std::is_same_v<T, TuneEvent>) {
+            // The game's own keys become what they do to the World (tuning.cpp, apply_tuning).
+            if (e.key == "gravity.x" || e.key == "gravity.y") {
+              (e.key == "gravity.x" ? gravity_.x : gravity_.y) = e.value;
+              in.gravity = gravity_;
+              input(in);
+            } else if (e.key == "tires.friction") {
+              for (const char* key : {"tires.friction", "tires.kinetic_friction"}) {
+                in.set_key = key;
+                in.set_value = e.value;
+                input(in);
+              }
+            } else if (tire::is_tunable_key(e.key)) {
+              in.set_key = e.key;
+              const bool integral = e.key == "solver.substeps" || e.key == "solver.iterations";
+              in.set_value = integral ? std::round(e.value) : e.value;
+              input(in);
+            }
+          }
+        },
+        event);
+  }
+}
+
+void SessionRecorder::on_step(std::uint64_t, const tire::TickInput& input_now) {
+  tire::ReplayInput in;
+  if (input_now.steer != steer_) {
+    in.steer = input_now.steer;
+    steer_ = input_now.steer;
+  }
+  in.jump = input_now.jump;
+  if (in.steer || in.jump) input(in);
+}
+
+void SessionRecorder::on_stepped(const tire::World& world) {
+  if (recorder_) recorder_->after_step(world);
+}
+
+std::string SessionRecorder::save(const tire::World& world, const std::filesystem::path& file) const {
+  if (!recorder_) return "nothing recorded yet";
+  tire::Replay replay = recorder_->finish(world);
+  const std::filesystem::path target = std::filesystem::absolute(file);
+  std::error_code ec;
+  std::filesystem::create_directories(target.parent_path(), ec);
+  replay.level = std::filesystem::relative(level_file_, target.parent_path(), ec).generic_string();
+  if (ec || replay.level.empty()) replay.level = level_file_.generic_string();
+  std::string error;
+  if (!tire::write_file_atomically(target, tire::replay_to_json(replay), error)) return error;
+  return "";
+}
+
+std::filesystem::path SessionRecorder::default_file(const std::filesystem::path& dir) const {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  return dir / (level_file_.stem().string() + "-" + stamp + ".json");
+}
+
+}  // namespace game

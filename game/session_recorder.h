@@ -1,0 +1,43 @@
+// Records every session as a replay (engine/replay.h): attached to the GameSession as its observer,
+// it turns each input the World receives into a replay input, at the replay's own tick count.
+// A restart of the same level is a "restart" input; loading another level (or a changed file)
+// starts a new recording. F5 saves the current one.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "replay.h"
+#include "session_input.h"
+
+namespace game {
+
+class SessionRecorder final : public SessionObserver {
+ public:
+  // Starts recording `level_file` (a session's first level, which is not loaded by an event).
+  void begin(const std::filesystem::path& level_file, tire::Vec2 gravity);
+
+  void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) override;
+  void on_step(std::uint64_t tick, const tire::TickInput& input) override;
+  void on_stepped(const tire::World& world) override;
+
+  // Writes the recording so far (atomically) to `file`; the level path inside is relative to it.
+  // Returns an error text, or "" when saved.
+  std::string save(const tire::World& world, const std::filesystem::path& file) const;
+  // A file name the player can find: <dir>/<level name>-<YYYYmmdd-HHMMSS>.json.
+  std::filesystem::path default_file(const std::filesystem::path& dir) const;
+
+  std::uint64_t ticks() const { return recorder_ ? recorder_->ticks() : 0; }
+
+ private:
+  void input(tire::ReplayInput in);
+
+  std::optional<tire::ReplayRecorder> recorder_;
+  std::filesystem::path level_file_;  // absolute
+  std::string level_sha256_;
+  double steer_ = 0.0;
+  tire::Vec2 gravity_;
+};
+
+}  // namespace game
