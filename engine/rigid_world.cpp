@@ -257,6 +257,18 @@ void RigidWorld::begin_tick(double dt) {
     p.inverse_inertia = inertia > 0.0 ? 1.0 / inertia : 0.0;
     p.impulse = {};
     p.angular_impulse = 0.0;
+    p.support_count = 0;
+    if (!dynamic) continue;
+    for (const b2ContactEdge* edge = b.GetContactList(); edge && p.support_count < Prop::kMaxSupports;
+         edge = edge->next) {
+      const b2Contact* contact = edge->contact;
+      if (!contact->IsTouching() || edge->other->GetType() == b2_dynamicBody) continue;
+      b2WorldManifold manifold;
+      contact->GetWorldManifold(&manifold);
+      // Box2D's normal points from fixture A to fixture B; the support's normal points into us.
+      const Vec2 normal = from_b2(manifold.normal);
+      p.supports[p.support_count++] = contact->GetFixtureA()->GetBody() == &b ? -normal : normal;
+    }
   }
 }
 
@@ -266,7 +278,10 @@ void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t
   const double moment = cross(point - p.center_at(t), impulse);
   p.impulse += impulse;
   p.angular_impulse += moment;
-  // The body gives way at once: the rest of the tick sees the new velocity.
+  // A free body gives way at once: the rest of the tick sees its new velocity. One resting on
+  // something is moved by Box2D alone, which weighs the push against its support's contact and
+  // friction; within the tick it stays on its course.
+  if (p.support_count > 0) return;
   p.velocity += impulse * p.inverse_mass;
   p.omega += moment * p.inverse_inertia;
 }

@@ -9,6 +9,7 @@
 // Box2D steps (only if something can move).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -41,6 +42,22 @@ struct Prop {
   double inverse_inertia = 0.0;  // about the centre of mass
   Vec2 impulse;                  // this tick's impulses from tires (N·s)
   double angular_impulse = 0.0;  // their moment about the centre of mass (N·m·s)
+
+  // What holds a dynamic prop up (shock propagation, one level deep): the normals, pointing into
+  // the prop, of its Box2D contacts with static and kinematic bodies at the start of the tick. A
+  // push into a support cannot move the prop this tick; the support (in Box2D) takes it.
+  static constexpr int kMaxSupports = 4;
+  Vec2 supports[kMaxSupports];
+  int support_count = 0;
+  // How freely the prop moves when pushed along unit vector `push`: 1 when nothing holds it that
+  // way, 0 straight into a support, 1 − (push·s)² in between (only the part of the push along the
+  // support's surface can move it). Scales the prop's inverse mass for the tire's contacts.
+  double mobility(Vec2 push) const {
+    double m = 1.0;
+    for (int i = 0; i < support_count; ++i)
+      if (const double into = -dot(push, supports[i]); into > 0.0) m = std::min(m, 1.0 - into * into);
+    return m;
+  }
 
   // Kinematic path state.
   std::size_t next_waypoint = 0;

@@ -1,5 +1,7 @@
 #include "soft_contact.h"
 
+#include "area_constraint.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -56,28 +58,38 @@ std::uint32_t wedge_edge(const Vec2* x, std::uint32_t n, Vec2 hub, Vec2 d) {
   return k;
 }
 
-// Particles of `a`'s tread against `b`'s tread edges.
-void push_out(Tire& a, Tire& b, double ground_normal_y) {
-  const std::uint32_t nb = b.n;
-  Vec2* xb = b.particles.x.data();
-  const Vec2* xb_prev = b.particles.x_prev.data();
-  const double* wb = b.particles.w.data();
-  const Vec2 hub = b.tread_hub;
-  const double reach2 = b.tread_reach * b.tread_reach;
-  const double mu = std::sqrt(a.spec.friction * b.spec.friction);
+// A ring of particles that others must stay outside of: a tire's tread, or its own rim.
+struct Ring {
+  Vec2* x;
+  const Vec2* x_prev;
+  const double* w;
+  std::uint32_t n;
+  Vec2 hub;
+  double reach;
+  std::uint8_t* on_tire;  // per ring particle: something rests on it (null: not tracked)
+};
 
+// Particles of `a`'s tread against the edges of `ring`. `mu` is the friction between them;
+// `soft_lambda` accumulates the normal λ per tread particle for that friction (null: frictionless).
+// `max_depth` (m): deeper is not a contact but a ring that lost its shape; leave it.
+void push_out(Tire& a, const Ring& ring, double mu, double* soft_lambda, double ground_normal_y,
+              double max_depth = 1e300) {
+  const std::uint32_t nb = ring.n;
+  Vec2* xb = ring.x;
+  const double* wb = ring.w;
+  const double reach2 = ring.reach * ring.reach;
   for (std::uint32_t i = 0; i < a.n; ++i) {
     Vec2& p = a.particles.x[i];
-    const Vec2 d = p - hub;
-    if (length_squared(d) >= reach2) continue;  // outside b's bounding circle
-    const std::uint32_t k = wedge_edge(xb, nb, hub, d);
+    const Vec2 d = p - ring.hub;
+    if (length_squared(d) >= reach2) continue;  // outside the ring's bounding circle
+    const std::uint32_t k = wedge_edge(xb, nb, ring.hub, d);
     const std::uint32_t k1 = (k + 1) % nb;
     const Vec2 e = xb[k1] - xb[k];
     const double e2 = length_squared(e);
     if (e2 <= 0.0) continue;
-    const Vec2 n = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward: tread is counter-clockwise
+    const Vec2 n = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward: rings are counter-clockwise
     const double C = dot(n, p - xb[k]);
-    if (C >= 0.0) continue;
+    if (C >= 0.0 || -C > max_depth) continue;
     const double t = std::clamp(dot(p - xb[k], e) / e2, 0.0, 1.0);
     const double w0 = wb[k] * (1.0 - t) * (1.0 - t), w1 = wb[k1] * t * t, wp = a.particles.w[i];
     const double w_sum = wp + w0 + w1;
@@ -87,20 +99,28 @@ void push_out(Tire& a, Tire& b, double ground_normal_y) {
     p += n * (wp * dl);
     xb[k] -= n * (wb[k] * (1.0 - t) * dl);
     xb[k1] -= n * (wb[k1] * t * dl);
-    a.soft_lambda[i] += dl;
-    if (n.y <= -ground_normal_y) b.on_tire[k] = b.on_tire[k1] = 1;  // b rests on a
-    if (n.y >= ground_normal_y) a.on_tire[i] = 1;                   // a rests on b
+    if (ring.on_tire) {
+      if (n.y <= -ground_normal_y) ring.on_tire[k] = ring.on_tire[k1] = 1;  // the ring's tire rests on a
+      if (n.y >= ground_normal_y) a.on_tire[i] = 1;                        // a rests on the ring's tire
+    }
+    if (!soft_lambda) continue;
+    soft_lambda[i] += dl;
     // Static friction on the motion of p relative to the edge point this substep.
-    const Vec2 edge_motion = (xb[k] - xb_prev[k]) * (1.0 - t) + (xb[k1] - xb_prev[k1]) * t;
+    const Vec2 edge_motion = (xb[k] - ring.x_prev[k]) * (1.0 - t) + (xb[k1] - ring.x_prev[k1]) * t;
     const Vec2 dp = (p - a.particles.x_prev[i]) - edge_motion;
     const Vec2 dp_t = dp - n * dot(dp, n);
     const double lt = length(dp_t) / w_sum;  // |Δλ_t| that would stop it
-    if (lt <= 0.0 || lt >= mu * a.soft_lambda[i]) continue;
+    if (lt <= 0.0 || lt >= mu * soft_lambda[i]) continue;
     const Vec2 g = dp_t * (1.0 / w_sum);
     p -= g * wp;
     xb[k] += g * (wb[k] * (1.0 - t));
     xb[k1] += g * (wb[k1] * t);
   }
+}
+
+Ring tread_of(Tire& t) {
+  return {t.particles.x.data(), t.particles.x_prev.data(), t.particles.w.data(), t.n, t.tread_hub, t.tread_reach,
+          t.on_tire.data()};
 }
 
 }  // namespace
@@ -109,8 +129,60 @@ void solve_tire_contact(Tire& a, Tire& b, double ground_normal_y) {
   // Bounding circles apart: nothing to do.
   const double reach = a.tread_reach + b.tread_reach;
   if (length_squared(a.tread_hub - b.tread_hub) >= reach * reach) return;
-  push_out(a, b, ground_normal_y);
-  push_out(b, a, ground_normal_y);
+  const double mu = std::sqrt(a.spec.friction * b.spec.friction);
+  push_out(a, tread_of(b), mu, a.soft_lambda.data(), ground_normal_y);
+  push_out(b, tread_of(a), mu, b.soft_lambda.data(), ground_normal_y);
+}
+
+namespace {
+
+// Rim particles of `t` kept inside its tread polygon: the other half of the tread–rim contact (a
+// rim particle can poke out between two tread particles without any tread particle entering the
+// rim).
+void keep_rim_inside_tread(Tire& t) {
+  const std::uint32_t n = t.n;
+  Vec2* x = t.particles.x.data();
+  const double* w = t.particles.w.data();
+  for (std::uint32_t j = n; j < 2 * n; ++j) {
+    Vec2& p = x[j];
+    // The tread wraps the rim, so it is star-shaped about the rim's hub even when crushed flat.
+    const std::uint32_t k = wedge_edge(x, n, t.rim_hub, p - t.rim_hub);
+    const std::uint32_t k1 = (k + 1) % n;
+    const Vec2 e = x[k1] - x[k];
+    const double e2 = length_squared(e);
+    if (e2 <= 0.0) continue;
+    const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward
+    const double C = -dot(normal, p - x[k]);  // ≥ 0 inside
+    if (C >= 0.0 || -C > 2.0 * t.segment_length) continue;  // deeper: lost shape, not a contact
+    const double s = std::clamp(dot(p - x[k], e) / e2, 0.0, 1.0);
+    const double w_sum = w[j] + w[k] * (1.0 - s) * (1.0 - s) + w[k1] * s * s;
+    if (w_sum <= 0.0) continue;
+    const double dl = -C / w_sum;  // XPBD eq. 18, α = 0, with ∇_p C = −n
+    p -= normal * (w[j] * dl);
+    x[k] += normal * (w[k] * (1.0 - s) * dl);
+    x[k1] += normal * (w[k1] * s * dl);
+  }
+}
+
+}  // namespace
+
+void keep_tread_outside_rim(Tire& t) {
+  const std::uint32_t n = t.n;
+  // This is the contact of a rim that holds its shape: edges are found by angle about the rim's
+  // hub, and the tread, wrapped around it, is star-shaped about it too. A rubbery rim (compliance
+  // above kRigidRimCompliance, far softer than any real wheel) or one collapsed below a fifth of its
+  // area is not one, and the contact would only throw particles across a shapeless tangle.
+  constexpr double kRigidRimCompliance = 1e-4;  // m/N
+  constexpr double kMinRimAreaRatio = 0.2;
+  if (t.spec.compliance.inner > kRigidRimCompliance ||
+      polygon_area(t.particles.x.data() + n, n) < kMinRimAreaRatio * t.rim_area_constraint.rest_area)
+    return;
+  const Ring rim{t.particles.x.data() + n, t.particles.x_prev.data() + n, t.particles.w.data() + n, n, t.rim_hub,
+                 t.rim_reach, nullptr};
+  // Within one substep a particle gets about a segment inside (the anti-tunneling clamp); much
+  // deeper is a ring that lost its shape, not a contact.
+  push_out(t, rim, 0.0, nullptr, 0.0, 2.0 * t.segment_length);
+  keep_rim_inside_tread(t);
 }
 
 }  // namespace tire

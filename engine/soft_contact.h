@@ -46,4 +46,9 @@ inline constexpr double kTirePairSkin = 0.05;
 // rest on the other tire as grounded (a tire can jump off a pile).
 void solve_tire_contact(Tire& a, Tire& b, double ground_normal_y);
 
+// The same constraint within one tire: its tread particles stay outside its own rim polygon. A
+// tire crushed flat bottoms out on its rim, as a real one does, instead of folding through it
+// (which would tangle the rings for good). Frictionless. Uses rim_hub and rim_reach.
+void keep_tread_outside_rim(Tire& tire);
+
 }  // namespace tire

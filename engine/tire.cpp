@@ -43,11 +43,15 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
     for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + n - 1) % n, 0.0, spec.compliance.spoke});
   }
   area_constraint = {0, n, 0.0, spec.pressure, spec.compliance.pressure};
+  // The rim's area is as stiff as its ring: α_area = α_inner·r² (m³/N) matches the ring's own
+  // resistance to a change of radius, so a metal rim is nearly rigid and a rubber one is not.
+  rim_area_constraint = {n, n, 0.0, 1.0, spec.compliance.inner * spec.inner_radius * spec.inner_radius};
   reset();
   // Rest lengths and rest area are those of the tire as built, so it starts in equilibrium.
   for (DistanceConstraint& c : list) c.rest_length = length(particles.x[c.b] - particles.x[c.a]);
   distance = DistanceConstraintSet(std::move(list));
   area_constraint.rest_area = polygon_area(particles.x.data(), n);
+  rim_area_constraint.rest_area = polygon_area(particles.x.data() + n, n);
 }
 
 void Tire::reset() {
@@ -70,6 +74,7 @@ void Tire::reset() {
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
   distance.reset_lambda();
   area_lambda = 0.0;
+  rim_area_lambda = 0.0;
   control = {};
 }
 
@@ -87,6 +92,7 @@ void Tire::set_compliance(const TireCompliance& c) {
   distance.set_compliance(inner_ring_first(), n, c.inner);
   distance.set_compliance(spokes_first(), distance.size() - spokes_first(), c.spoke);
   area_constraint.compliance = c.pressure;
+  rim_area_constraint.compliance = c.inner * spec.inner_radius * spec.inner_radius;
 }
 
 void Tire::set_mass(double mass) {

@@ -101,6 +101,10 @@ struct Tire {
   DistanceConstraintSet distance;  // rings, then spokes; ordered so neighbours rarely share a particle
   AreaConstraint area_constraint;
   double area_lambda = 0.0;
+  // The rim (inner ring) keeps its area as stiffly as its edges keep their lengths: a wheel's rim is
+  // rigid metal, and without this the ring of fixed edge lengths could fold flat under a heavy load.
+  AreaConstraint rim_area_constraint;
+  double rim_area_lambda = 0.0;
 
   std::vector<ContactRecord> contacts;        // per particle, this substep
   std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
@@ -113,6 +117,8 @@ struct Tire {
   std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
   Vec2 tread_hub;                             // mean of the tread particles, after this iteration's own solve
   double tread_reach = 0.0;                   // largest distance of a tread particle from tread_hub
+  Vec2 rim_hub;                               // the same for the rim, for the tread–rim contact
+  double rim_reach = 0.0;
   std::vector<std::uint8_t> on_tire;          // per particle: resting on another tire, this substep
   TireControl control;
 

@@ -1,5 +1,7 @@
 #include "tire_solver.h"
 
+#include "soft_contact.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -116,11 +118,17 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
   const Vec2 surface_velocity = prop.point_velocity(x, t_end);
   double normal_share = 1.0, tangent_share = 1.0;
   const double w = t.particles.w[pair.particle];
+  // A dynamic prop pushed into what holds it up (the ground under a crate) cannot give way that way
+  // this tick: its inverse mass along the push is scaled by its mobility (0 straight into a
+  // support), and the impulse still reaches it, where Box2D hands it to the support (shock
+  // propagation, one level deep).
   if (prop.is_dynamic()) {
     const Vec2 r = x - prop.center_at(t_end);
     const double rn = cross(r, c.normal), rt = dot(r, c.normal);  // r × n and r × t, t = perp(n)
-    normal_share = w / (w + prop.inverse_mass + rn * rn * prop.inverse_inertia);
-    tangent_share = w / (w + prop.inverse_mass + rt * rt * prop.inverse_inertia);
+    const double mob_n = prop.mobility(-c.normal), mob_t = std::min(prop.mobility(perp(c.normal)),
+                                                                    prop.mobility(-perp(c.normal)));
+    normal_share = w / (w + mob_n * (prop.inverse_mass + rn * rn * prop.inverse_inertia));
+    tangent_share = w / (w + mob_t * (prop.inverse_mass + rt * rt * prop.inverse_inertia));
   }
   ContactRecord& rec = t.contacts[pair.particle];
   const Vec2 before = x;
@@ -222,6 +230,7 @@ void begin_substep(Tire& t, const SubstepContext& ctx) {
   find_contact_pairs(t, ctx);
   t.distance.reset_lambda();
   t.area_lambda = 0.0;
+  t.rim_area_lambda = 0.0;
   std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
   std::fill(t.soft_lambda.begin(), t.soft_lambda.end(), 0.0);
   std::fill(t.on_tire.begin(), t.on_tire.end(), std::uint8_t{0});
@@ -249,17 +258,24 @@ void solve_iteration(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
   t.distance.solve(p.x.data());
-  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), 1.0 / (ctx.h * ctx.h),
-                        t.scratch.data());
+  const double inv_h2 = 1.0 / (ctx.h * ctx.h);
+  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
+  solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
+  // Where each ring is now: for the tread–rim contact, and for the contacts between tires that
+  // follow this iteration.
+  const auto bounds_of = [&](std::uint32_t first, Vec2& hub, double& reach) {
+    hub = {};
+    for (std::uint32_t i = first; i < first + t.n; ++i) hub += p.x[i];
+    hub = hub / static_cast<double>(t.n);
+    double reach2 = 0.0;
+    for (std::uint32_t i = first; i < first + t.n; ++i) reach2 = std::max(reach2, length_squared(p.x[i] - hub));
+    reach = std::sqrt(reach2);
+  };
+  bounds_of(t.n, t.rim_hub, t.rim_reach);
+  bounds_of(0, t.tread_hub, t.tread_reach);
+  keep_tread_outside_rim(t);
   solve_contacts(t, ctx);
-  // Where the tread is now, for the contacts between tires that follow this iteration.
-  Vec2 hub;
-  for (std::uint32_t i = 0; i < t.n; ++i) hub += p.x[i];
-  hub = hub / static_cast<double>(t.n);
-  double reach2 = 0.0;
-  for (std::uint32_t i = 0; i < t.n; ++i) reach2 = std::max(reach2, length_squared(p.x[i] - hub));
-  t.tread_hub = hub;
-  t.tread_reach = std::sqrt(reach2);
+  bounds_of(0, t.tread_hub, t.tread_reach);
 }
 
 void end_substep(Tire& t, const SubstepContext& ctx) { update_velocities(t, ctx); }

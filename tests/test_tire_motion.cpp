@@ -63,8 +63,8 @@ TEST_CASE("a tire's rest sag does not depend on substeps", "[unit][motion][physi
   spec.position = {0, 0.5};
   spec.compliance.pressure = 1e-3;
   spec.compliance.spoke = 1e-4;
-  // Gauss–Seidel's unconverged error shrinks as h², so the sag converges: 16 substeps are within
-  // 20 % of the converged sag, 32 and more within 5 %.
+  // Gauss–Seidel's unconverged error shrinks with h, so the sag converges: 16 substeps are within
+  // 20 % of the converged sag, 32 within 8 %, 64 within 3 %.
   std::vector<double> sags;
   for (const int substeps : {16, 32, 64, 128}) {
     SolverConfig config;
@@ -78,8 +78,8 @@ TEST_CASE("a tire's rest sag does not depend on substeps", "[unit][motion][physi
   INFO("sag at 16, 32, 64, 128 substeps: " << sags[0] << ", " << sags[1] << ", " << sags[2] << ", " << sags[3]);
   CHECK(sags[3] > 0.005);  // the tire really is soft
   CHECK(sags[0] == Approx(sags[3]).epsilon(0.20));
-  CHECK(sags[1] == Approx(sags[3]).epsilon(0.05));
-  CHECK(sags[2] == Approx(sags[3]).epsilon(0.05));
+  CHECK(sags[1] == Approx(sags[3]).epsilon(0.08));
+  CHECK(sags[2] == Approx(sags[3]).epsilon(0.03));
 }
 
 namespace {

@@ -47,7 +47,7 @@ endforeach()
 tirectl_test("level 01-first-roll is won by rolling right" 0
   ARGS run ${LEVELS}/01-first-roll.json --ticks 900 --steer 1 STDOUT "\"status\": \"won\"")
 tirectl_test("level 02-jumps is won by jumping the blocks and the pit" 0
-  ARGS run ${LEVELS}/02-jumps.json --ticks 660 --steer 1 --jump-at 110 --jump-at 282 --jump-at 391 --jump-at 511
+  ARGS run ${LEVELS}/02-jumps.json --ticks 680 --steer 1 --jump-at 110 --jump-at 296 --jump-at 406 --jump-at 519
   STDOUT "\"status\": \"won\"")
 tirectl_test("level 03-hills is won by rolling over the hills" 0
   ARGS run ${LEVELS}/03-hills.json --ticks 3600 --steer 1 STDOUT "\"status\": \"won\"")
