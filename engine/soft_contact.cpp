@@ -143,8 +143,15 @@ void keep_rim_inside_tread(Tire& t) {
   const std::uint32_t n = t.n;
   Vec2* x = t.particles.x.data();
   const double* w = t.particles.w.data();
+  // Nearer the rim's hub than the tread's inradius (a lower bound on how far the tread's edges are:
+  // its nearest particle times cos(π/N)) is surely inside: the usual case, skipped cheaply.
+  double nearest2 = 1e300;
+  for (std::uint32_t i = 0; i < n; ++i) nearest2 = std::min(nearest2, length_squared(x[i] - t.rim_hub));
+  const double cos_half = std::cos(std::numbers::pi / n);
+  const double inside2 = nearest2 * cos_half * cos_half;
   for (std::uint32_t j = n; j < 2 * n; ++j) {
     Vec2& p = x[j];
+    if (length_squared(p - t.rim_hub) < inside2) continue;
     // The tread wraps the rim, so it is star-shaped about the rim's hub even when crushed flat.
     const std::uint32_t k = wedge_edge(x, n, t.rim_hub, p - t.rim_hub);
     const std::uint32_t k1 = (k + 1) % n;
@@ -166,17 +173,19 @@ void keep_rim_inside_tread(Tire& t) {
 
 }  // namespace
 
-void keep_tread_outside_rim(Tire& t) {
-  const std::uint32_t n = t.n;
+bool rim_can_hold_tread(const Tire& t) {
   // This is the contact of a rim that holds its shape: edges are found by angle about the rim's
   // hub, and the tread, wrapped around it, is star-shaped about it too. A rubbery rim (compliance
   // above kRigidRimCompliance, far softer than any real wheel) or one collapsed below a fifth of its
   // area is not one, and the contact would only throw particles across a shapeless tangle.
   constexpr double kRigidRimCompliance = 1e-4;  // m/N
   constexpr double kMinRimAreaRatio = 0.2;
-  if (t.spec.compliance.inner > kRigidRimCompliance ||
-      polygon_area(t.particles.x.data() + n, n) < kMinRimAreaRatio * t.rim_area_constraint.rest_area)
-    return;
+  return t.spec.compliance.inner <= kRigidRimCompliance &&
+         polygon_area(t.particles.x.data() + t.n, t.n) >= kMinRimAreaRatio * t.rim_area_constraint.rest_area;
+}
+
+void keep_tread_outside_rim(Tire& t) {
+  const std::uint32_t n = t.n;
   const Ring rim{t.particles.x.data() + n, t.particles.x_prev.data() + n, t.particles.w.data() + n, n, t.rim_hub,
                  t.rim_reach, nullptr};
   // Within one substep a particle gets about a segment inside (the anti-tunneling clamp); much

@@ -51,4 +51,8 @@ void solve_tire_contact(Tire& a, Tire& b, double ground_normal_y);
 // (which would tangle the rings for good). Frictionless. Uses rim_hub and rim_reach.
 void keep_tread_outside_rim(Tire& tire);
 
+// Whether the tread–rim contact applies: the rim is stiff (a real rim, not a rubbery one) and
+// holds at least a fifth of its area, so that its edges can be found by angle about its hub.
+bool rim_can_hold_tread(const Tire& tire);
+
 }  // namespace tire

@@ -254,7 +254,7 @@ void solve_grab(Tire& t, double inv_h2) {
 
 }  // namespace
 
-void solve_iteration(Tire& t, const SubstepContext& ctx) {
+void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
   Particles& p = t.particles;
   if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
   t.distance.solve(p.x.data());
@@ -271,11 +271,14 @@ void solve_iteration(Tire& t, const SubstepContext& ctx) {
     for (std::uint32_t i = first; i < first + t.n; ++i) reach2 = std::max(reach2, length_squared(p.x[i] - hub));
     reach = std::sqrt(reach2);
   };
-  bounds_of(t.n, t.rim_hub, t.rim_reach);
-  bounds_of(0, t.tread_hub, t.tread_reach);
-  keep_tread_outside_rim(t);
+  // The tread against its own rim, once per substep: it only matters when a load crushes the tire,
+  // which builds over substeps, not within one.
+  if (last && rim_can_hold_tread(t)) {
+    bounds_of(t.n, t.rim_hub, t.rim_reach);
+    keep_tread_outside_rim(t);
+  }
   solve_contacts(t, ctx);
-  bounds_of(0, t.tread_hub, t.tread_reach);
+  if (ctx.tire_pairs) bounds_of(0, t.tread_hub, t.tread_reach);
 }
 
 void end_substep(Tire& t, const SubstepContext& ctx) { update_velocities(t, ctx); }
@@ -288,7 +291,7 @@ void apply_prop_impulses(Tire& t, RigidWorld& rigid) {
 void substep(Tire& t, const SubstepContext& ctx, RigidWorld& rigid) {
   begin_substep(t, ctx);
   for (int it = 0; it < ctx.config->iterations; ++it) {
-    solve_iteration(t, ctx);
+    solve_iteration(t, ctx, it + 1 == ctx.config->iterations);
     apply_prop_impulses(t, rigid);
   }
   end_substep(t, ctx);

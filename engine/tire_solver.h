@@ -14,6 +14,7 @@ struct SubstepContext {
   Vec2 gravity;
   const SolverConfig* config = nullptr;
   const RigidWorld* rigid = nullptr;  // obstacles and props, read only while tires are solved
+  bool tire_pairs = false;            // contacts between tires follow each iteration: keep tread bounds
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and
@@ -25,7 +26,8 @@ void begin_tick(Tire& tire, const SolverConfig& config, const RigidWorld& rigid)
 // damping). Each touches only its own tire, so tires can be solved in parallel; impulses owed to
 // props wait in the tire until apply_prop_impulses. substep() runs the three for a tire on its own.
 void begin_substep(Tire& tire, const SubstepContext& ctx);
-void solve_iteration(Tire& tire, const SubstepContext& ctx);
+// `last`: the substep's last iteration, where the tread–rim contact is solved (once per substep).
+void solve_iteration(Tire& tire, const SubstepContext& ctx, bool last);
 void end_substep(Tire& tire, const SubstepContext& ctx);
 void substep(Tire& tire, const SubstepContext& ctx, RigidWorld& rigid);
 

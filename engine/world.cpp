@@ -182,7 +182,7 @@ void World::step(const TickInput& input) {
   if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
   color_pairs();
   const double h = config_.dt / config_.substeps;
-  SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_};
+  SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty()};
   const auto hand_over_impulses = [&] {
     for (Tire& t : tires_) apply_prop_impulses(t, rigid_);
   };
@@ -193,7 +193,7 @@ void World::step(const TickInput& input) {
     });
     for (int it = 0; it < config_.iterations; ++it) {
       for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) solve_iteration(tires_[i], ctx);
+        for (std::size_t i = b; i < e; ++i) solve_iteration(tires_[i], ctx, it + 1 == config_.iterations);
       });
       hand_over_impulses();
       for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
