@@ -57,3 +57,17 @@ tirectl_test("level 06-tire-rain is won once the gate opens" 0
   ARGS run ${LEVELS}/06-tire-rain.json --ticks 2400 --steer 1 STDOUT "\"status\": \"won\"")
 tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0
   ARGS run ${LEVELS}/07-sandbox.json --ticks 1800 --steer 1 STDOUT "\"status\": \"won\"")
+
+# tirectl tradeoff: a tiny sweep runs and writes its CSV and plot; bad arguments are usage errors.
+set(TRADEOFF_OUT ${CMAKE_CURRENT_BINARY_DIR}/tradeoff-test)
+tirectl_test("tradeoff runs a tiny sweep" 0
+  ARGS tradeoff --scenarios rest --substeps 1,4 --iterations 1 --segments 12 --repeats 1 --out ${TRADEOFF_OUT}
+  STDOUT "tradeoff.csv")
+add_test(NAME "tirectl tradeoff writes the CSV columns and the SVG"
+  COMMAND ${CMAKE_COMMAND} -DDIR=${TRADEOFF_OUT} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_tradeoff.cmake)
+set_tests_properties("tirectl tradeoff writes the CSV columns and the SVG" PROPERTIES LABELS unit
+  DEPENDS "tirectl tradeoff runs a tiny sweep")
+tirectl_test("tradeoff refuses zero substeps" 2 ARGS tradeoff --substeps 0 --out ${TRADEOFF_OUT}-bad
+  STDERR "--substeps")
+tirectl_test("tradeoff refuses an unknown scenario" 2 ARGS tradeoff --scenarios nowhere --out ${TRADEOFF_OUT}-bad
+  STDERR "unknown scenario \"nowhere\"")

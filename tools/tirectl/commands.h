@@ -35,4 +35,7 @@ struct BenchOptions {
 };
 int bench(const BenchOptions& options);
 
+struct TradeoffOptions;  // tradeoff.h
+int tradeoff(const TradeoffOptions& options);
+
 }  // namespace tirectl

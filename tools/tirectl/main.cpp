@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "tradeoff.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"tirectl: run, validate and measure soft-tire levels without a window"};
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--frames", bench.frames, "Frames per timed batch")->check(CLI::Range(1, 1000000));
   bench_cmd->add_option("--repeats", bench.repeats, "Timed batches per scene")->check(CLI::Range(1, 1000));
 
+  tirectl::TradeoffOptions tradeoff;
+  CLI::App* tradeoff_cmd = tirectl::add_tradeoff_command(app, tradeoff);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -51,6 +55,7 @@ int main(int argc, char** argv) {
     if (*validate_cmd) return tirectl::validate(validate_files);
     if (*replay_cmd) return tirectl::replay(replay);
     if (*bench_cmd) return tirectl::bench(bench);
+    if (*tradeoff_cmd) return tirectl::tradeoff(tradeoff);
   } catch (const std::exception& e) {
     std::cerr << "tirectl: " << e.what() << "\n";
     return 2;
