@@ -4,10 +4,10 @@
 #include <openssl/evp.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace tire {
 
@@ -26,23 +26,35 @@ std::optional<std::string> read_file(const std::filesystem::path& file, std::uin
     error = "file is " + std::to_string(size) + " bytes; the limit is " + std::to_string(max_bytes);
     return std::nullopt;
   }
+  // Straight into a string of the size the file has: one copy in memory, never more than the limit.
   std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) {
+  if (!in) {
+    error = "cannot open the file";
+    return std::nullopt;
+  }
+  std::string contents(static_cast<std::size_t>(size), '\0');
+  in.read(contents.data(), static_cast<std::streamsize>(size));
+  if (in.bad()) {
     error = "cannot read the file";
     return std::nullopt;
   }
-  std::string contents = text.str();
-  if (contents.size() > max_bytes) {  // grew while we read it
-    error = "file is larger than the limit of " + std::to_string(max_bytes) + " bytes";
-    return std::nullopt;
+  contents.resize(static_cast<std::size_t>(in.gcount()));  // it shrank while we read it
+  char more[1 << 16];  // it grew while we read it: take the rest, up to the limit
+  while (in && (in.read(more, sizeof more), in.gcount() > 0)) {
+    contents.append(more, static_cast<std::size_t>(in.gcount()));
+    if (contents.size() > max_bytes) {
+      error = "file is larger than the limit of " + std::to_string(max_bytes) + " bytes";
+      return std::nullopt;
+    }
   }
   return contents;
 }
 
 bool write_file_atomically(const std::filesystem::path& file, std::string_view contents, std::string& error) {
-  const std::filesystem::path temp = file.string() + ".tmp." + std::to_string(::getpid());
+  // Unique per process and per call, so that two writers of the same file never share a temporary.
+  static std::atomic<unsigned> serial{0};
+  const std::filesystem::path temp =
+      file.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(serial.fetch_add(1));
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) {
     error = "cannot create " + temp.string() + ": " + std::strerror(errno);
@@ -69,6 +81,12 @@ bool write_file_atomically(const std::filesystem::path& file, std::string_view c
     error = "cannot replace " + file.string() + ": " + std::strerror(errno);
     ::unlink(temp.c_str());
     return false;
+  }
+  // The rename itself reaches the disk with the directory (best effort: a kill cannot undo it anyway).
+  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  if (const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
   }
   return true;
 }

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace tire {
 
 namespace {
+
+// Issues recorded per document; past it, one line says more follow.
+constexpr std::size_t kMaxIssues = 200;
 
 std::string format_number(double v) {
   std::ostringstream s;
@@ -36,6 +40,12 @@ std::string quoted_list(std::initializer_list<std::string_view> items) {
   return out;
 }
 
+// An unknown key as it appears in a message: a hostile key of megabytes is cut short.
+std::string shorten_key(const std::string& key) {
+  constexpr std::size_t kShown = 80;
+  return key.size() <= kShown ? key : key.substr(0, kShown) + "...(" + std::to_string(key.size()) + " bytes)";
+}
+
 }  // namespace
 
 bool Range::contains(double v) const {
@@ -57,15 +67,63 @@ std::string join_path(const std::string& path, std::size_t index) {
   return path + "/" + std::to_string(index);
 }
 
+namespace {
+
+using json = nlohmann::json;
+
+// Appends value.dump() to `out`, but stops soon after `out` passes `limit` characters: describing
+// a hostile value (a huge array, a string of megabytes) costs no more than describing a small one.
+void dump_bounded(const json& value, std::string& out, std::size_t limit) {
+  if (out.size() > limit) return;
+  if (value.is_string()) {
+    const std::string& s = value.get_ref<const std::string&>();
+    const json head = s.size() > limit ? json(s.substr(0, limit)) : value;
+    std::string text = head.dump(-1, ' ', false, json::error_handler_t::replace);
+    if (s.size() > limit) text.pop_back();  // the cut string has no closing quote
+    out += text;
+  } else if (value.is_array()) {
+    out += '[';
+    for (std::size_t i = 0; i < value.size() && out.size() <= limit; ++i) {
+      if (i > 0) out += ',';
+      dump_bounded(value[i], out, limit);
+    }
+    out += ']';
+  } else if (value.is_object()) {
+    out += '{';
+    bool first = true;
+    for (auto it = value.begin(); it != value.end() && out.size() <= limit; ++it) {
+      if (!first) out += ',';
+      first = false;
+      dump_bounded(json(it.key()), out, limit);
+      out += ':';
+      dump_bounded(it.value(), out, limit);
+    }
+    out += '}';
+  } else {
+    out += value.dump();
+  }
+}
+
+}  // namespace
+
 std::string JsonReader::describe(const json& value) {
-  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
   if (value.is_object()) return "an object";
+  // An array of more than 20 entries dumps to more than 40 characters.
+  if (value.is_array() && value.size() > 20) return "an array of " + std::to_string(value.size());
+  std::string text;
+  dump_bounded(value, text, 61);
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
   if (value.is_array() && text.size() > 40) return "an array of " + std::to_string(value.size());
   return text;
 }
 
 void JsonReader::fail(const std::string& path, std::string message) {
+  // A hostile file can hold a million mistakes; the first ones tell the story.
+  if (issues_.size() > kMaxIssues) return;
+  if (issues_.size() == kMaxIssues) {
+    issues_.push_back({"", "more problems follow; only the first " + std::to_string(kMaxIssues) + " are reported"});
+    return;
+  }
   issues_.push_back({path, std::move(message)});
 }
 
@@ -80,10 +138,13 @@ bool JsonReader::object(const json& j, const std::string& path,
     std::string_view best;
     std::size_t best_distance = 3;  // suggest only close matches
     for (const auto& candidate : allowed) {
+      // The distance is at least the difference in length: a long hostile key costs nothing.
+      const std::size_t gap = key.size() > candidate.size() ? key.size() - candidate.size() : candidate.size() - key.size();
+      if (gap >= best_distance) continue;
       const std::size_t d = edit_distance(key, candidate);
       if (d < best_distance) best_distance = d, best = candidate;
     }
-    fail(join_path(path, key), best.empty()
+    fail(join_path(path, shorten_key(key)), best.empty()
                                    ? "unknown key; expected one of " + quoted_list(allowed)
                                    : "unknown key; did you mean \"" + std::string(best) + "\"?");
   }
@@ -188,6 +249,150 @@ Vec2 JsonReader::vec2(const json& obj, const std::string& path, const char* key,
     return fallback;
   }
   return {(*it)[0].get<double>(), (*it)[1].get<double>()};
+}
+
+// ---- Bounded parsing ---------------------------------------------------------------------------
+// Declared in level_loader.cpp and replay.cpp, its two users.
+
+struct JsonBudget {
+  int max_depth;
+  std::size_t max_values;
+  std::size_t max_string_bytes;
+  const char* document;  // "a level", "a replay": for messages
+};
+
+namespace {
+
+struct OverBudget {
+  std::string what;
+};
+
+// Builds the document from nlohmann's SAX events, refusing it at the first event past the budget,
+// and knows at every moment the JSON pointer of the value being read, so that a refusal names the
+// place. (Not json::parse with a callback: its parser rescans an object's parent at every object
+// end, which makes an array of a million objects take hours.)
+class BoundedBuilder {
+ public:
+  using json = nlohmann::json;
+
+  explicit BoundedBuilder(const JsonBudget& budget) : budget_(budget) {}
+
+  bool null() { return value(json(nullptr)); }
+  bool boolean(bool b) { return value(json(b)); }
+  bool number_integer(json::number_integer_t v) { return value(json(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return value(json(v)); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return value(json(v)); }
+  bool string(json::string_t& s) {
+    check_string(s, "a string");
+    return value(json(std::move(s)));
+  }
+  bool binary(json::binary_t& b) { return value(json(std::move(b))); }
+  bool start_object(std::size_t) { return open(json::value_t::object); }
+  bool start_array(std::size_t) { return open(json::value_t::array); }
+  bool key(json::string_t& k) {
+    frames_.back().key = k;
+    check_string(k, "a key");
+    return true;
+  }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
+    const std::string what = e.what();
+    const auto close = what.find("] ");
+    error_ = "invalid JSON: " + (close == std::string::npos ? what : what.substr(close + 2));
+    return false;
+  }
+
+  json& root() { return root_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  struct Frame {
+    json* container;
+    std::size_t index;  // arrays: of the element being read
+    std::string key;    // objects: of the member being read
+  };
+
+  std::string path() const {
+    std::string out;
+    for (const Frame& f : frames_)
+      out = f.container->is_array() ? join_path(out, f.index) : join_path(out, shorten_key(f.key));
+    return out;
+  }
+
+  void count() {
+    if (++values_ > budget_.max_values)
+      throw OverBudget{path() + ": " + budget_.document + " may hold at most " + std::to_string(budget_.max_values) +
+                       " JSON values (numbers, strings, arrays, objects), and this one holds more"};
+  }
+
+  void check_string(const std::string& s, const char* what) const {
+    if (s.size() > budget_.max_string_bytes)
+      throw OverBudget{path() + ": " + what + " may be at most " + std::to_string(budget_.max_string_bytes) +
+                       " bytes long, got one of " + std::to_string(s.size())};
+  }
+
+  // Puts a value where the parser is: the root, the next array element or the current member.
+  json* place(json&& v) {
+    if (frames_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    Frame& f = frames_.back();
+    if (f.container->is_array()) {
+      f.container->push_back(std::move(v));
+      return &f.container->back();
+    }
+    json& slot = (*f.container)[f.key];  // a repeated key: the last one wins, as in json::parse
+    slot = std::move(v);
+    return &slot;
+  }
+
+  bool value(json&& v) {
+    count();
+    place(std::move(v));
+    if (!frames_.empty() && frames_.back().container->is_array()) ++frames_.back().index;
+    return true;
+  }
+
+  bool open(json::value_t type) {
+    count();
+    if (frames_.size() >= static_cast<std::size_t>(budget_.max_depth))
+      throw OverBudget{path() + ": nesting deeper than " + std::to_string(budget_.max_depth) +
+                       " levels; arrays and objects may nest at most " + std::to_string(budget_.max_depth) + " deep"};
+    // The new container is the last element of its parent until it closes, so the pointer holds.
+    frames_.push_back({place(json(type)), 0, {}});
+    return true;
+  }
+
+  bool close() {
+    frames_.pop_back();
+    if (!frames_.empty() && frames_.back().container->is_array()) ++frames_.back().index;
+    return true;
+  }
+
+  const JsonBudget& budget_;
+  json root_;
+  std::vector<Frame> frames_;
+  std::size_t values_ = 0;
+  std::string error_;
+};
+
+}  // namespace
+
+// Parses untrusted text, refusing it as soon as it nests deeper than the budget, holds more values
+// (numbers, strings, booleans, nulls, arrays and objects) or a longer string than the budget
+// allows: the document tree never grows past the budget. On failure, `error` reads
+// "/json/pointer: what was expected, got what" or "invalid JSON: ...".
+std::optional<nlohmann::json> parse_json_bounded(const std::string& text, const JsonBudget& budget, std::string& error) {
+  BoundedBuilder builder(budget);
+  try {
+    if (nlohmann::json::sax_parse(text, &builder)) return std::move(builder.root());
+    error = builder.error();
+  } catch (const OverBudget& e) {
+    error = e.what;
+  }
+  return std::nullopt;
 }
 
 }  // namespace tire

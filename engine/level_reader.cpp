@@ -1,5 +1,6 @@
 // Level validation: every key of levels/README.md, with its unit, default and range.
 #include <algorithm>
+#include <map>
 
 #include "prop_geometry.h"
 
@@ -209,6 +210,93 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
   return p;
 }
 
+namespace {
+
+// Budgets over the whole level, beyond the per-array limits: a file within every one of those can
+// still describe a world too big to build (10 000 tires of 256 segments are 5 million particles,
+// half a kilobyte each). What the script spawns counts too, each spawn action once.
+constexpr std::size_t kMaxParticles = 1'000'000;  // 2 × segments per tire
+constexpr std::size_t kMaxPoints = 200'000;       // chain, polygon and path points over all props
+
+struct Totals {
+  std::size_t tires = 0, particles = 0, props = 0, points = 0;
+  // Where each total first went past its limit.
+  std::string tires_path, particles_path, props_path, points_path;
+};
+
+void count_tire(Totals& t, std::size_t segments, const std::string& path) {
+  ++t.tires;
+  t.particles += 2 * segments;
+  if (t.tires > LevelLimits::max_tires && t.tires_path.empty()) t.tires_path = path;
+  if (t.particles > kMaxParticles && t.particles_path.empty()) t.particles_path = path;
+}
+
+void count_prop(Totals& t, std::size_t points, const std::string& path) {
+  ++t.props;
+  t.points += points;
+  if (t.props > LevelLimits::max_props && t.props_path.empty()) t.props_path = path;
+  if (t.points > kMaxPoints && t.points_path.empty()) t.points_path = path;
+}
+
+std::size_t array_size(const json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_array() ? it->size() : 0;
+}
+
+// A spawn action's tire segments as the tire reader takes them (28 when missing or invalid).
+std::size_t spawned_segments(const json& tire) {
+  const auto it = tire.find("segments");
+  if (it == tire.end() || !it->is_number()) return 28;
+  const double s = it->get<double>();
+  return s >= 6 && s <= 256 ? static_cast<std::size_t>(s) : 28;
+}
+
+void check_totals(JsonReader& r, const json& doc, const Level& level) {
+  Totals t;
+  for (std::size_t i = 0; i < level.tires.size(); ++i)
+    count_tire(t, static_cast<std::size_t>(level.tires[i].segments), join_path("/tires", i));
+  for (std::size_t i = 0; i < level.props.size(); ++i)
+    count_prop(t, level.props[i].points.size() + level.props[i].path.waypoints.size(), join_path("/props", i));
+  // The script's spawn actions, read from the document so that each is named by its own path.
+  if (const auto triggers = doc.find("triggers"); triggers != doc.end() && triggers->is_array()) {
+    for (std::size_t i = 0; i < triggers->size(); ++i) {
+      const json& trigger = (*triggers)[i];
+      if (!trigger.is_object() || !trigger.contains("do") || !trigger["do"].is_array()) continue;
+      const json& actions = trigger["do"];
+      for (std::size_t k = 0; k < actions.size(); ++k) {
+        const json& a = actions[k];
+        if (!a.is_object() || !a.contains("action") || !a["action"].is_string()) continue;
+        const std::string path = join_path(join_path(join_path("/triggers", i), "do"), k);
+        const std::string& action = a["action"].get_ref<const std::string&>();
+        if (action == "spawn_tire" && a.contains("tire") && a["tire"].is_object())
+          count_tire(t, spawned_segments(a["tire"]), path);
+        if (action == "spawn_prop" && a.contains("prop") && a["prop"].is_object()) {
+          const json& prop = a["prop"];
+          const auto path_it = prop.find("path");
+          count_prop(t, array_size(prop, "points") + (path_it != prop.end() && path_it->is_object() ? array_size(*path_it, "waypoints") : 0),
+                     path);
+        }
+      }
+    }
+  }
+  const auto over = [&r](const std::string& path, const std::string& what, std::size_t total, std::size_t limit) {
+    r.fail(path, what + " may add up to at most " + std::to_string(limit) + ", got " + std::to_string(total) +
+                     " (this entry is the first past the limit)");
+  };
+  if (!t.tires_path.empty())
+    over(t.tires_path, "the level's tires, with those its script spawns,", t.tires, LevelLimits::max_tires);
+  if (!t.particles_path.empty())
+    over(t.particles_path, "the particles of the level's tires (2 x segments each), with those its script spawns,",
+         t.particles, kMaxParticles);
+  if (!t.props_path.empty())
+    over(t.props_path, "the level's props, with those its script spawns,", t.props, LevelLimits::max_props);
+  if (!t.points_path.empty())
+    over(t.points_path, "the points of the level's props (chain, polygon and path points), with those its script spawns,",
+         t.points, kMaxPoints);
+}
+
+}  // namespace
+
 std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues) {
   const std::size_t issues_before = issues.size();
   JsonReader r(issues);
@@ -237,21 +325,22 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
       level.obstacles.push_back(read_obstacle(r, (*it)[i], join_path("/obstacles", i)));
   }
   if (const auto it = doc.find("props"); it != doc.end() && r.array(*it, "/props", LevelLimits::max_props)) {
+    std::map<std::string, std::size_t> first_with_name;  // a lookup, not a scan: 10 000 props stay quick
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string path = join_path("/props", i);
       level.props.push_back(read_prop(r, (*it)[i], path));
       const std::string& name = level.props.back().name;
-      for (std::size_t k = 0; k + 1 < level.props.size() && !name.empty(); ++k)
-        if (level.props[k].name == name) {
-          r.fail(path + "/name", "must be unique, and /props/" + std::to_string(k) + " is already \"" + name + "\"");
-          break;
-        }
+      if (name.empty()) continue;
+      const auto [first, inserted] = first_with_name.emplace(name, i);
+      if (!inserted)
+        r.fail(path + "/name", "must be unique, and /props/" + std::to_string(first->second) + " is already \"" + name + "\"");
     }
   }
   std::vector<std::string> prop_names;
   for (const PropSpec& p : level.props)
     if (!p.name.empty()) prop_names.push_back(p.name);
   level.script = read_script(r, doc, prop_names);
+  check_totals(r, doc, level);
   if (issues.size() != issues_before) return std::nullopt;
   return level;
 }

@@ -58,6 +58,55 @@ tirectl_test("level 06-tire-rain is won once the gate opens" 0
 tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0
   ARGS run ${LEVELS}/07-sandbox.json --ticks 1800 --steer 1 STDOUT "\"status\": \"won\"")
 
+# Hardening (README "Hardening"): hostile files get one clear line per problem naming the file, the
+# JSON path and what was expected, and exit code 2; never a crash, a stack trace or "terminate
+# called" (expect.cmake fails on those). Every fuzz regression input goes through tirectl too.
+set(HOSTILE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz-regressions)
+tirectl_test("hostile: a nesting bomb is refused with its path" 2 ARGS validate ${HOSTILE}/level/deep-nesting.invalid.json
+  STDERR "deep-nesting.invalid.json: (/0)+: nesting deeper than 64 levels; arrays and objects may nest at most 64 deep\n$")
+tirectl_test("hostile: 1e308 is judged by each key's range" 2 ARGS validate ${HOSTILE}/level/huge-numbers.invalid.json
+  STDERR "huge-numbers.invalid.json: /gravity: must be \\[x, y\\] with each in \\[-1000, 1000\\] m/s\\^2, got \\[1e\\+308,-1e\\+308\\].*/tires/0/segments: must be an integer in \\[6, 256\\], got 1e\\+308")
+tirectl_test("hostile: 1e400 is invalid JSON" 2 ARGS validate ${HOSTILE}/level/number-overflow.invalid.json
+  STDERR "number-overflow.invalid.json: invalid JSON: number overflow parsing '1e400'")
+tirectl_test("hostile: 5 million particles are refused before building" 2 ARGS run ${HOSTILE}/level/too-many-particles.invalid.json --ticks 1
+  STDERR "too-many-particles.invalid.json: /tires/1953: the particles of the level's tires .* may add up to at most 1000000, got 5120000")
+tirectl_test("hostile: a 1 MiB key is refused and cut short" 2 ARGS validate ${HOSTILE}/level/long-unknown-key.invalid.json
+  STDERR "long-unknown-key.invalid.json: /tires/0/k+\\.\\.\\.\\(1048576 bytes\\): a key may be at most 4096 bytes long, got one of 1048576\n$")
+tirectl_test("hostile: a script spawning 1.5 million particles is refused" 2 ARGS validate ${HOSTILE}/level/script-spawn-flood.invalid.json
+  STDERR "script-spawn-flood.invalid.json: /triggers/1/do/953: the particles")
+tirectl_test("hostile: an empty file is invalid JSON" 2 ARGS validate ${HOSTILE}/level/empty.invalid.json
+  STDERR "empty.invalid.json: invalid JSON: parse error at line 1, column 1: .*unexpected end of input")
+tirectl_test("hostile: binary garbage is invalid JSON" 2 ARGS validate ${HOSTILE}/level/binary.invalid.json
+  STDERR "binary.invalid.json: invalid JSON: parse error at line 1, column 1")
+tirectl_test("hostile: a device is not a level" 2 ARGS validate /dev/zero STDERR "^/dev/zero: not a regular file\n$")
+tirectl_test("hostile: a directory is not a level" 2 ARGS validate ${HOSTILE} STDERR "fuzz-regressions: not a regular file")
+tirectl_test("hostile: --set 1e308 is judged like the file" 2 ARGS run ${LEVELS}/01-first-roll.json --set tires.0.segments=1e308
+  STDERR "01-first-roll.json: /tires/0/segments: must be an integer in \\[6, 256\\], got 1e\\+308")
+tirectl_test("hostile: a replay of 10^8 ticks is refused" 2 ARGS replay ${HOSTILE}/replay/ticks-1e8.invalid.json
+  STDERR "ticks-1e8.invalid.json: /ticks: must be an integer in \\[0, 5.184e\\+06\\], got 100000000")
+tirectl_test("hostile: a replay tuning 10^9 substeps is refused" 2 ARGS replay ${HOSTILE}/replay/set-substeps-1e9.invalid.json
+  STDERR "/inputs/0/set/value: must be an integer in \\[1, 256\\], got 1000000000.0.*/inputs/1/set/value: must be a number in \\(0, 1e\\+07\\] kg, got 0")
+tirectl_test("hostile: a replay whose level is a device is refused" 2 ARGS replay ${HOSTILE}/replay/level-is-dev-zero.invalid.json
+  STDERR "level-is-dev-zero.invalid.json: /level: cannot read /dev/zero: not a regular file")
+tirectl_test("hostile: run --input with a hostile replay is refused" 2
+  ARGS run ${LEVELS}/01-first-roll.json --ticks 10 --input ${HOSTILE}/replay/spawn-flood.invalid.json
+  STDERR "spawn-flood.invalid.json: /inputs/10000/spawn: a replay may spawn at most 10000 tires; this is one more")
+file(GLOB fuzz_regression_files ${HOSTILE}/level/*.json ${HOSTILE}/simulate/*.json ${HOSTILE}/replay/*.json)
+foreach(file ${fuzz_regression_files})
+  get_filename_component(name ${file} NAME)
+  get_filename_component(dir ${file} DIRECTORY)
+  get_filename_component(target ${dir} NAME)
+  set(command validate)
+  if(target STREQUAL "replay")
+    set(command replay)
+  endif()
+  if(name MATCHES "\\.invalid\\.json$")
+    tirectl_test("fuzz regression ${target}/${name}" 2 ARGS ${command} ${file} STDERR "${name}: ")
+  else()
+    tirectl_test("fuzz regression ${target}/${name}" 0 ARGS ${command} ${file})
+  endif()
+endforeach()
+
 # tirectl tradeoff: a tiny sweep runs and writes its CSV and plot; bad arguments are usage errors.
 set(TRADEOFF_OUT ${CMAKE_CURRENT_BINARY_DIR}/tradeoff-test)
 tirectl_test("tradeoff runs a tiny sweep" 0

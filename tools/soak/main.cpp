@@ -1,0 +1,251 @@
+// tire-soak: simulates N minutes of game time on a level with seeded random inputs (steering,
+// jumps, tire spawns, mouse grabs and drags), the way a player hammering the sandbox would, and
+// checks that
+//   - every tire stays finite, every tick, and no divergence warning fires;
+//   - resident memory stays flat: after the warm-up minutes (the tire count reaches its cap and
+//     stays there, since the oldest spawned tire is removed for each new one) RSS may not grow by
+//     more than a small bound.
+// Prints one line per simulated minute, then a summary; exit 0 pass, 1 fail, 2 bad arguments.
+//
+//   build/bin/tire-soak [--minutes 60] [--level levels/07-sandbox.json] [--seed 1] [--max-tires 200]
+//                       [--warmup 3] [--rss-slack-mib 16]
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "level.h"
+#include "replay.h"
+#include "world.h"
+
+namespace {
+
+struct Options {
+  double minutes = 60.0;
+  std::string level = TIRE_SOURCE_DIR "/levels/07-sandbox.json";
+  std::uint64_t seed = 1;
+  std::size_t max_tires = 200;
+  int warmup_minutes = 3;
+  double rss_slack_mib = 16.0;
+};
+
+double rss_mib() {
+  std::ifstream statm("/proc/self/statm");
+  long pages_total = 0, pages_resident = 0;
+  statm >> pages_total >> pages_resident;
+  return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+int usage(const char* why) {
+  std::fprintf(stderr,
+               "tire-soak: %s\nusage: tire-soak [--minutes M] [--level FILE] [--seed S] [--max-tires N] "
+               "[--warmup MINUTES] [--rss-slack-mib MIB]\n",
+               why);
+  return 2;
+}
+
+// The region random inputs aim at: the box around the level's obstacles, shrunk by a margin, upper
+// part (spawns fall in from above, as clicks in the sky would).
+struct Region {
+  tire::Vec2 min{-10, 2}, max{10, 10};
+  tire::Vec2 world_min{-1e300, -1e300}, world_max{1e300, 1e300};  // the obstacles' bounding box
+};
+
+Region region_of(const tire::Level& level) {
+  if (level.obstacles.empty()) return {};
+  tire::Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (const tire::Obstacle& o : level.obstacles) {
+    lo = {std::min(lo.x, o.box.min.x), std::min(lo.y, o.box.min.y)};
+    hi = {std::max(hi.x, o.box.max.x), std::max(hi.y, o.box.max.y)};
+  }
+  Region r;
+  r.world_min = lo;
+  r.world_max = hi;
+  r.min = {lo.x + 1.5, lo.y + 0.5 * (hi.y - lo.y)};
+  r.max = {hi.x - 1.5, hi.y - 3.0};
+  if (!(r.min.x < r.max.x) || !(r.min.y < r.max.y)) return {};
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (i + 1 >= argc) return usage(("missing value after " + a).c_str());
+    const char* v = argv[++i];
+    char* end = nullptr;
+    if (a == "--minutes") opt.minutes = std::strtod(v, &end);
+    else if (a == "--level") opt.level = v, end = const_cast<char*>(v) + std::char_traits<char>::length(v);
+    else if (a == "--seed") opt.seed = std::strtoull(v, &end, 10);
+    else if (a == "--max-tires") opt.max_tires = std::strtoull(v, &end, 10);
+    else if (a == "--warmup") opt.warmup_minutes = static_cast<int>(std::strtol(v, &end, 10));
+    else if (a == "--rss-slack-mib") opt.rss_slack_mib = std::strtod(v, &end);
+    else return usage(("unknown option " + a).c_str());
+    if (end == v || *end != '\0') return usage(("bad value for " + a + ": " + v).c_str());
+  }
+  if (!(opt.minutes > 0 && opt.minutes <= 24 * 60) || opt.max_tires < 1 || opt.max_tires > 10000 ||
+      opt.warmup_minutes < 0)
+    return usage("--minutes in (0, 1440], --max-tires in [1, 10000], --warmup >= 0");
+
+  const tire::LevelLoad load = tire::load_level_file(opt.level);
+  if (!load.level) {
+    for (const std::string& e : load.errors) std::fprintf(stderr, "%s\n", e.c_str());
+    return 2;
+  }
+  const tire::Level& level = *load.level;
+  std::unique_ptr<tire::World> world = tire::make_world(level);
+  const Region region = region_of(level);
+  const double dt = level.solver.dt;
+  const auto ticks_per_minute = static_cast<std::uint64_t>(std::llround(60.0 / dt));
+  const auto total_ticks = static_cast<std::uint64_t>(std::llround(opt.minutes * 60.0 / dt));
+
+  std::mt19937_64 rng(opt.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto random_point = [&] {
+    return tire::Vec2{region.min.x + unit(rng) * (region.max.x - region.min.x),
+                      region.min.y + unit(rng) * (region.max.y - region.min.y)};
+  };
+
+  // Tires the soak spawned, oldest first; the level's own tires are never removed.
+  std::deque<tire::TireId> spawned;
+  std::uint64_t spawns = 0, removals = 0, lost = 0, grabs = 0, jumps = 0, steers = 0;
+  std::uint64_t nonfinite = 0, warnings = 0;
+  std::size_t max_tires_seen = 0;
+  double held_steer = 0.0;
+  int grab_ticks_left = 0;
+  tire::Vec2 drag_target;
+
+  const double rss_start = rss_mib();
+  double rss_baseline = -1.0, rss_max_after = 0.0;
+  bool failed = false;
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::printf("tire-soak: %s, %.0f simulated minutes (%llu ticks), seed %llu, at most %zu spawned tires; "
+              "spawn region [%.1f, %.1f]..[%.1f, %.1f]; RSS %.1f MiB\n",
+              opt.level.c_str(), opt.minutes, static_cast<unsigned long long>(total_ticks),
+              static_cast<unsigned long long>(opt.seed), opt.max_tires, region.min.x, region.min.y, region.max.x,
+              region.max.y, rss_start);
+  std::fflush(stdout);
+
+  for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
+    bool jump = false;
+    // Random inputs, through the same apply_input the game and replays use.
+    tire::ReplayInput in;
+    in.tick = tick;
+    bool any = false;
+    if (unit(rng) < 1.0 / 90.0) in.steer = std::round(unit(rng) * 4.0 - 2.0) / 2.0, any = true, ++steers;  // -1..1 in halves
+    if (unit(rng) < 1.0 / 150.0) in.jump = true, any = true, ++jumps;
+    if (unit(rng) < 1.0 / 30.0) in.spawn = random_point(), any = true;
+    if (grab_ticks_left == 0 && unit(rng) < 1.0 / 240.0 && !world->tires().empty()) {
+      // Press on a random tire's tread, then drag it about for up to two seconds.
+      const tire::Tire& t = world->tires()[static_cast<std::size_t>(unit(rng) * static_cast<double>(world->tires().size()))
+                                           % world->tires().size()];
+      in.grab = t.particles.x[0];
+      drag_target = *in.grab;
+      grab_ticks_left = 1 + static_cast<int>(unit(rng) * 120.0);
+      any = true;
+      ++grabs;
+    } else if (grab_ticks_left > 1) {
+      --grab_ticks_left;
+      const tire::Vec2 aim = random_point();
+      drag_target = drag_target + (aim - drag_target) * 0.02;  // a hand moves smoothly
+      in.drag = drag_target;
+      any = true;
+    } else if (grab_ticks_left == 1) {
+      grab_ticks_left = 0;
+      in.release = true;
+      any = true;
+    }
+    if (any) {
+      const std::size_t before = world->tires().size();
+      tire::apply_input(in, *world, level, held_steer, jump);
+      if (world->tires().size() > before) {
+        ++spawns;
+        spawned.push_back(world->tires().back().id);
+        if (spawned.size() > opt.max_tires) {
+          if (world->remove_tire(spawned.front())) ++removals;
+          spawned.pop_front();
+        }
+      }
+    }
+    world->step({held_steer, jump});
+    // Tires thrown over the level's walls fall for ever: like the game, remove spawned ones once
+    // they are well below the level (they count as lost).
+    for (auto it = spawned.begin(); it != spawned.end();) {
+      const tire::Tire* t = world->find_tire(*it);
+      if (t && t->centroid().y < region.world_min.y - 20.0) {
+        world->remove_tire(*it);
+        it = spawned.erase(it);
+        ++lost;
+      } else {
+        ++it;
+      }
+    }
+
+    for (const tire::Tire& t : world->tires())
+      if (!t.is_finite()) {
+        ++nonfinite;
+        if (nonfinite <= 5)
+          std::fprintf(stderr, "tire-soak: tick %llu: tire %u is not finite\n", static_cast<unsigned long long>(tick + 1),
+                       t.id);
+      }
+    for (const std::string& w : world->warnings()) {
+      ++warnings;
+      if (warnings <= 5) std::fprintf(stderr, "tire-soak: warning: %s\n", w.c_str());
+    }
+    world->warnings().clear();
+    max_tires_seen = std::max(max_tires_seen, world->tires().size());
+
+    if ((tick + 1) % ticks_per_minute == 0 || tick + 1 == total_ticks) {
+      const std::uint64_t minute = (tick + 1 + ticks_per_minute - 1) / ticks_per_minute;
+      const double rss = rss_mib();
+      if (minute == static_cast<std::uint64_t>(opt.warmup_minutes) || (opt.warmup_minutes == 0 && rss_baseline < 0))
+        rss_baseline = rss;
+      if (rss_baseline >= 0) rss_max_after = std::max(rss_max_after, rss);
+      double max_speed = 0.0;
+      std::size_t outside = 0;  // tires whose hub is outside the level's bounding box (thrown out, falling)
+      for (const tire::Tire& t : world->tires()) {
+        max_speed = std::max(max_speed, tire::length(t.velocity()));
+        const tire::Vec2 c = t.centroid();
+        outside += c.x < region.world_min.x || c.x > region.world_max.x || c.y < region.world_min.y - 1.0;
+        if (c.y < region.world_min.y - 1.0 && std::getenv("TIRE_SOAK_DEBUG"))
+          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t.id, c.x, c.y, t.velocity().x, t.velocity().y);
+      }
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      std::printf("minute %3llu: tick %8llu  tires %4zu  spawned %6llu  removed %6llu  lost %4llu  grabs %5llu  "
+                  "jumps %5llu  max speed %6.2f m/s  outside %3zu  status %-7s  non-finite %llu  warnings %llu  RSS %7.1f MiB  wall %7.1f s\n",
+                  static_cast<unsigned long long>(minute), static_cast<unsigned long long>(tick + 1),
+                  world->tires().size(), static_cast<unsigned long long>(spawns),
+                  static_cast<unsigned long long>(removals), static_cast<unsigned long long>(lost),
+                  static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside, tire::to_string(world->status()),
+                  static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(warnings), rss, wall);
+      std::fflush(stdout);
+    }
+  }
+
+  const double rss_end = rss_mib();
+  const double growth = rss_baseline >= 0 ? rss_max_after - rss_baseline : 0.0;
+  if (nonfinite > 0 || warnings > 0) failed = true;
+  if (rss_baseline >= 0 && growth > opt.rss_slack_mib) failed = true;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  std::printf("tire-soak: %s: %.1f simulated minutes in %.1f s wall; tires at end %zu (max %zu), spawned %llu, "
+              "removed %llu (and %llu lost over the walls), grabs %llu, jumps %llu, steer changes %llu; non-finite %llu, "
+              "divergence warnings %llu; "
+              "RSS start %.1f MiB, after warm-up %.1f MiB, max after %.1f MiB, end %.1f MiB (growth %.1f MiB, "
+              "allowed %.1f)\n",
+              failed ? "FAIL" : "ok", static_cast<double>(total_ticks) * dt / 60.0, wall, world->tires().size(),
+              max_tires_seen, static_cast<unsigned long long>(spawns), static_cast<unsigned long long>(removals),
+              static_cast<unsigned long long>(lost), static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps),
+              static_cast<unsigned long long>(steers), static_cast<unsigned long long>(nonfinite),
+              static_cast<unsigned long long>(warnings), rss_start, rss_baseline, rss_max_after, rss_end, growth,
+              opt.rss_slack_mib);
+  return failed ? 1 : 0;
+}
