@@ -18,21 +18,6 @@ std::string format_number(double v) {
   return s.str();
 }
 
-// Levenshtein distance, for "did you mean".
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 std::string quoted_list(std::initializer_list<std::string_view> items) {
   std::string out;
@@ -47,6 +32,21 @@ std::string shorten_key(const std::string& key) {
 }
 
 }  // namespace
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
 
 bool Range::contains(double v) const {
   return (min_open ? v > min : v >= min) && (max_open ? v < max : v <= max);
@@ -252,14 +252,6 @@ Vec2 JsonReader::vec2(const json& obj, const std::string& path, const char* key,
 }
 
 // ---- Bounded parsing ---------------------------------------------------------------------------
-// Declared in level_loader.cpp and replay.cpp, its two users.
-
-struct JsonBudget {
-  int max_depth;
-  std::size_t max_values;
-  std::size_t max_string_bytes;
-  const char* document;  // "a level", "a replay": for messages
-};
 
 namespace {
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -59,6 +60,19 @@ class JsonReader {
  private:
   std::vector<JsonIssue>& issues_;
 };
+
+// Levenshtein distance, for "did you mean".
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+// What a document may hold, enforced while it is parsed, before a hostile file can build a large
+// or deep tree: used by the level loader and the replay reader.
+struct JsonBudget {
+  int max_depth;
+  std::size_t max_values;
+  std::size_t max_string_bytes;
+  const char* document;  // "a level", "a replay": for messages
+};
+std::optional<nlohmann::json> parse_json_bounded(const std::string& text, const JsonBudget& budget, std::string& error);
 
 std::string join_path(const std::string& path, std::string_view key);
 std::string join_path(const std::string& path, std::size_t index);

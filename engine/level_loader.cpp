@@ -9,15 +9,6 @@
 
 namespace tire {
 
-// Defined in json_reader.cpp (shared with the replay reader).
-struct JsonBudget {
-  int max_depth;
-  std::size_t max_values;
-  std::size_t max_string_bytes;
-  const char* document;
-};
-std::optional<nlohmann::json> parse_json_bounded(const std::string& text, const JsonBudget& budget, std::string& error);
-
 namespace {
 
 using json = nlohmann::json;

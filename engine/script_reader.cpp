@@ -65,22 +65,6 @@ constexpr std::array<std::string_view, 13> kActionNames{
     "spawn_tire", "spawn_prop", "remove_prop", "set_gravity", "impulse", "set",       "path",
     "message",    "checkpoint", "counter",     "win",         "lose",    "next_level"};
 
-// Levenshtein distance, for "did you mean".
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 // The closest candidate within the same distance json_reader.cpp accepts for unknown keys.
 template <typename Names>
 std::string_view closest(std::string_view name, const Names& candidates) {
