@@ -33,7 +33,14 @@ std::string shorten_key(const std::string& key) {
 
 }  // namespace
 
+// Exact up to kMaxEditDistance; past it, some number above kMaxEditDistance. "Did you mean" only
+// wants small distances, and a hostile 4 KiB name compared with every candidate would otherwise cost
+// millions of steps per name (seconds for a level full of them).
+constexpr std::size_t kMaxEditDistance = 16;
+
 std::size_t edit_distance(std::string_view a, std::string_view b) {
+  const std::size_t gap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+  if (gap > kMaxEditDistance) return kMaxEditDistance + 1;  // the distance is at least the gap
   std::vector<std::size_t> row(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {

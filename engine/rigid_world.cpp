@@ -123,6 +123,7 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
   }
   prop.body->CreateFixture(&fixture);
   if (spec.type != PropType::static_body) ++moving_props_;
+  if (spec.type == PropType::dynamic_body) ++dynamic_props_;
   props_.push_back(std::move(prop));
   return index;
 }
@@ -148,6 +149,7 @@ bool RigidWorld::remove_prop(std::string_view name) {
   p.body = nullptr;
   p.alive = false;
   if (p.spec.type != PropType::static_body) --moving_props_;
+  if (p.spec.type == PropType::dynamic_body) --dynamic_props_;
   return true;
 }
 

@@ -113,6 +113,8 @@ class RigidWorld {
   // Whether Box2D has anything to integrate (a dynamic or kinematic prop): otherwise it is never
   // stepped.
   bool needs_stepping() const { return moving_props_ > 0; }
+  // Whether a tire can push anything (a live dynamic prop): otherwise add_impulse never happens.
+  bool takes_impulses() const { return dynamic_props_ > 0; }
 
   void hash_into(StateHash& h) const;
 
@@ -124,6 +126,7 @@ class RigidWorld {
   std::vector<Obstacle> obstacles_;
   std::vector<Prop> props_;
   std::size_t moving_props_ = 0;
+  std::size_t dynamic_props_ = 0;
 };
 
 }  // namespace tire

@@ -125,6 +125,13 @@ bool Tire::grounded() const {
                      [](std::uint8_t g) { return g != 0; });
 }
 
+std::size_t Tire::touching_particles() const {
+  std::size_t count = 0;
+  for (std::uint32_t i = 0; i < particle_count(); ++i)
+    count += contacts[i].active || on_tire[i] != 0 || (i < n && soft_lambda[i] > 0.0);
+  return count;
+}
+
 bool Tire::is_finite() const {
   for (std::size_t i = 0; i < particles.size(); ++i)
     if (!tire::is_finite(particles.x[i]) || !tire::is_finite(particles.v[i])) return false;

@@ -88,6 +88,9 @@ struct Tire {
   double area() const;               // current area of the outer ring (m²)
   double area_ratio() const { return area() / area_constraint.rest_area; }
   bool grounded() const;             // an outer particle touched ground in the last substep
+  // Particles in contact in the last substep: with a surface, or with another tire (pushed by it or
+  // carrying it).
+  std::size_t touching_particles() const;
   bool is_finite() const;            // no NaN/Inf in positions or velocities
   double max_abs_coordinate() const;
 

@@ -186,29 +186,50 @@ void World::step(const TickInput& input) {
   const auto hand_over_impulses = [&] {
     for (Tire& t : tires_) apply_prop_impulses(t, rigid_);
   };
-  for (int s = 0; s < config_.substeps; ++s) {
-    ctx.time = s * h;
+  const auto solve_tire_pairs = [&] {
+    for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
+      const TirePair* first = colored_pairs_.data() + color_begin_[c];
+      for_tires(color_begin_[c + 1] - color_begin_[c], [&](std::size_t b, std::size_t e) {
+        for (std::size_t k = b; k < e; ++k)
+          solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
+      });
+    }
+  };
+  // Each tire's velocity pass of one substep runs in the same sweep over the tires as its prediction
+  // and first iteration of the next, so its data is read from memory once per substep, not three
+  // times. That is exact when no tire can push a prop: the impulses handed over between the two
+  // (which a free prop feels at once) are then always none. With dynamic props, the velocity pass
+  // and the hand-over keep their own place.
+  const bool fuse_substeps = !rigid_.takes_impulses();
+  const auto end_substeps = [&](const SubstepContext& previous) {
     for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) begin_substep(tires_[i], ctx);
+      for (std::size_t i = b; i < e; ++i) end_substep(tires_[i], previous);
     });
-    for (int it = 0; it < config_.iterations; ++it) {
+    hand_over_impulses();
+  };
+  for (int s = 0; s < config_.substeps; ++s) {
+    const SubstepContext previous = ctx;
+    ctx.time = s * h;
+    const bool end_previous_here = s > 0 && fuse_substeps;
+    if (s > 0 && !fuse_substeps) end_substeps(previous);
+    for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        if (end_previous_here) end_substep(tires_[i], previous);
+        begin_substep(tires_[i], ctx);
+        solve_iteration(tires_[i], ctx, config_.iterations == 1);
+      }
+    });
+    hand_over_impulses();
+    solve_tire_pairs();
+    for (int it = 1; it < config_.iterations; ++it) {
       for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) solve_iteration(tires_[i], ctx, it + 1 == config_.iterations);
       });
       hand_over_impulses();
-      for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
-        const TirePair* first = colored_pairs_.data() + color_begin_[c];
-        for_tires(color_begin_[c + 1] - color_begin_[c], [&](std::size_t b, std::size_t e) {
-          for (std::size_t k = b; k < e; ++k)
-            solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
-        });
-      }
+      solve_tire_pairs();
     }
-    for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) end_substep(tires_[i], ctx);
-    });
-    hand_over_impulses();
   }
+  end_substeps(ctx);
   rigid_.end_tick(config_.dt);
   for (Tire& t : tires_) guard_divergence(t);
   ++tick_;
@@ -223,6 +244,8 @@ namespace {
 // Below this many tires a tick is too short to be worth waking threads for.
 constexpr std::size_t kParallelMinTires = 32;
 }  // namespace
+
+unsigned World::threads_in_use() const { return tires_.size() >= kParallelMinTires ? threads_ : 1u; }
 
 void World::set_threads(unsigned threads) {
   threads_ = std::max(1u, threads);

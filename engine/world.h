@@ -82,8 +82,11 @@ class World {
   // any count: tires are solved independently, shared effects are applied in a fixed order.
   void set_threads(unsigned threads);
   unsigned threads() const { return threads_; }
+  // Threads a step of the current scene actually uses: one below kParallelMinTires tires.
+  unsigned threads_in_use() const;
 
   const std::vector<Tire>& tires() const { return tires_; }
+  std::size_t tire_pair_count() const { return tire_pairs_.size(); }  // broad-phase pairs, last tick
   Tire* find_tire(TireId id);
   const Tire* player() const;
   const RigidWorld& rigid() const { return rigid_; }

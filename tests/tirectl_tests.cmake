@@ -33,8 +33,11 @@ tirectl_test("run applies --set and validates it" 2 ARGS run ${LEVELS}/01-first-
   STDERR "/solver/substeps: must be an integer in \\[1, 256\\], got 0")
 tirectl_test("run refuses a steer outside [-1, 1]" 2 ARGS run ${LEVELS}/01-first-roll.json --steer 3)
 tirectl_test("unknown subcommand is a usage error" 2 ARGS fly)
-tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --frames 50 --repeats 2
-  STDOUT "^scene,tires,particles.*\nprototype,1,56,28,1,22,")
+tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --steps 50
+  STDOUT "^scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,p99_ms,[^\n]*\nprototype,1,56,[1-9][0-9]*,0,1,28,1,22,50,")
+tirectl_test("bench counts the contacts and tire pairs of a pile" 0 ARGS bench --scene pile-100 --threads 2 --steps 3 --warmup 10
+  STDOUT "\npile-100,100,5600,[1-9][0-9]*,[1-9][0-9]*,2,28,8,1,3,")
+tirectl_test("bench refuses an unknown scene" 2 ARGS bench --scene pile-7 STDERR "unknown scene \"pile-7\"")
 
 # Every shipped level validates, and can be completed: tirectl plays it with fixed inputs until the
 # script says won. (Levels that need steering choreography are completed by replays instead.)

@@ -10,6 +10,9 @@
 //   build/bin/tire-soak [--minutes 60] [--level levels/07-sandbox.json] [--seed 1] [--max-tires 200]
 //                       [--warmup 3] [--rss-slack-mib 16]
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -41,6 +44,17 @@ double rss_mib() {
   long pages_total = 0, pages_resident = 0;
   statm >> pages_total >> pages_resident;
   return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+// Bytes the program has allocated and not freed (glibc's count), in MiB: unlike RSS, it does not
+// move with the allocator's fragmentation. -1 where unknown.
+double heap_mib() {
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
+#else
+  return -1.0;
+#endif
 }
 
 int usage(const char* why) {
@@ -124,8 +138,8 @@ int main(int argc, char** argv) {
   int grab_ticks_left = 0;
   tire::Vec2 drag_target;
 
-  const double rss_start = rss_mib();
-  double rss_baseline = -1.0, rss_max_after = 0.0;
+  const double rss_start = rss_mib(), heap_start = heap_mib();
+  double rss_baseline = -1.0, rss_max_after = 0.0, heap_baseline = -1.0, heap_max_after = 0.0;
   bool failed = false;
   const auto wall_start = std::chrono::steady_clock::now();
   std::printf("tire-soak: %s, %.0f simulated minutes (%llu ticks), seed %llu, at most %zu spawned tires; "
@@ -206,10 +220,10 @@ int main(int argc, char** argv) {
 
     if ((tick + 1) % ticks_per_minute == 0 || tick + 1 == total_ticks) {
       const std::uint64_t minute = (tick + 1 + ticks_per_minute - 1) / ticks_per_minute;
-      const double rss = rss_mib();
+      const double rss = rss_mib(), heap = heap_mib();
       if (minute == static_cast<std::uint64_t>(opt.warmup_minutes) || (opt.warmup_minutes == 0 && rss_baseline < 0))
-        rss_baseline = rss;
-      if (rss_baseline >= 0) rss_max_after = std::max(rss_max_after, rss);
+        rss_baseline = rss, heap_baseline = heap;
+      if (rss_baseline >= 0) rss_max_after = std::max(rss_max_after, rss), heap_max_after = std::max(heap_max_after, heap);
       double max_speed = 0.0;
       std::size_t outside = 0;  // tires whose hub is outside the level's bounding box (thrown out, falling)
       for (const tire::Tire& t : world->tires()) {
@@ -221,31 +235,33 @@ int main(int argc, char** argv) {
       }
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       std::printf("minute %3llu: tick %8llu  tires %4zu  spawned %6llu  removed %6llu  lost %4llu  grabs %5llu  "
-                  "jumps %5llu  max speed %6.2f m/s  outside %3zu  status %-7s  non-finite %llu  warnings %llu  RSS %7.1f MiB  wall %7.1f s\n",
+                  "jumps %5llu  max speed %6.2f m/s  outside %3zu  status %-7s  non-finite %llu  warnings %llu  RSS %6.1f MiB  "
+                  "heap %6.1f MiB  wall %7.1f s\n",
                   static_cast<unsigned long long>(minute), static_cast<unsigned long long>(tick + 1),
                   world->tires().size(), static_cast<unsigned long long>(spawns),
                   static_cast<unsigned long long>(removals), static_cast<unsigned long long>(lost),
                   static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside, tire::to_string(world->status()),
-                  static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(warnings), rss, wall);
+                  static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(warnings), rss, heap, wall);
       std::fflush(stdout);
     }
   }
 
   const double rss_end = rss_mib();
   const double growth = rss_baseline >= 0 ? rss_max_after - rss_baseline : 0.0;
+  const double heap_growth = heap_baseline >= 0 ? heap_max_after - heap_baseline : 0.0;
   if (nonfinite > 0 || warnings > 0) failed = true;
-  if (rss_baseline >= 0 && growth > opt.rss_slack_mib) failed = true;
+  if (rss_baseline >= 0 && (growth > opt.rss_slack_mib || heap_growth > opt.rss_slack_mib)) failed = true;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   std::printf("tire-soak: %s: %.1f simulated minutes in %.1f s wall; tires at end %zu (max %zu), spawned %llu, "
               "removed %llu (and %llu lost over the walls), grabs %llu, jumps %llu, steer changes %llu; non-finite %llu, "
               "divergence warnings %llu; "
               "RSS start %.1f MiB, after warm-up %.1f MiB, max after %.1f MiB, end %.1f MiB (growth %.1f MiB, "
-              "allowed %.1f)\n",
+              "allowed %.1f); heap in use start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB (growth %.1f MiB)\n",
               failed ? "FAIL" : "ok", static_cast<double>(total_ticks) * dt / 60.0, wall, world->tires().size(),
               max_tires_seen, static_cast<unsigned long long>(spawns), static_cast<unsigned long long>(removals),
               static_cast<unsigned long long>(lost), static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps),
               static_cast<unsigned long long>(steers), static_cast<unsigned long long>(nonfinite),
               static_cast<unsigned long long>(warnings), rss_start, rss_baseline, rss_max_after, rss_end, growth,
-              opt.rss_slack_mib);
+              opt.rss_slack_mib, heap_start, heap_baseline, heap_mib(), heap_growth);
   return failed ? 1 : 0;
 }

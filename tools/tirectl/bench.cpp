@@ -7,6 +7,8 @@
 #include <memory>
 #include <string_view>
 
+#include <sys/resource.h>
+
 #include "commands.h"
 #include "level.h"
 #include "tire_solver.h"
@@ -24,6 +26,12 @@ class Steppable {
   virtual const tire::Tire& first_tire() const = 0;
   virtual std::size_t tire_count() const = 0;
   virtual const tire::SolverConfig& config() const = 0;
+  virtual void set_threads(unsigned threads) = 0;
+  virtual unsigned threads() const = 0;
+  // Particles in contact after the last step (with a surface or another tire), and candidate
+  // tire pairs from the broad phase.
+  virtual std::size_t contacts() const = 0;
+  virtual std::size_t tire_pairs() const = 0;
 };
 
 class WorldScene final : public Steppable {
@@ -33,6 +41,14 @@ class WorldScene final : public Steppable {
   const tire::Tire& first_tire() const override { return world_->tires().front(); }
   std::size_t tire_count() const override { return world_->tires().size(); }
   const tire::SolverConfig& config() const override { return world_->config(); }
+  void set_threads(unsigned threads) override { world_->set_threads(threads); }
+  unsigned threads() const override { return world_->threads_in_use(); }
+  std::size_t contacts() const override {
+    std::size_t count = 0;
+    for (const tire::Tire& t : world_->tires()) count += t.touching_particles();
+    return count;
+  }
+  std::size_t tire_pairs() const override { return world_->tire_pair_count(); }
 
  private:
   std::unique_ptr<tire::World> world_;
@@ -56,6 +72,10 @@ class BareTireScene final : public Steppable {
   const tire::Tire& first_tire() const override { return tire_; }
   std::size_t tire_count() const override { return 1; }
   const tire::SolverConfig& config() const override { return config_; }
+  void set_threads(unsigned) override {}
+  unsigned threads() const override { return 1; }
+  std::size_t contacts() const override { return tire_.touching_particles(); }
+  std::size_t tire_pairs() const override { return 0; }
 
  private:
   static tire::TireSpec spec() {
@@ -156,10 +176,18 @@ const Scene kScenes[] = {
 // The prototype's figure for its own scene, per 60 Hz frame (REFERENCE.md).
 constexpr double kPrototypeUsPerFrame = 88.0;
 
-double percentile(std::vector<double> v, double q) {
+// The q-quantile of `v` (nearest rank), q in [0, 1].
+double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
-  const auto i = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
-  return v[i];
+  const auto i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size()))) ;
+  return v[std::min(v.size() - 1, i == 0 ? 0 : i - 1)];
+}
+
+// The process's peak resident memory so far (MiB).
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 }  // namespace
@@ -173,31 +201,43 @@ int bench(const BenchOptions& options) {
       return 2;
     }
   }
-  std::cout << "scene,tires,particles,segments,substeps,iterations,frames,repeats,median_us_per_frame,"
-               "p99_us_per_frame,speedup_vs_prototype\n";
+  std::cout << "scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,"
+               "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype\n";
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> step_ms;
   for (const Scene& scene : kScenes) {
     if (!options.scenes.empty() &&
         std::find(options.scenes.begin(), options.scenes.end(), scene.name) == options.scenes.end())
       continue;
     auto world = scene.build();
-    for (int i = 0; i < 120; ++i) world->step(scene.input);  // settle and warm the caches
-    std::vector<double> per_frame_us;
-    for (int r = 0; r < options.repeats; ++r) {
-      const auto start = std::chrono::steady_clock::now();
-      for (int f = 0; f < options.frames; ++f) world->step(scene.input);
-      const std::chrono::duration<double, std::micro> elapsed = std::chrono::steady_clock::now() - start;
-      per_frame_us.push_back(elapsed.count() / options.frames);
-      if (scene.input.steer != 0.0) world = scene.build();  // keep the rolling tire on its ground
+    if (options.threads > 0) world->set_threads(static_cast<unsigned>(options.threads));
+    for (int i = 0; i < options.warmup; ++i) world->step(scene.input);  // settle and warm the caches
+    // Each step timed on its own: the median is the typical step, the p99 the hitches a player sees.
+    // Either exactly --steps steps, or at least 30 and until --seconds have passed.
+    step_ms.clear();
+    step_ms.reserve(options.steps > 0 ? static_cast<std::size_t>(options.steps) : 4096);
+    const auto scene_start = Clock::now();
+    for (int s = 0;; ++s) {
+      if (options.steps > 0 ? s >= options.steps
+                            : s >= 30 && std::chrono::duration<double>(Clock::now() - scene_start).count() >= options.seconds)
+        break;
+      const auto start = Clock::now();
+      world->step(scene.input);
+      step_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     }
     const tire::Tire& t = world->first_tire();
-    const std::size_t particles = world->tire_count() * t.particle_count();
-    const double median = percentile(per_frame_us, 0.5);
-    std::cout << scene.name << "," << world->tire_count() << "," << particles << "," << t.segments() << ","
-              << world->config().substeps << "," << world->config().iterations << "," << options.frames << ","
-              << options.repeats << "," << median << "," << percentile(per_frame_us, 0.99) << ",";
+    const std::size_t tires = world->tire_count();
+    const double median = quantile(step_ms, 0.5);
+    double mean = 0.0;
+    for (const double ms : step_ms) mean += ms / static_cast<double>(step_ms.size());
+    std::cout << scene.name << "," << tires << "," << tires * t.particle_count() << "," << world->contacts() << ","
+              << world->tire_pairs() << "," << world->threads() << "," << t.segments() << ","
+              << world->config().substeps << "," << world->config().iterations << "," << step_ms.size() << ","
+              << median << "," << quantile(step_ms, 0.99) << "," << mean << ","
+              << median * 1000.0 / static_cast<double>(tires) << "," << peak_rss_mib() << ",";
     // The prototype's figure is for its own scene only.
-    if (std::string_view(scene.name).starts_with("prototype")) std::cout << kPrototypeUsPerFrame / median;
-    std::cout << "\n";
+    if (std::string_view(scene.name).starts_with("prototype")) std::cout << kPrototypeUsPerFrame / (median * 1000.0);
+    std::cout << std::endl;  // a row at a time: long runs show progress
   }
   return 0;
 }

@@ -30,8 +30,10 @@ int validate(const std::vector<std::string>& files);
 
 struct BenchOptions {
   std::vector<std::string> scenes;  // empty: all
-  int frames = 2000;
-  int repeats = 15;
+  int threads = 0;        // 0: the world's default (the hardware's)
+  int steps = 0;          // timed steps per scene; 0: at least 30, for `seconds`
+  double seconds = 2.0;   // timing budget per scene when `steps` is 0
+  int warmup = 120;       // untimed steps first: the pile settles, caches warm
 };
 int bench(const BenchOptions& options);
 

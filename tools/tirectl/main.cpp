@@ -38,8 +38,13 @@ int main(int argc, char** argv) {
   tirectl::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Time the performance scenes; CSV on stdout");
   bench_cmd->add_option("--scene", bench.scenes, "Only these scenes (repeatable; default all)");
-  bench_cmd->add_option("--frames", bench.frames, "Frames per timed batch")->check(CLI::Range(1, 1000000));
-  bench_cmd->add_option("--repeats", bench.repeats, "Timed batches per scene")->check(CLI::Range(1, 1000));
+  bench_cmd->add_option("--threads", bench.threads, "Threads to step with (default: the hardware's)")
+      ->check(CLI::Range(1, 256));
+  bench_cmd->add_option("--steps", bench.steps, "Timed steps per scene (default: as many as --seconds allow, at least 30)")
+      ->check(CLI::Range(1, 10000000));
+  bench_cmd->add_option("--seconds", bench.seconds, "Timing budget per scene when --steps is not given")
+      ->check(CLI::Range(0.0, 3600.0));
+  bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")->check(CLI::Range(0, 1000000));
 
   tirectl::TradeoffOptions tradeoff;
   CLI::App* tradeoff_cmd = tirectl::add_tradeoff_command(app, tradeoff);
