@@ -14,24 +14,35 @@ DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> con
     : constraints_(std::move(constraints)) {
   // Greedy, in order: a constraint joins the open batch unless it shares a particle with it.
   Batch open{};
+  Lanes open_compliance{};
+  std::uint32_t count = 0;
   auto close = [&] {
-    if (open.count == 0) return;
-    for (std::uint32_t l = open.count; l < kLanes; ++l) open.a[l] = open.b[l] = open.a[0];
+    if (count == 0) return;
+    // A batch that is not full repeats its first lane: the copy computes and writes exactly what
+    // lane 0 does, so the vector path needs no lane count (the scalar path skips copies).
+    for (std::uint32_t l = count; l < kLanes; ++l) {
+      open.a[l] = open.a[0];
+      open.b[l] = open.b[0];
+      open.rest_length[l] = open.rest_length[0];
+      open_compliance[l] = open_compliance[0];
+    }
     batches_.push_back(open);
+    compliance_.push_back(open_compliance);
     open = Batch{};
+    count = 0;
   };
   for (const DistanceConstraint& c : constraints_) {
     bool shares = false;
-    for (std::uint32_t l = 0; l < open.count; ++l)
+    for (std::uint32_t l = 0; l < count; ++l)
       shares |= open.a[l] == c.a || open.a[l] == c.b || open.b[l] == c.a || open.b[l] == c.b;
     if (shares) close();
-    const std::uint32_t l = open.count++;
+    const std::uint32_t l = count++;
     slot_.push_back(static_cast<std::uint32_t>(batches_.size() * kLanes + l));
     open.a[l] = c.a;
     open.b[l] = c.b;
     open.rest_length[l] = c.rest_length;
-    open.compliance[l] = c.compliance;
-    if (open.count == kLanes) close();
+    open_compliance[l] = c.compliance;
+    if (count == kLanes) close();
   }
   close();
 }
@@ -39,26 +50,34 @@ DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> con
 void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count, double compliance) {
   for (std::size_t k = first; k < first + count && k < constraints_.size(); ++k) {
     constraints_[k].compliance = compliance;
-    batches_[slot_[k] / kLanes].compliance[slot_[k] % kLanes] = compliance;
+    Lanes& lanes = compliance_[slot_[k] / kLanes];
+    lanes[slot_[k] % kLanes] = compliance;
+    // Keep the copies of a short batch's first lane in step with it.
+    if (slot_[k] % kLanes == 0) {
+      const Batch& batch = batches_[slot_[k] / kLanes];
+      for (std::uint32_t l = 1; l < kLanes; ++l)
+        if (batch.a[l] == batch.a[0]) lanes[l] = compliance;
+    }
   }
 }
 
 void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
   const double inv_h2 = 1.0 / (h * h);
-  for (Batch& batch : batches_) {
+  for (std::size_t k = 0; k < batches_.size(); ++k) {
+    Batch& batch = batches_[k];
+    const Lanes& compliance = compliance_[k];
     for (std::uint32_t l = 0; l < kLanes; ++l) {
-      const bool used = l < batch.count;
-      batch.w_a[l] = used ? w[batch.a[l]] : 0.0;
-      batch.w_b[l] = used ? w[batch.b[l]] : 0.0;
-      batch.alpha_tilde[l] = used ? batch.compliance[l] * inv_h2 : 0.0;  // α̃ = α/h²  (XPBD eq. 4)
+      batch.w_a[l] = w[batch.a[l]];
+      batch.w_b[l] = w[batch.b[l]];
+      batch.alpha_tilde[l] = compliance[l] * inv_h2;  // α̃ = α/h²  (XPBD eq. 4)
       // ∇C M⁻¹ ∇Cᵀ + α̃ with |∇C| = 1 at each end
       const double denominator = batch.w_a[l] + batch.w_b[l] + batch.alpha_tilde[l];
       batch.inv_denominator[l] = denominator > 0.0 ? 1.0 / denominator : 0.0;
       // The dashpot's impulse per unit rate: rate·removed/W with removed = chW/(1 + chW), c = τ/α,
       // simplifies to τh/(α + τhW), which also covers α = 0 (all of the rate removed).
       const double tau_h = tau * h, w_sum = batch.w_a[l] + batch.w_b[l];
-      const double damping_denominator = batch.compliance[l] + tau_h * w_sum;
-      batch.damping[l] = used && tau_h > 0.0 && w_sum > 0.0 ? tau_h / damping_denominator : 0.0;
+      const double damping_denominator = compliance[l] + tau_h * w_sum;
+      batch.damping[l] = tau_h > 0.0 && w_sum > 0.0 ? tau_h / damping_denominator : 0.0;
     }
   }
 }
@@ -68,12 +87,7 @@ void DistanceConstraintSet::reset_lambda() {
 }
 
 double DistanceConstraintSet::lambda(std::size_t k) const {
-  // Batches keep the constraints' order, so walk them to find constraint k.
-  for (const Batch& batch : batches_) {
-    if (k < batch.count) return batch.lambda[k];
-    k -= batch.count;
-  }
-  return 0.0;
+  return k < slot_.size() ? batches_[slot_[k] / kLanes].lambda[slot_[k] % kLanes] : 0.0;
 }
 
 namespace {
@@ -84,9 +98,15 @@ namespace {
 //   Δλ = (−C − α̃λ) / (w_a + w_b + α̃)   (XPBD eq. 18),
 //   x_a −= w_a Δλ n,  x_b += w_b Δλ n  (XPBD eq. 17).
 // A zero length (coincident particles) gets n = 0: λ still accumulates, nothing moves.
+// Lane l > 0 is a copy of lane 0 (a batch that is not full): the scalar path does that work once.
+template <typename B>
+bool is_copy(const B& batch, std::uint32_t l) {
+  return l > 0 && batch.a[l] == batch.a[0];
+}
+
 template <typename B>
 void solve_scalar(B& batch, Vec2* x) {
-  for (std::uint32_t l = 0; l < batch.count; ++l) {
+  for (std::uint32_t l = 0; l < B::kLanes && !is_copy(batch, l); ++l) {
     const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
     const double dx = xb.x - xa.x, dy = xb.y - xa.y;
     const double len = std::sqrt(dx * dx + dy * dy);
@@ -105,7 +125,7 @@ void solve_scalar(B& batch, Vec2* x) {
 // n as in solve_scalar, dC/dt = n·(v_b − v_a), p = dC/dt · damping, v_a += w_a p n, v_b −= w_b p n.
 template <typename B>
 void damp_scalar(const B& batch, const Vec2* x, Vec2* v) {
-  for (std::uint32_t l = 0; l < batch.count; ++l) {
+  for (std::uint32_t l = 0; l < B::kLanes && !is_copy(batch, l); ++l) {
     const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
     const Vec2 va = v[batch.a[l]], vb = v[batch.b[l]];
     const double dx = xb.x - xa.x, dy = xb.y - xa.y;
@@ -132,15 +152,14 @@ __attribute__((target("avx"))) inline void gather(const Vec2* x, const std::uint
   py = _mm256_unpackhi_pd(t02, t13);
 }
 
-// Writes lane l's (px, py) to x[idx[l]] for the lanes in use.
-__attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t* idx, std::uint32_t count,
-                                                    __m256d px, __m256d py) {
+// Writes lane l's (px, py) to x[idx[l]]. A copy of lane 0 writes what lane 0 wrote.
+__attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t* idx, __m256d px, __m256d py) {
   const __m256d t02 = _mm256_unpacklo_pd(px, py);  // x0 y0 x2 y2
   const __m256d t13 = _mm256_unpackhi_pd(px, py);  // x1 y1 x3 y3
   _mm_storeu_pd(&x[idx[0]].x, _mm256_castpd256_pd128(t02));
-  if (count > 1) _mm_storeu_pd(&x[idx[1]].x, _mm256_castpd256_pd128(t13));
-  if (count > 2) _mm_storeu_pd(&x[idx[2]].x, _mm256_extractf128_pd(t02, 1));
-  if (count > 3) _mm_storeu_pd(&x[idx[3]].x, _mm256_extractf128_pd(t13, 1));
+  _mm_storeu_pd(&x[idx[1]].x, _mm256_castpd256_pd128(t13));
+  _mm_storeu_pd(&x[idx[2]].x, _mm256_extractf128_pd(t02, 1));
+  _mm_storeu_pd(&x[idx[3]].x, _mm256_extractf128_pd(t13, 1));
 }
 
 template <typename B>
@@ -163,8 +182,8 @@ __attribute__((target("avx"))) void solve_avx(B* batches, std::size_t n, Vec2* x
     const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
     const __m256d sa = _mm256_mul_pd(_mm256_load_pd(batch.w_a), delta_lambda);
     const __m256d sb = _mm256_mul_pd(_mm256_load_pd(batch.w_b), delta_lambda);
-    scatter(x, batch.a, batch.count, _mm256_sub_pd(ax, _mm256_mul_pd(nx, sa)), _mm256_sub_pd(ay, _mm256_mul_pd(ny, sa)));
-    scatter(x, batch.b, batch.count, _mm256_add_pd(bx, _mm256_mul_pd(nx, sb)), _mm256_add_pd(by, _mm256_mul_pd(ny, sb)));
+    scatter(x, batch.a, _mm256_sub_pd(ax, _mm256_mul_pd(nx, sa)), _mm256_sub_pd(ay, _mm256_mul_pd(ny, sa)));
+    scatter(x, batch.b, _mm256_add_pd(bx, _mm256_mul_pd(nx, sb)), _mm256_add_pd(by, _mm256_mul_pd(ny, sb)));
   }
 }
 
@@ -186,8 +205,8 @@ __attribute__((target("avx"))) void damp_avx(const B* batches, std::size_t n, co
     const __m256d impulse = _mm256_mul_pd(rate, _mm256_load_pd(batch.damping));
     const __m256d sa = _mm256_mul_pd(_mm256_load_pd(batch.w_a), impulse);
     const __m256d sb = _mm256_mul_pd(_mm256_load_pd(batch.w_b), impulse);
-    scatter(v, batch.a, batch.count, _mm256_add_pd(vax, _mm256_mul_pd(nx, sa)), _mm256_add_pd(vay, _mm256_mul_pd(ny, sa)));
-    scatter(v, batch.b, batch.count, _mm256_sub_pd(vbx, _mm256_mul_pd(nx, sb)), _mm256_sub_pd(vby, _mm256_mul_pd(ny, sb)));
+    scatter(v, batch.a, _mm256_add_pd(vax, _mm256_mul_pd(nx, sa)), _mm256_add_pd(vay, _mm256_mul_pd(ny, sa)));
+    scatter(v, batch.b, _mm256_sub_pd(vbx, _mm256_mul_pd(nx, sb)), _mm256_sub_pd(vby, _mm256_mul_pd(ny, sb)));
   }
 }
 

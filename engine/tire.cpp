@@ -24,6 +24,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
       segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
   particles.resize(2 * n);
   contacts.resize(2 * n);
+  contact_mask.resize((2 * n + 63) / 64);
   grounded_flags.resize(2 * n);
   candidates.reserve(16);
   prop_candidates.reserve(16);
@@ -71,6 +72,7 @@ void Tire::reset() {
   particles.x_prev = particles.x;
   std::fill(particles.w.begin(), particles.w.end(), w);
   std::fill(contacts.begin(), contacts.end(), ContactRecord{});
+  std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
   distance.reset_lambda();
   area_lambda = 0.0;
@@ -123,6 +125,28 @@ double Tire::area() const { return polygon_area(particles.x.data(), n); }
 bool Tire::grounded() const {
   return std::any_of(grounded_flags.begin(), grounded_flags.begin() + n,
                      [](std::uint8_t g) { return g != 0; });
+}
+
+namespace {
+template <typename T>
+void prefetch_range(const std::vector<T>& v) {
+  const char* p = reinterpret_cast<const char*>(v.data());
+  const char* end = reinterpret_cast<const char*>(v.data() + v.size());
+  for (; p < end; p += 64) __builtin_prefetch(p, 1);
+}
+}  // namespace
+
+void Tire::clear_contacts() {
+  for_each_contact([this](std::uint32_t i) { contacts[i] = ContactRecord{}; });
+  std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
+}
+
+void Tire::prefetch() const {
+  distance.prefetch();
+  prefetch_range(particles.x);
+  prefetch_range(particles.x_prev);
+  prefetch_range(particles.v);
+  prefetch_range(particles.w);
 }
 
 std::size_t Tire::touching_particles() const {

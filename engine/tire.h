@@ -5,6 +5,7 @@
 // Particle layout: outer ring at [0, N), inner ring at [N, 2N), both counter-clockwise.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -93,6 +94,24 @@ struct Tire {
   std::size_t touching_particles() const;
   bool is_finite() const;            // no NaN/Inf in positions or velocities
   double max_abs_coordinate() const;
+  // The contact record of particle i, marked as written this substep.
+  ContactRecord& touch_contact(std::uint32_t i) {
+    contact_mask[i >> 6] |= std::uint64_t{1} << (i & 63);
+    return contacts[i];
+  }
+  // f(i) for each particle i whose record was written this substep, ascending.
+  template <typename F>
+  void for_each_contact(F&& f) const {
+    for (std::size_t word = 0; word < contact_mask.size(); ++word)
+      for (std::uint64_t bits = contact_mask[word]; bits != 0; bits &= bits - 1)
+        f(static_cast<std::uint32_t>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
+  }
+  // Puts the written records back to default and clears the mask.
+  void clear_contacts();
+
+  // Asks the CPU to start loading what a substep reads (a hint; changes nothing): the world calls
+  // it for the next tire while it solves this one.
+  void prefetch() const;
 
   TireId id;
   TireSpec spec;
@@ -109,7 +128,10 @@ struct Tire {
   AreaConstraint rim_area_constraint;
   double rim_area_lambda = 0.0;
 
-  std::vector<ContactRecord> contacts;        // per particle, this substep
+  std::vector<ContactRecord> contacts;        // per particle, this substep (default where untouched)
+  // Bit i set: contacts[i] was written this substep. Only those are visited and cleared, so a
+  // substep costs nothing for the particles nowhere near a surface.
+  std::vector<std::uint64_t> contact_mask;
   std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
   std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
   std::vector<std::uint32_t> prop_candidates; // props near the tire this tick (broad phase)

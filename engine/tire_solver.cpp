@@ -130,7 +130,7 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
     normal_share = w / (w + mob_n * (prop.inverse_mass + rn * rn * prop.inverse_inertia));
     tangent_share = w / (w + mob_t * (prop.inverse_mass + rt * rt * prop.inverse_inertia));
   }
-  ContactRecord& rec = t.contacts[pair.particle];
+  ContactRecord& rec = t.touch_contact(pair.particle);
   const Vec2 before = x;
   resolve_contact(x, x_prev, c, pair.mu_static, pair.mu_kinetic, rec, surface_velocity * ctx.h, normal_share,
                   tangent_share);
@@ -147,7 +147,7 @@ void solve_contacts(Tire& t, const SubstepContext& ctx) {
     if (pair.is_prop) {
       resolve_prop_contact(t, pair, ctx);
     } else if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], obstacles[pair.index].box)) {
-      ContactRecord& rec = t.contacts[i];
+      ContactRecord& rec = t.touch_contact(i);
       resolve_contact(p.x[i], p.x_prev[i], *c, pair.mu_static, pair.mu_kinetic, rec);
       rec.surface_velocity = {};
       rec.prop = -1;
@@ -172,8 +172,11 @@ void damp_deviation(Tire& t, const RigidMotion& m, double damping, double h) {
 // ground's friction then passes it on to the tire's motion, as it does for a real tire.
 void apply_rolling_resistance(Tire& t, RigidMotion& m, double h) {
   if (t.spec.rolling_resistance <= 0.0 || m.inertia <= 0.0) return;
+  // Σ over the tread, in particle order; the records not written this substep hold λ_n = 0.
   double lambda_sum = 0.0;
-  for (std::uint32_t i = 0; i < t.n; ++i) lambda_sum += t.contacts[i].lambda_n;
+  t.for_each_contact([&](std::uint32_t i) {
+    if (i < t.n) lambda_sum += t.contacts[i].lambda_n;
+  });
   if (lambda_sum <= 0.0) return;
   const double normal_force = t.particle_mass() * lambda_sum / (h * h);
   const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / m.inertia;
@@ -194,13 +197,14 @@ void cap_horizontal_speed(Tire& t, RigidMotion& m) {
 void update_velocities(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   derive_velocities(p, ctx.h);
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  std::copy(t.on_tire.begin(), t.on_tire.end(), t.grounded_flags.begin());
+  t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& c = t.contacts[i];
     const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
     if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
       t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
-    t.grounded_flags[i] = (c.active && c.normal.y >= ctx.config->ground_normal_y) || t.on_tire[i];
-  }
+    if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
+  });
   if (const double tau = t.spec.material_damping; tau > 0.0) {
     t.distance.damp(p.x.data(), p.v.data());
     damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h, t.scratch.data());
@@ -231,7 +235,7 @@ void begin_substep(Tire& t, const SubstepContext& ctx) {
   t.distance.reset_lambda();
   t.area_lambda = 0.0;
   t.rim_area_lambda = 0.0;
-  std::fill(t.contacts.begin(), t.contacts.end(), ContactRecord{});
+  t.clear_contacts();
   std::fill(t.soft_lambda.begin(), t.soft_lambda.end(), 0.0);
   std::fill(t.on_tire.begin(), t.on_tire.end(), std::uint8_t{0});
   t.grab_lambda = 0.0;

@@ -44,10 +44,11 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable done_;
-  std::uint64_t generation_ = 0;  // bumped per job, guarded by mutex_
-  std::atomic<unsigned> pending_{0};
-  bool stop_ = false;
-  // The current job.
+  std::atomic<std::uint64_t> generation_{0};  // bumped per job: workers wait for a new value
+  std::atomic<unsigned> sleeping_{0};          // workers asleep on wake_
+  std::atomic<unsigned> pending_{0};           // workers not done with the current job
+  std::atomic<bool> stop_{false};
+  // The current job, published by the increment of generation_.
   std::size_t n_ = 0;
   Call call_ = nullptr;
   void* fn_ = nullptr;

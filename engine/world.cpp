@@ -214,6 +214,7 @@ void World::step(const TickInput& input) {
     if (s > 0 && !fuse_substeps) end_substeps(previous);
     for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
+        if (i + 1 < e) tires_[i + 1].prefetch();
         if (end_previous_here) end_substep(tires_[i], previous);
         begin_substep(tires_[i], ctx);
         solve_iteration(tires_[i], ctx, config_.iterations == 1);
@@ -241,8 +242,10 @@ void World::step(const TickInput& input) {
 }
 
 namespace {
-// Below this many tires a tick is too short to be worth waking threads for.
+// Below this many tires a tick is too short to be worth waking threads for; below this many items
+// (tires, or tire pairs of one colour) neither is a phase.
 constexpr std::size_t kParallelMinTires = 32;
+constexpr std::size_t kParallelMinItems = 4;
 }  // namespace
 
 unsigned World::threads_in_use() const { return tires_.size() >= kParallelMinTires ? threads_ : 1u; }
@@ -254,7 +257,7 @@ void World::set_threads(unsigned threads) {
 
 template <typename F>
 void World::for_tires(std::size_t n, F&& fn) {
-  if (threads_ > 1 && tires_.size() >= kParallelMinTires) {
+  if (threads_ > 1 && tires_.size() >= kParallelMinTires && n >= kParallelMinItems) {
     if (!pool_) pool_ = std::make_unique<WorkerPool>(threads_);
     pool_->parallel_for(n, fn);
   } else {
