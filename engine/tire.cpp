@@ -147,6 +147,19 @@ void Tire::prefetch() const {
   prefetch_range(particles.x_prev);
   prefetch_range(particles.v);
   prefetch_range(particles.w);
+  prefetch_range(grounded_flags);
+  prefetch_range(on_tire);
+  prefetch_range(soft_lambda);
+}
+
+void Tire::prefetch_tread() const {
+  for (std::uint32_t i = 0; i < n; i += 4) {  // 64-byte lines of four particles
+    __builtin_prefetch(&particles.x[i], 1);
+    __builtin_prefetch(&particles.x_prev[i], 0);
+  }
+  __builtin_prefetch(particles.w.data(), 0);
+  __builtin_prefetch(soft_lambda.data(), 1);
+  __builtin_prefetch(on_tire.data(), 1);
 }
 
 std::size_t Tire::touching_particles() const {

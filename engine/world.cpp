@@ -175,7 +175,10 @@ void World::step(const TickInput& input) {
   }
   rigid_.begin_tick(config_.dt);
   for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) begin_tick(tires_[i], config_, rigid_);
+    for (std::size_t i = b; i < e; ++i) {
+      if (i + 1 < e) tires_[i + 1].prefetch();
+      begin_tick(tires_[i], config_, rigid_);
+    }
   });
   // Tire–tire contacts only when there is more than one tire: a lone tire skips the pass.
   tire_pairs_.clear();
@@ -203,7 +206,10 @@ void World::step(const TickInput& input) {
   const bool fuse_substeps = !rigid_.takes_impulses();
   const auto end_substeps = [&](const SubstepContext& previous) {
     for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) end_substep(tires_[i], previous);
+      for (std::size_t i = b; i < e; ++i) {
+        if (i + 1 < e) tires_[i + 1].prefetch();
+        end_substep(tires_[i], previous);
+      }
     });
     hand_over_impulses();
   };
