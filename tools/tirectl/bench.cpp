@@ -1,6 +1,8 @@
 // Performance scenes, timed with a monotonic clock outside the simulation. CSV on stdout.
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <fstream>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -8,6 +10,10 @@
 #include <string_view>
 
 #include <sys/resource.h>
+#include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "commands.h"
 #include "level.h"
@@ -183,6 +189,25 @@ double quantile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, i == 0 ? 0 : i - 1)];
 }
 
+// The process's resident memory now (MiB), from /proc/self/statm; -1 where unknown.
+double rss_mib() {
+  std::ifstream statm("/proc/self/statm");
+  double pages_total = 0.0, pages_resident = -1.0;
+  if (!(statm >> pages_total >> pages_resident)) return -1.0;
+  return pages_resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+// Bytes allocated and not yet freed (glibc's count), in MiB: unlike RSS it does not move with the
+// allocator's caching. -1 where unknown.
+double heap_mib() {
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
+#else
+  return -1.0;
+#endif
+}
+
 // The process's peak resident memory so far (MiB).
 double peak_rss_mib() {
   rusage usage{};
@@ -224,6 +249,13 @@ int bench(const BenchOptions& options) {
       const auto start = Clock::now();
       world->step(scene.input);
       step_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      // A long run's progress on stderr: is the step time steady, is memory flat?
+      if (options.report_every > 0 && (s + 1) % options.report_every == 0) {
+        const std::vector<double> window(step_ms.end() - options.report_every, step_ms.end());
+        std::fprintf(stderr, "%s: step %d, %.0f s: median %.3f ms, p99 %.3f ms over the last %d; RSS %.1f MiB, heap %.1f MiB\n",
+                     scene.name, s + 1, std::chrono::duration<double>(Clock::now() - scene_start).count(),
+                     quantile(window, 0.5), quantile(window, 0.99), options.report_every, rss_mib(), heap_mib());
+      }
     }
     const tire::Tire& t = world->first_tire();
     const std::size_t tires = world->tire_count();

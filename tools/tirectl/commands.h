@@ -34,6 +34,7 @@ struct BenchOptions {
   int steps = 0;          // timed steps per scene; 0: at least 30, for `seconds`
   double seconds = 2.0;   // timing budget per scene when `steps` is 0
   int warmup = 120;       // untimed steps first: the pile settles, caches warm
+  int report_every = 0;   // >0: every this many steps, a progress line on stderr (time, RSS, heap)
 };
 int bench(const BenchOptions& options);
 

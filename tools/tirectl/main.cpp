@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--seconds", bench.seconds, "Timing budget per scene when --steps is not given")
       ->check(CLI::Range(0.0, 3600.0));
   bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")->check(CLI::Range(0, 1000000));
+  bench_cmd->add_option("--report-every", bench.report_every,
+                        "Every N timed steps, print the recent median and p99, RSS and heap in use to stderr")
+      ->check(CLI::Range(1, 10000000));
 
   tirectl::TradeoffOptions tradeoff;
   CLI::App* tradeoff_cmd = tirectl::add_tradeoff_command(app, tradeoff);
