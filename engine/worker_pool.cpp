@@ -1,5 +1,7 @@
 #include "worker_pool.h"
 
+#include <algorithm>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -8,11 +10,14 @@ namespace tire {
 
 namespace {
 
-// How long a waiting thread stays awake before it sleeps: a step hands out a job every few tens of
+// How long a waiting worker stays awake before it sleeps: a step hands out a job every few tens of
 // µs, and waking a sleeping thread costs about as much as such a job. Past these counts (a few
-// hundred µs) the thread sleeps, so an idle pool between frames costs nothing.
+// hundred µs) it sleeps, so an idle pool between frames costs nothing.
 constexpr int kSpinPauses = 4000;
 constexpr int kSpinYields = 200;
+// Chunks per thread: enough that one thread can take over another's share, few enough that
+// claiming costs nothing next to a chunk of tires.
+constexpr std::size_t kChunksPerThread = 4;
 
 void cpu_relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -20,10 +25,12 @@ void cpu_relax() {
 #endif
 }
 
+std::uint32_t generation_of(std::uint64_t ticket) { return static_cast<std::uint32_t>(ticket >> 32); }
+
 }  // namespace
 
 WorkerPool::WorkerPool(unsigned threads) {
-  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this, i] { work(i); });
+  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -34,37 +41,52 @@ WorkerPool::~WorkerPool() {
   wake_.notify_all();
 }
 
+void WorkerPool::run_chunks(std::uint32_t generation) {
+  const std::size_t n = n_.load(std::memory_order_relaxed);
+  const std::uint32_t chunks = chunks_.load(std::memory_order_relaxed);
+  const Call call = call_.load(std::memory_order_relaxed);
+  void* const fn = fn_.load(std::memory_order_relaxed);
+  std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
+  for (;;) {
+    if (generation_of(ticket) != generation) return;  // a later job: these fields may be stale
+    const auto chunk = static_cast<std::uint32_t>(ticket);
+    if (chunk >= chunks) return;
+    // Success proves the job is still this one, so the fields read above were its own.
+    if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel)) continue;
+    call(fn, n * chunk / chunks, n * (chunk + 1) / chunks);
+    chunks_done_.fetch_add(1, std::memory_order_acq_rel);
+    ticket = ticket_.load(std::memory_order_acquire);
+  }
+}
+
 void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
-  n_ = n;
-  call_ = call;
-  fn_ = fn;
-  pending_.store(static_cast<unsigned>(workers_.size()), std::memory_order_relaxed);
+  const auto chunks = static_cast<std::uint32_t>(std::min(n, threads() * kChunksPerThread));
+  const std::uint32_t generation = generation_of(ticket_.load(std::memory_order_relaxed)) + 1;
+  n_.store(n, std::memory_order_relaxed);
+  chunks_.store(chunks, std::memory_order_relaxed);
+  call_.store(call, std::memory_order_relaxed);
+  fn_.store(fn, std::memory_order_relaxed);
+  chunks_done_.store(0, std::memory_order_relaxed);
   // Publishes the job. Sequentially consistent with the load of sleeping_ below, as a worker's
-  // increment of sleeping_ is with its load of generation_: either it sees this job before it
-  // sleeps, or this sees it asleep and wakes it.
-  generation_.fetch_add(1);
+  // increment of sleeping_ is with its load of ticket_: either it sees this job before it sleeps,
+  // or this sees it asleep and wakes it.
+  ticket_.store(std::uint64_t{generation} << 32);
   if (sleeping_.load() > 0) {
     std::lock_guard lock(mutex_);
     wake_.notify_all();
   }
-  call(fn, begin_of(0, n), begin_of(1, n));  // the caller's own share
-  for (int spin = 0; pending_.load(std::memory_order_acquire) != 0; ++spin) {
-    if (spin < kSpinPauses) {
-      cpu_relax();
-    } else if (spin < kSpinPauses + kSpinYields) {
-      std::this_thread::yield();
-    } else {
-      std::unique_lock lock(mutex_);
-      done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
-      break;
-    }
+  run_chunks(generation);
+  // Every chunk is claimed; wait for those still running on other threads.
+  for (int spin = 0; chunks_done_.load(std::memory_order_acquire) != chunks; ++spin) {
+    if (spin < kSpinPauses) cpu_relax();
+    else std::this_thread::yield();
   }
 }
 
-void WorkerPool::work(unsigned index) {
-  std::uint64_t seen = 0;
+void WorkerPool::work() {
+  std::uint32_t seen = 0;
   for (;;) {
-    std::uint64_t generation = generation_.load(std::memory_order_acquire);
+    std::uint32_t generation = generation_of(ticket_.load(std::memory_order_acquire));
     for (int spin = 0; generation == seen && !stop_.load(std::memory_order_relaxed); ++spin) {
       if (spin < kSpinPauses) {
         cpu_relax();
@@ -73,19 +95,15 @@ void WorkerPool::work(unsigned index) {
       } else {
         std::unique_lock lock(mutex_);
         sleeping_.fetch_add(1);
-        wake_.wait(lock, [&] { return stop_.load() || generation_.load() != seen; });
+        wake_.wait(lock, [&] { return stop_.load() || generation_of(ticket_.load()) != seen; });
         sleeping_.fetch_sub(1);
         spin = 0;
       }
-      generation = generation_.load(std::memory_order_acquire);
+      generation = generation_of(ticket_.load(std::memory_order_acquire));
     }
     if (stop_.load()) return;
     seen = generation;
-    call_(fn_, begin_of(index, n_), begin_of(index + 1, n_));
-    if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-      std::lock_guard lock(mutex_);
-      done_.notify_one();
-    }
+    run_chunks(generation);
   }
 }
 

@@ -1,12 +1,14 @@
-// A small pool of threads for the world's data-parallel phases (standard library only). Work is
-// split into contiguous, equal index ranges, one per thread, so which thread does what never
-// affects a result: the phases it runs touch disjoint data, and anything shared is applied
-// afterwards in a fixed order by the caller.
+// A small pool of threads for the world's data-parallel phases (standard library only). A phase's
+// index range is cut into a few chunks per thread, which the threads (the caller among them) claim
+// one at a time: a thread the OS has put aside leaves its chunks to the others instead of holding
+// up the step. Which thread solves which chunk never affects a result: the phases it runs touch
+// disjoint data, and anything shared is applied afterwards in a fixed order by the caller.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -23,7 +25,7 @@ class WorkerPool {
 
   unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
-  // Calls fn(begin, end) on [0, n) split into threads() ranges; returns when all are done.
+  // Calls fn(begin, end) on consecutive ranges covering [0, n); returns when all are done.
   // Allocation-free: `fn` is passed by reference, not stored.
   template <typename F>
   void parallel_for(std::size_t n, F& fn) {
@@ -37,21 +39,26 @@ class WorkerPool {
  private:
   using Call = void (*)(void*, std::size_t, std::size_t);
   void dispatch(std::size_t n, Call call, void* fn);
-  void work(unsigned index);
-  std::size_t begin_of(unsigned part, std::size_t n) const { return n * part / threads(); }
+  void work();
+  // Claims and runs chunks of job `generation` until none is left; false if the job is over.
+  void run_chunks(std::uint32_t generation);
 
   std::vector<std::jthread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_;
-  std::condition_variable done_;
-  std::atomic<std::uint64_t> generation_{0};  // bumped per job: workers wait for a new value
-  std::atomic<unsigned> sleeping_{0};          // workers asleep on wake_
-  std::atomic<unsigned> pending_{0};           // workers not done with the current job
   std::atomic<bool> stop_{false};
-  // The current job, published by the increment of generation_.
-  std::size_t n_ = 0;
-  Call call_ = nullptr;
-  void* fn_ = nullptr;
+  std::atomic<unsigned> sleeping_{0};  // workers asleep on wake_
+  // The ticket: the job's generation in the high 32 bits, the next unclaimed chunk in the low 32.
+  // Claiming is a compare-and-swap on both, so a thread late for one job can never claim a chunk
+  // of the next with the last one's call.
+  std::atomic<std::uint64_t> ticket_{0};
+  std::atomic<std::uint32_t> chunks_done_{0};
+  // The current job, written before its ticket is published (relaxed atomics: a late thread may
+  // read them while the next job is written, but then its claim fails and it runs nothing).
+  std::atomic<std::size_t> n_{0};
+  std::atomic<std::uint32_t> chunks_{0};
+  std::atomic<Call> call_{nullptr};
+  std::atomic<void*> fn_{nullptr};
 };
 
 }  // namespace tire

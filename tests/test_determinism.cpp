@@ -40,15 +40,19 @@ TEST_CASE("a different input gives a different hash", "[unit][determinism]") {
 }
 
 TEST_CASE("results do not depend on the number of threads", "[unit][determinism]") {
-  // A pile big enough to run in parallel, with crates for the deferred prop impulses.
-  auto build = [](unsigned threads) {
+  // A pile big enough to run in parallel, with crates for the deferred prop impulses, and without
+  // (where each substep's velocity pass shares a sweep with the next one's prediction). Five
+  // threads on this machine's two cores: some are put aside mid-step and others take their chunks.
+  const bool crates = GENERATE(true, false);
+  CAPTURE(crates);
+  auto build = [crates](unsigned threads) {
     auto world = std::make_unique<World>(SolverConfig{}, Vec2{0, -9.81});
     world->set_threads(threads);
     world->add_obstacle({{{-1, -1}, {16, 0}}});
     world->add_obstacle({{{-1, 0}, {0, 50}}});
     world->add_obstacle({{{15, 0}, {16, 50}}});
     for (int i = 0; i < 100; ++i) world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
-    for (int i = 0; i < 6; ++i) {
+    for (int i = 0; i < (crates ? 6 : 0); ++i) {
       PropSpec crate;
       crate.type = PropType::dynamic_body;
       crate.size = {0.6, 0.6};
@@ -58,12 +62,12 @@ TEST_CASE("results do not depend on the number of threads", "[unit][determinism]
     }
     return world;
   };
-  auto one = build(1), two = build(2), three = build(3);
+  auto one = build(1), two = build(2), five = build(5);
   for (int tick = 0; tick < 90; ++tick) {
     one->step({1.0, tick == 40});
     two->step({1.0, tick == 40});
-    three->step({1.0, tick == 40});
+    five->step({1.0, tick == 40});
     REQUIRE(one->state_hash() == two->state_hash());
-    REQUIRE(one->state_hash() == three->state_hash());
+    REQUIRE(one->state_hash() == five->state_hash());
   }
 }
