@@ -32,3 +32,22 @@ TEST_CASE("stepping a world does not allocate", "[unit][performance]") {
   for (int i = 0; i < 600; ++i) world.step({i % 100 < 50 ? 1.0 : -1.0, i % 60 == 0});
   CHECK(allocations.load() - before == 0);
 }
+
+TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][performance]") {
+  // The parallel path: tire pairs, their colours, the worker pool, and crates taking impulses.
+  World world(SolverConfig{}, {0, -9.81});
+  world.set_threads(2);
+  world.add_obstacle({{{-1, -1}, {13, 0}}});
+  world.add_obstacle({{{-1, 0}, {0, 50}}});
+  world.add_obstacle({{{12, 0}, {13, 50}}});
+  for (int i = 0; i < 64; ++i) world.add_tire(tire_at({0.6 + 1.05 * (i % 11) + 0.2 * ((i / 11) % 2), 0.5 + 1.0 * (i / 11)}));
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {0.6, 0.6};
+  crate.position = {5.0, 8.0};
+  world.add_prop(crate);
+  for (int i = 0; i < 10; ++i) world.step({0.0, false});  // the pool starts its threads
+  const long before = allocations.load();
+  for (int i = 0; i < 300; ++i) world.step({1.0, i % 60 == 0});
+  CHECK(allocations.load() - before == 0);
+}
