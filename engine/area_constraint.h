@@ -25,14 +25,10 @@ double polygon_area(const Vec2* x, std::uint32_t count);
 void polygon_area_gradient(const Vec2* x, std::uint32_t count, Vec2* grad);
 
 // One XPBD projection of the constraint; `lambda` is its accumulated multiplier for the substep.
-// `grad` is scratch space for c.count gradients.
-void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const double* w, double inv_h2,
-                           Vec2* grad);
+void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const double* w, double inv_h2);
 
 // Kelvin–Voigt damping of the area's rate of change dA/dt = Σ ∇_i A · v_i, as for distance
 // constraints (see damp_distance_constraints): a dashpot c = τ/α, integrated implicitly.
-// `grad` is scratch space for c.count gradients.
-void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h,
-                          Vec2* grad);
+void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h);
 
 }  // namespace tire

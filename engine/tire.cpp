@@ -31,7 +31,6 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   prop_frames.reserve(16);
   prop_impulses.reserve(64);
   pairs.reserve(4 * n);
-  scratch.resize(n);
   soft_lambda.resize(n);
   on_tire.resize(2 * n);
 

@@ -139,7 +139,6 @@ struct Tire {
   std::vector<PropFrame> prop_frames;         // their poses this substep
   std::vector<ContactPair> pairs;             // particles near any of them this substep
   std::vector<PropImpulse> prop_impulses;     // owed to props since they were last handed over
-  std::vector<Vec2> scratch;                  // per outer particle: area gradients
   std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
   Vec2 tread_hub;                             // mean of the tread particles, after this iteration's own solve
   double tread_reach = 0.0;                   // largest distance of a tread particle from tread_hub

@@ -207,7 +207,7 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
   });
   if (const double tau = t.spec.material_damping; tau > 0.0) {
     t.distance.damp(p.x.data(), p.v.data());
-    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h, t.scratch.data());
+    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
   }
   RigidMotion motion = t.rigid_motion();
   if (ctx.config->damping > 0.0) damp_deviation(t, motion, ctx.config->damping, ctx.h);
@@ -263,8 +263,8 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
   if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
   t.distance.solve(p.x.data());
   const double inv_h2 = 1.0 / (ctx.h * ctx.h);
-  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
-  solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2, t.scratch.data());
+  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
+  solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
   // Where each ring is now: for the tread–rim contact, and for the contacts between tires that
   // follow this iteration.
   const auto bounds_of = [&](std::uint32_t first, Vec2& hub, double& reach) {
