@@ -117,3 +117,61 @@ TEST_CASE("a pile of tires in a box settles without overlaps or NaN", "[unit][so
   CHECK(fastest < 0.05);
   CHECK(world.warnings().empty());
 }
+
+TEST_CASE("a tread particle inside another tire is projected along the particle-edge gradient", "[unit][soft]") {
+  // C = n·(p − (1−t) b0 − t b1) ≥ 0 with ∇_p C = n, ∇_b0 C = −(1−t) n, ∇_b1 C = −t n: one
+  // projection moves each of the three by w ∇C Δλ with Δλ = −C / Σ w|∇C|² (XPBD eq. 17–18, α = 0),
+  // which puts p on the edge and, the gradients summing to zero, keeps momentum.
+  TireSpec spec = tire_at({0.0, 0.0});
+  spec.friction = 0.0;  // the normal projection alone
+  Tire b(0, spec);
+  spec.position = {1.2, 0.0};
+  Tire a(1, spec);
+  const std::uint32_t n = b.n;
+  // B's tread edge facing +x, and the particle of A facing B, moved 1 cm inside that edge, off centre.
+  std::uint32_t k = 0, i = 0;
+  for (std::uint32_t j = 0; j < n; ++j) {
+    if (b.particles.x[j].x + b.particles.x[(j + 1) % n].x > b.particles.x[k].x + b.particles.x[(k + 1) % n].x) k = j;
+    if (a.particles.x[j].x < a.particles.x[i].x) i = j;
+  }
+  const std::uint32_t k1 = (k + 1) % n;
+  const Vec2 b0 = b.particles.x[k], b1 = b.particles.x[k1], e = b1 - b0;
+  const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / length(e));  // outward
+  const double t = 0.3;
+  a.particles.x[i] = b0 + e * t - normal * 0.01;
+  for (Tire* tire : {&a, &b}) {
+    tire->tread_hub = {};
+    for (std::uint32_t j = 0; j < n; ++j) tire->tread_hub += tire->particles.x[j] / static_cast<double>(n);
+    tire->tread_reach = 0.0;
+    for (std::uint32_t j = 0; j < n; ++j)
+      tire->tread_reach = std::max(tire->tread_reach, length(tire->particles.x[j] - tire->tread_hub));
+  }
+  const std::vector<Vec2> a_before = a.particles.x, b_before = b.particles.x;
+  const Vec2 p = a_before[i];
+  const double C = dot(normal, p - b0 - e * t);
+  REQUIRE(C == Approx(-0.01));
+
+  solve_tire_contact(a, b, 0.7);
+
+  const double wp = a.particles.w[i], w0 = b.particles.w[k], w1 = b.particles.w[k1];
+  const double delta_lambda = -C / (wp + (1 - t) * (1 - t) * w0 + t * t * w1);
+  const Vec2 dp = a.particles.x[i] - p, db0 = b.particles.x[k] - b0, db1 = b.particles.x[k1] - b1;
+  CHECK(dp.x == Approx(wp * delta_lambda * normal.x).margin(1e-12));
+  CHECK(dp.y == Approx(wp * delta_lambda * normal.y).margin(1e-12));
+  CHECK(db0.x == Approx(-w0 * (1 - t) * delta_lambda * normal.x).margin(1e-12));
+  CHECK(db0.y == Approx(-w0 * (1 - t) * delta_lambda * normal.y).margin(1e-12));
+  CHECK(db1.x == Approx(-w1 * t * delta_lambda * normal.x).margin(1e-12));
+  CHECK(db1.y == Approx(-w1 * t * delta_lambda * normal.y).margin(1e-12));
+  // Equal particle masses: Σ m Δx = 0 means the displacements cancel.
+  const Vec2 momentum = dp + db0 + db1;
+  CHECK(length(momentum) < 1e-15);
+  // p now lies on the (moved) edge, to first order.
+  const Vec2 e_after = b.particles.x[k1] - b.particles.x[k];
+  const Vec2 n_after = Vec2{e_after.y, -e_after.x} * (1.0 / length(e_after));
+  CHECK(std::abs(dot(n_after, a.particles.x[i] - b.particles.x[k] - e_after * t)) < 1e-4);
+  // Nothing else moved.
+  for (std::uint32_t j = 0; j < a.particle_count(); ++j)
+    if (j != i) CHECK(a.particles.x[j] == a_before[j]);
+  for (std::uint32_t j = 0; j < b.particle_count(); ++j)
+    if (j != k && j != k1) CHECK(b.particles.x[j] == b_before[j]);
+}
