@@ -264,7 +264,11 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
   t.distance.solve(p.x.data());
   const double inv_h2 = 1.0 / (ctx.h * ctx.h);
   solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
-  solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
+  // The rim's area, once per substep (in its last iteration): it is there so that a heavy load
+  // cannot fold the rim, and a load builds over substeps, not within one. Its ring's edges, solved
+  // every iteration, keep its shape in between. (With one iteration, the default, that is every
+  // iteration anyway.)
+  if (last) solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
   // Where each ring is now: for the tread–rim contact, and for the contacts between tires that
   // follow this iteration.
   const auto bounds_of = [&](std::uint32_t first, Vec2& hub, double& reach) {
