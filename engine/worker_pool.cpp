@@ -10,11 +10,12 @@ namespace tire {
 
 namespace {
 
-// How long a waiting worker stays awake before it sleeps: a step hands out a job every few tens of
-// µs, and waking a sleeping thread costs about as much as such a job. Past these counts (a few
-// hundred µs) it sleeps, so an idle pool between frames costs nothing.
-constexpr int kSpinPauses = 4000;
-constexpr int kSpinYields = 200;
+// How long a thread that waits spins before it sleeps (on a futex, through std::atomic::wait).
+// The phases of a step follow each other within microseconds, so a worker that spins a little
+// catches the next one without a wake-up; past that it sleeps, and a machine busy with other
+// programs gets the core back instead of watching it spin.
+constexpr int kWorkerSpins = 1000;  // a few tens of µs of pause instructions
+constexpr int kCallerSpins = 4000;  // the caller expects the others' last chunks soon
 // Chunks per thread: enough that one thread can take over another's share, few enough that
 // claiming costs nothing next to a chunk of tires.
 constexpr std::size_t kChunksPerThread = 4;
@@ -34,11 +35,9 @@ WorkerPool::WorkerPool(unsigned threads) {
 }
 
 WorkerPool::~WorkerPool() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_.store(true);
-  }
-  wake_.notify_all();
+  stop_.store(true);
+  generation_.fetch_add(1);
+  generation_.notify_all();
 }
 
 void WorkerPool::run_chunks(std::uint32_t generation) {
@@ -54,52 +53,57 @@ void WorkerPool::run_chunks(std::uint32_t generation) {
     // Success proves the job is still this one, so the fields read above were its own.
     if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel)) continue;
     call(fn, n * chunk / chunks, n * (chunk + 1) / chunks);
-    chunks_done_.fetch_add(1, std::memory_order_acq_rel);
+    // Sequentially consistent with the load of caller_waiting_, as the caller's store of it is with
+    // its load of chunks_done_: either the caller sees this chunk done, or this sees it waiting.
+    chunks_done_.fetch_add(1);
+    if (caller_waiting_.load()) chunks_done_.notify_one();
     ticket = ticket_.load(std::memory_order_acquire);
   }
 }
 
 void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
   const auto chunks = static_cast<std::uint32_t>(std::min(n, threads() * kChunksPerThread));
-  const std::uint32_t generation = generation_of(ticket_.load(std::memory_order_relaxed)) + 1;
+  const std::uint32_t generation = generation_.load(std::memory_order_relaxed) + 1;
   n_.store(n, std::memory_order_relaxed);
   chunks_.store(chunks, std::memory_order_relaxed);
   call_.store(call, std::memory_order_relaxed);
   fn_.store(fn, std::memory_order_relaxed);
   chunks_done_.store(0, std::memory_order_relaxed);
-  // Publishes the job. Sequentially consistent with the load of sleeping_ below, as a worker's
-  // increment of sleeping_ is with its load of ticket_: either it sees this job before it sleeps,
-  // or this sees it asleep and wakes it.
-  ticket_.store(std::uint64_t{generation} << 32);
-  if (sleeping_.load() > 0) {
-    std::lock_guard lock(mutex_);
-    wake_.notify_all();
-  }
+  ticket_.store(std::uint64_t{generation} << 32, std::memory_order_release);
+  // Publishes the job. Sequentially consistent with the load of sleeping_, as a worker's increment
+  // of sleeping_ is with its load of generation_: either it sees this job before it sleeps, or this
+  // sees it asleep and wakes it.
+  generation_.store(generation);
+  if (sleeping_.load() > 0) generation_.notify_all();
   run_chunks(generation);
   // Every chunk is claimed; wait for those still running on other threads.
-  for (int spin = 0; chunks_done_.load(std::memory_order_acquire) != chunks; ++spin) {
-    if (spin < kSpinPauses) cpu_relax();
-    else std::this_thread::yield();
+  for (int spin = 0;; ++spin) {
+    std::uint32_t done = chunks_done_.load(std::memory_order_acquire);
+    if (done == chunks) break;
+    if (spin < kCallerSpins) {
+      cpu_relax();
+      continue;
+    }
+    caller_waiting_.store(true);
+    done = chunks_done_.load();
+    if (done != chunks) chunks_done_.wait(done);
+    caller_waiting_.store(false, std::memory_order_relaxed);
   }
 }
 
 void WorkerPool::work() {
   std::uint32_t seen = 0;
   for (;;) {
-    std::uint32_t generation = generation_of(ticket_.load(std::memory_order_acquire));
+    std::uint32_t generation = generation_.load(std::memory_order_acquire);
     for (int spin = 0; generation == seen && !stop_.load(std::memory_order_relaxed); ++spin) {
-      if (spin < kSpinPauses) {
+      if (spin < kWorkerSpins) {
         cpu_relax();
-      } else if (spin < kSpinPauses + kSpinYields) {
-        std::this_thread::yield();
       } else {
-        std::unique_lock lock(mutex_);
         sleeping_.fetch_add(1);
-        wake_.wait(lock, [&] { return stop_.load() || generation_of(ticket_.load()) != seen; });
+        if (generation_.load() == seen && !stop_.load()) generation_.wait(seen);
         sleeping_.fetch_sub(1);
-        spin = 0;
       }
-      generation = generation_of(ticket_.load(std::memory_order_acquire));
+      generation = generation_.load(std::memory_order_acquire);
     }
     if (stop_.load()) return;
     seen = generation;

@@ -6,10 +6,8 @@
 #pragma once
 
 #include <atomic>
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -44,10 +42,10 @@ class WorkerPool {
   void run_chunks(std::uint32_t generation);
 
   std::vector<std::jthread> workers_;
-  std::mutex mutex_;
-  std::condition_variable wake_;
   std::atomic<bool> stop_{false};
-  std::atomic<unsigned> sleeping_{0};  // workers asleep on wake_
+  std::atomic<std::uint32_t> generation_{0};  // bumped per job; sleeping workers wait on it
+  std::atomic<unsigned> sleeping_{0};         // workers asleep (or about to be) on generation_
+  std::atomic<bool> caller_waiting_{false};   // the caller sleeps on chunks_done_
   // The ticket: the job's generation in the high 32 bits, the next unclaimed chunk in the low 32.
   // Claiming is a compare-and-swap on both, so a thread late for one job can never claim a chunk
   // of the next with the last one's call.
