@@ -75,33 +75,46 @@ class DistanceConstraintSet {
     const char* p = reinterpret_cast<const char*>(batches_.data());
     const char* end = reinterpret_cast<const char*>(batches_.data() + batches_.size());
     for (; p < end; p += 64) __builtin_prefetch(p, 1);
+    __builtin_prefetch(params_of_.data(), 0);
   }
 
   enum class Kernel { automatic, scalar };  // scalar: force the portable path (tests compare them)
   void set_kernel(Kernel kernel) { kernel_ = kernel; }
 
  private:
-  // What one sweep reads and writes, 64 bytes a constraint: in a scene of a thousand tires the
-  // batches are most of what streams from memory every substep. A batch that is not full repeats
-  // its first lane (see the constructor).
+  // What one sweep reads and writes for four constraints, 96 bytes: in a scene of a thousand tires
+  // the batches are most of what streams from memory every substep. A batch that is not full
+  // repeats its first lane (see build_batches).
   struct alignas(32) Batch {
     static constexpr std::uint32_t kLanes = DistanceConstraintSet::kLanes;
     std::uint32_t a[kLanes];
     std::uint32_t b[kLanes];
     double rest_length[kLanes];
-    double alpha_tilde[kLanes];
-    double inv_denominator[kLanes];  // 1 / (w_a + w_b + α̃); 0 for pinned pairs and empty lanes
-    double w_a[kLanes];
-    double w_b[kLanes];
     double lambda[kLanes];
-    double damping[kLanes];  // τh / (α + τh(w_a + w_b)): dashpot impulse per unit of dC/dt
   };
-  static_assert(sizeof(Batch) == 64 * kLanes);
-  using Lanes = std::array<double, kLanes>;
+  static_assert(sizeof(Batch) == 24 * kLanes);
+  // What the four lanes of a batch share: the lanes of a batch are built to have one compliance and
+  // one pair of inverse masses, so these are a few per set (one per kind of constraint), not four
+  // per batch.
+  struct Params {
+    double compliance = 0.0;       // α
+    double w_a = 0.0;
+    double w_b = 0.0;
+    double alpha_tilde = 0.0;      // α̃ = α/h²
+    double inv_denominator = 0.0;  // 1 / (w_a + w_b + α̃); 0 for a pinned pair
+    double damping = 0.0;          // τh / (α + τh(w_a + w_b)): dashpot impulse per unit of dC/dt
+  };
+  // Cuts the constraints, in order, into batches whose lanes share no particle and share Params
+  // under inverse masses `w` (null: all equal).
+  void build_batches(const double* w);
+
   std::vector<DistanceConstraint> constraints_;
   std::vector<Batch> batches_;
-  std::vector<Lanes> compliance_;  // α per lane of each batch, read by prepare() only
+  std::vector<std::uint32_t> params_of_;  // per batch: its entry in params_
+  std::vector<Params> params_;
   std::vector<std::uint32_t> slot_;  // constraint k is lane slot_[k] % kLanes of batch slot_[k] / kLanes
+  std::vector<double> w_built_;      // the inverse masses the batches were built for (empty: none yet)
+  bool rebuild_ = false;             // a compliance changed: build again at the next prepare()
   Kernel kernel_ = Kernel::automatic;
 };
 
