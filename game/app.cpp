@@ -18,7 +18,8 @@ namespace game {
 namespace {
 
 double seconds_since(Uint64 start) {
-  return static_cast<double>(SDL_GetPerformanceCounter() - start) / static_cast<double>(SDL_GetPerformanceFrequency());
+  return static_cast<double>(SDL_GetPerformanceCounter() - start) /
+         static_cast<double>(SDL_GetPerformanceFrequency());
 }
 
 bool is_any(SDL_Scancode k, std::initializer_list<SDL_Scancode> keys) {
@@ -31,6 +32,8 @@ App::App(GameOptions options) : options_(std::move(options)) {}
 
 App::~App() {
   imgui_.reset();
+  world_renderer_.release();
+  draw_.reset();
   if (renderer_) SDL_DestroyRenderer(renderer_);
   if (window_) SDL_DestroyWindow(window_);
   if (sdl_started_) SDL_Quit();
@@ -58,6 +61,7 @@ bool App::open_window() {
   if (!renderer_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
   if (!renderer_) return fail("SDL_CreateRenderer");
   SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
+  draw_ = std::make_unique<Draw>(renderer_);
   imgui_ = std::make_unique<ImGuiLayer>();
   if (!imgui_->init(window_, renderer_)) return fail("Dear ImGui");
   return true;
@@ -98,8 +102,10 @@ void App::go_to_level(int delta) {
   const auto n = static_cast<long long>(levels_.size());
   const auto current = find_level(levels_, session_.path());
   long long next = 0;
-  if (current) next = ((static_cast<long long>(*current) + delta) % n + n) % n;
-  else next = delta >= 0 ? 0 : n - 1;
+  if (current)
+    next = ((static_cast<long long>(*current) + delta) % n + n) % n;
+  else
+    next = delta >= 0 ? 0 : n - 1;
   load_level(levels_[static_cast<std::size_t>(next)].path);
 }
 
@@ -167,23 +173,35 @@ void App::handle_event(const SDL_Event& e) {
     case SDL_MOUSEBUTTONUP:
       if (e.button.button == SDL_BUTTON_LEFT && grabbing_) mouse_up();
       break;
-    default: break;
+    default:
+      break;
   }
 }
 
 void App::key_down(SDL_Scancode k) {
   switch (k) {
-    case SDL_SCANCODE_F1: show_help_ = !show_help_; return;
-    case SDL_SCANCODE_F2: show_tuning_ = !show_tuning_; return;
-    case SDL_SCANCODE_F3: debug_.enabled = !debug_.enabled; return;
-    case SDL_SCANCODE_F5: save_replay(); return;
-    default: break;
+    case SDL_SCANCODE_F1:
+      show_help_ = !show_help_;
+      return;
+    case SDL_SCANCODE_F2:
+      show_tuning_ = !show_tuning_;
+      return;
+    case SDL_SCANCODE_F3:
+      debug_.enabled = !debug_.enabled;
+      return;
+    case SDL_SCANCODE_F5:
+      save_replay();
+      return;
+    default:
+      break;
   }
   if (menu_open_) {
-    if (levels_.empty()) menu_selected_ = 0;
+    if (levels_.empty())
+      menu_selected_ = 0;
     else if (is_any(k, {SDL_SCANCODE_UP, SDL_SCANCODE_W}))
       menu_selected_ = (menu_selected_ + levels_.size() - 1) % levels_.size();
-    else if (is_any(k, {SDL_SCANCODE_DOWN, SDL_SCANCODE_S})) menu_selected_ = (menu_selected_ + 1) % levels_.size();
+    else if (is_any(k, {SDL_SCANCODE_DOWN, SDL_SCANCODE_S}))
+      menu_selected_ = (menu_selected_ + 1) % levels_.size();
     else if (is_any(k, {SDL_SCANCODE_RETURN, SDL_SCANCODE_KP_ENTER})) {
       if (load_level(levels_[menu_selected_].path)) menu_open_ = false;
     }
@@ -208,17 +226,28 @@ void App::key_down(SDL_Scancode k) {
     }
   }
   switch (k) {
-    case SDL_SCANCODE_R: restart(); break;
-    case SDL_SCANCODE_P: paused_ = !paused_; break;
+    case SDL_SCANCODE_R:
+      restart();
+      break;
+    case SDL_SCANCODE_P:
+      paused_ = !paused_;
+      break;
     case SDL_SCANCODE_PERIOD:
       if (paused_) step_requested_ = true;
       break;
-    case SDL_SCANCODE_N: go_to_level(+1); break;
-    case SDL_SCANCODE_B: go_to_level(-1); break;
+    case SDL_SCANCODE_N:
+      go_to_level(+1);
+      break;
+    case SDL_SCANCODE_B:
+      go_to_level(-1);
+      break;
     case SDL_SCANCODE_SPACE:
     case SDL_SCANCODE_UP:
-    case SDL_SCANCODE_W: pending_jump_ = true; break;
-    default: break;
+    case SDL_SCANCODE_W:
+      pending_jump_ = true;
+      break;
+    default:
+      break;
   }
 }
 
@@ -261,7 +290,8 @@ tire::TickInput App::tick_input() const {
   tire::TickInput in;
   if (menu_open_ || level_over()) return in;
   const auto held = [this](SDL_Scancode a, SDL_Scancode b) { return held_.contains(a) || held_.contains(b); };
-  in.steer = (held(SDL_SCANCODE_RIGHT, SDL_SCANCODE_D) ? 1.0 : 0.0) - (held(SDL_SCANCODE_LEFT, SDL_SCANCODE_A) ? 1.0 : 0.0);
+  in.steer = (held(SDL_SCANCODE_RIGHT, SDL_SCANCODE_D) ? 1.0 : 0.0) -
+             (held(SDL_SCANCODE_LEFT, SDL_SCANCODE_A) ? 1.0 : 0.0);
   in.jump = pending_jump_;
   return in;
 }
@@ -313,12 +343,12 @@ void App::draw_frame(double wall_seconds) {
   const double alpha = paused_ || menu_open_ ? 1.0 : std::clamp(accumulator_ / dt, 0.0, 1.0);
   // The camera holds still while the mouse drags a tire, so the cursor keeps pointing where it pulls.
   if (const tire::Tire* p = session_.world().player(); p && !grabbing_)
-    camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity()), bounds_, wall_seconds);
+    camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity()), bounds_,
+                   wall_seconds);
 
   SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
   SDL_RenderClear(renderer_);
-  Draw draw(renderer_);
-  world_renderer_.draw(draw, camera_, session_, alpha, debug_);
+  world_renderer_.draw(*draw_, camera_, session_, alpha, debug_);
   draw_ui();
   imgui_->render();
 }
@@ -349,19 +379,26 @@ void App::draw_ui() {
   if (show_help_) draw_help(&show_help_);
 
   if (menu_open_) {
-    const MenuChoice choice =
-        draw_level_menu(levels_, menu_selected_, find_level(levels_, session_.path()), options_.levels_dir.string(),
-                        imgui_->big_font());
-    if (choice == MenuChoice::load && menu_selected_ < levels_.size() && load_level(levels_[menu_selected_].path))
+    const MenuChoice choice = draw_level_menu(levels_, menu_selected_, find_level(levels_, session_.path()),
+                                              options_.levels_dir.string(), imgui_->big_font());
+    if (choice == MenuChoice::load && menu_selected_ < levels_.size() &&
+        load_level(levels_[menu_selected_].path))
       menu_open_ = false;
-    else if (choice == MenuChoice::resume) menu_open_ = false;
-    else if (choice == MenuChoice::quit) quit_ = true;
+    else if (choice == MenuChoice::resume)
+      menu_open_ = false;
+    else if (choice == MenuChoice::quit)
+      quit_ = true;
   } else if (level_over()) {
     switch (draw_end_screen(world.status(), session_.level().name, finished_at_.value_or(world.time()),
                             imgui_->big_font())) {
-      case EndChoice::next: go_to_level(+1); break;
-      case EndChoice::retry: restart(); break;
-      case EndChoice::none: break;
+      case EndChoice::next:
+        go_to_level(+1);
+        break;
+      case EndChoice::retry:
+        restart();
+        break;
+      case EndChoice::none:
+        break;
     }
   }
   draw_level_errors(error_file_, level_errors_);
@@ -382,11 +419,16 @@ int App::run() {
   after_level_change();
   levels_ = scan_levels(options_.levels_dir);
 
+  // Room for every frame's times before the loop starts, so that recording them never allocates.
+  frame_stats_.reserve(options_.frames
+                           ? static_cast<std::size_t>(std::min<long long>(*options_.frames, kFrameSamples))
+                           : kFrameSamplesInteractive);
   const Uint64 start = SDL_GetPerformanceCounter();
   double last = 0.0;
   long long frame = 0;
   while (true) {
     if (options_.frames && frame >= *options_.frames) break;
+    const Uint64 frame_start = SDL_GetPerformanceCounter();
     // Scripted keys go through SDL's queue, exactly like real ones.
     for (const ScriptedKey& k : options_.keys.events_at(frame)) {
       SDL_Event e{};
@@ -416,13 +458,25 @@ int App::run() {
       if (load_level(session_.path())) warn("reloaded " + session_.path());
     }
 
+    const Uint64 render_start = SDL_GetPerformanceCounter();
     draw_frame(frame_seconds);  // may set quit_ (the menu's Quit)
+    const double render_seconds = seconds_since(render_start);
     const bool last_frame = quit_ || (options_.frames && frame + 1 >= *options_.frames);
+    double screenshot_seconds = 0.0;
     if (last_frame && !options_.screenshot.empty()) {
+      const Uint64 shot_start = SDL_GetPerformanceCounter();
       if (const std::string err = save_screenshot(renderer_, options_.screenshot); !err.empty())
         std::cerr << "tire-game: cannot save the screenshot " << options_.screenshot << ": " << err << "\n";
+      screenshot_seconds = seconds_since(shot_start);
     }
+    const Uint64 present_start = SDL_GetPerformanceCounter();
     SDL_RenderPresent(renderer_);
+    const double present_seconds = seconds_since(present_start);
+    // The screenshot is for tests, not part of what a player waits for.
+    frame_stats_.add({static_cast<float>(frame_physics_seconds_ * 1000.0),
+                      static_cast<float>((render_seconds + present_seconds) * 1000.0),
+                      static_cast<float>(present_seconds * 1000.0),
+                      static_cast<float>((seconds_since(frame_start) - screenshot_seconds) * 1000.0)});
     ++frame;
     if (quit_) break;
     // Without vsync (or when it is not honoured), do not spin faster than ~240 frames per second.
@@ -453,6 +507,17 @@ void App::print_summary(long long frames) const {
   } else {
     out["player"] = nullptr;
   }
+  out["tires"] = session_.world().tires().size();
+  // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
+  // (World::step), the rendering (drawing, ImGui, present) and the whole frame.
+  const auto stats = [](const TimeStats& t) {
+    return nlohmann::json{{"median", t.median}, {"p99", t.p99}, {"max", t.max}};
+  };
+  out["frame_ms"] = {{"samples", frame_stats_.size()},
+                     {"sim", stats(frame_stats_.sim())},
+                     {"render", stats(frame_stats_.render())},
+                     {"present", stats(frame_stats_.present())},
+                     {"frame", stats(frame_stats_.frame())}};
   std::cout << out.dump() << std::endl;
 }
 

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "camera.h"
+#include "draw.h"
+#include "frame_stats.h"
 #include "game_session.h"
 #include "hot_reload.h"
 #include "imgui_layer.h"
@@ -32,6 +34,11 @@ struct GameOptions {
   std::string screenshot;            // save the last frame here (BMP)
   std::string record;                // save the session's replay here on exit
 };
+
+// How many frames the exit summary's frame times cover at most: all of a --frames run up to this,
+// otherwise (and beyond it) the latest ones.
+constexpr std::size_t kFrameSamples = 1 << 20;
+constexpr std::size_t kFrameSamplesInteractive = 1 << 16;
 
 class App {
  public:
@@ -75,6 +82,7 @@ class App {
   GameOptions options_;
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;
+  std::unique_ptr<Draw> draw_;  // one batch for the whole run: drawing reuses its vertex buffer
   std::unique_ptr<ImGuiLayer> imgui_;
   bool sdl_started_ = false;
 
@@ -120,6 +128,7 @@ class App {
   double physics_ms_ = 0.0;
   double frame_physics_seconds_ = 0.0;
   int steps_this_frame_ = 0;
+  FrameStats frame_stats_;  // per frame: simulation, rendering, whole frame (for the exit summary)
 };
 
 }  // namespace game

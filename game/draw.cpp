@@ -9,13 +9,18 @@ void Draw::vertex(ScreenPoint p, SDL_Color c) {
   SDL_Vertex v{};
   v.position = {p.x, p.y};
   v.color = c;
+  translucent_ = translucent_ || c.a != 255;
   vertices_.push_back(v);
 }
 
 void Draw::flush() {
   if (vertices_.empty()) return;
+  // An opaque batch needs no blending, which a software renderer does pixel by pixel.
+  if (!translucent_) SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_NONE);
   SDL_RenderGeometry(renderer_, nullptr, vertices_.data(), static_cast<int>(vertices_.size()), nullptr, 0);
+  if (!translucent_) SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
   vertices_.clear();
+  translucent_ = false;
 }
 
 void Draw::triangle(ScreenPoint a, ScreenPoint b, ScreenPoint c, SDL_Color color) {
@@ -39,15 +44,14 @@ void Draw::fan(ScreenPoint hub, const std::vector<ScreenPoint>& ring, SDL_Color 
   for (std::size_t i = 0; i < n; ++i) triangle(hub, ring[i], ring[(i + 1) % n], color);
 }
 
-void Draw::rect(ScreenPoint a, ScreenPoint b, SDL_Color color) {
-  quad(a, {b.x, a.y}, b, {a.x, b.y}, color);
-}
+void Draw::rect(ScreenPoint a, ScreenPoint b, SDL_Color color) { quad(a, {b.x, a.y}, b, {a.x, b.y}, color); }
 
 void Draw::circle(ScreenPoint c, float radius, SDL_Color color, int segments) {
   scratch_.clear();
   for (int i = 0; i < segments; ++i) {
     const double a = 2.0 * std::numbers::pi * i / segments;
-    scratch_.push_back({c.x + radius * static_cast<float>(std::cos(a)), c.y + radius * static_cast<float>(std::sin(a))});
+    scratch_.push_back(
+        {c.x + radius * static_cast<float>(std::cos(a)), c.y + radius * static_cast<float>(std::sin(a))});
   }
   fan(c, scratch_, color);
 }
@@ -71,7 +75,11 @@ void Draw::polyline(const std::vector<ScreenPoint>& points, bool closed, float w
 }
 
 void Draw::rect_outline(ScreenPoint a, ScreenPoint b, float width, SDL_Color color) {
-  polyline({a, {b.x, a.y}, b, {a.x, b.y}}, true, width, color);
+  // As polyline() draws the closed outline, without building a vector for it every frame.
+  const ScreenPoint corners[4] = {a, {b.x, a.y}, b, {a.x, b.y}};
+  for (int i = 0; i < 4; ++i) line(corners[i], corners[(i + 1) % 4], width, color);
+  if (width > 2.5f)
+    for (const ScreenPoint& p : corners) circle(p, width * 0.5f, color, 10);
 }
 
 void Draw::vertical_gradient(int width, int height, SDL_Color top, SDL_Color bottom) {

@@ -38,6 +38,7 @@ class Draw {
 
   SDL_Renderer* renderer_;
   std::vector<SDL_Vertex> vertices_;
+  bool translucent_ = false;  // a vertex of the batch has alpha below 255
   std::vector<ScreenPoint> scratch_;
 };
 

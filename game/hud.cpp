@@ -36,10 +36,11 @@ void draw_hud(const HudInfo& info) {
   ImGui::SetNextWindowPos({10, 10});
   ImGui::SetNextWindowBgAlpha(0.55f);
   if (ImGui::Begin("##hud", nullptr, kOverlay)) {
-    ImGui::TextUnformatted(info.level.c_str());
+    ImGui::TextUnformatted(info.level.data(), info.level.data() + info.level.size());
     ImGui::Separator();
     ImGui::Text("time   %7.2f s   tick %llu", info.time, static_cast<unsigned long long>(info.tick));
-    ImGui::Text("speed  %7.2f m/s (%.0f km/h)%s", info.speed, info.speed * 3.6, info.grounded ? "" : "  airborne");
+    ImGui::Text("speed  %7.2f m/s (%.0f km/h)%s", info.speed, info.speed * 3.6,
+                info.grounded ? "" : "  airborne");
     ImGui::Text("FPS    %7.0f", info.fps);
     ImGui::Text("physics %6.2f ms/frame (%d ticks)", info.physics_ms, info.steps_last_frame);
     ImGui::Text("tires  %7zu", info.tires);
@@ -53,7 +54,8 @@ void draw_help(bool* open) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
   if (ImGui::Begin("Keys (F1 closes)", open,
-                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                       ImGuiWindowFlags_NoSavedSettings)) {
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
       for (const auto& row : kKeys) {
         ImGui::TableNextRow();
@@ -75,7 +77,8 @@ void draw_script_messages(const tire::World& world, ImFont* big) {
   if (messages.empty()) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float max_width = vp->Size.x * 0.8f;
-  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, std::max(vp->Size.y * 0.3f, 250.0f)}, ImGuiCond_Always, {0.5f, 0.5f});
+  ImGui::SetNextWindowPos({vp->Size.x * 0.5f, std::max(vp->Size.y * 0.3f, 250.0f)}, ImGuiCond_Always,
+                          {0.5f, 0.5f});
   ImGui::SetNextWindowSizeConstraints({0, 0}, {max_width, vp->Size.y * 0.5f});
   ImGui::SetNextWindowBgAlpha(0.6f);
   if (ImGui::Begin("##messages", nullptr, kOverlay)) {
@@ -110,8 +113,8 @@ void draw_level_errors(const std::string& file, const std::vector<std::string>& 
   ImGui::PushStyleColor(ImGuiCol_TitleBgActive, IM_COL32(170, 25, 25, 255));
   const std::string title = "Level errors: " + file + " (still playing the last good level)";
   if (ImGui::Begin(title.c_str(), nullptr,
-                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                       ImGuiWindowFlags_NoFocusOnAppearing)) {
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
     for (const std::string& e : errors) ImGui::TextColored({1.0f, 0.45f, 0.45f, 1.0f}, "%s", e.c_str());
   }
   ImGui::End();

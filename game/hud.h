@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 struct ImFont;
@@ -16,17 +17,17 @@ class World;
 namespace game {
 
 struct HudInfo {
-  std::string level;
-  double time = 0.0;        // s of simulated time
+  std::string_view level;  // views the level's name: the HUD copies nothing each frame
+  double time = 0.0;       // s of simulated time
   std::uint64_t tick = 0;
-  double speed = 0.0;       // player hub speed (m/s)
+  double speed = 0.0;  // player hub speed (m/s)
   double fps = 0.0;
   double physics_ms = 0.0;  // wall time spent in World::step per frame (smoothed)
   int steps_last_frame = 0;
   std::size_t tires = 0;
   bool paused = false;
   bool grounded = false;
-  std::string status;       // running, won, lost
+  const char* status = "";  // running, won, lost
 };
 
 void draw_hud(const HudInfo& info);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <numbers>
 
 #include "world.h"
 
@@ -35,14 +37,19 @@ SDL_Color darker(SDL_Color c, float f = 0.6f) {
 
 SDL_Color prop_color(const tire::Prop& p) {
   switch (p.spec.type) {
-    case tire::PropType::dynamic_body: return kDynamic;
-    case tire::PropType::kinematic_body: return kKinematic;
-    case tire::PropType::static_body: break;
+    case tire::PropType::dynamic_body:
+      return kDynamic;
+    case tire::PropType::kinematic_body:
+      return kKinematic;
+    case tire::PropType::static_body:
+      break;
   }
   return kStatic;
 }
 
-ScreenPoint lerp(ScreenPoint a, ScreenPoint b, float t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; }
+ScreenPoint lerp(ScreenPoint a, ScreenPoint b, float t) {
+  return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+}
 
 void arrow(Draw& d, ScreenPoint a, ScreenPoint b, float width, SDL_Color c) {
   d.line(a, b, width, c);
@@ -57,7 +64,8 @@ void arrow(Draw& d, ScreenPoint a, ScreenPoint b, float width, SDL_Color c) {
 tire::Aabb prop_bounds(const tire::Prop& p, const tire::Pose& pose) {
   const tire::Aabb local = p.geometry.local_bounds();
   tire::Aabb box{pose.to_world(local.min), pose.to_world(local.min)};
-  for (const tire::Vec2 c : {local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}}) {
+  for (const tire::Vec2 c :
+       {local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}}) {
     const tire::Vec2 w = pose.to_world(c);
     box.min = {std::min(box.min.x, w.x), std::min(box.min.y, w.y)};
     box.max = {std::max(box.max.x, w.x), std::max(box.max.y, w.y)};
@@ -67,6 +75,86 @@ tire::Aabb prop_bounds(const tire::Prop& p, const tire::Pose& pose) {
 
 }  // namespace
 
+SDL_Color tire_texel(double x, double y, const TireLook& look) {
+  // Everything in units of the outer radius, centred on the hub; y down, as on screen.
+  const double r = std::sqrt(x * x + y * y);
+  const double rho = look.inner_ratio;
+  const double px = 1.0 / std::max(look.radius_pixels, 1.0);  // one screen pixel
+  if (r < std::max(2.0 * px, 0.3 * rho)) return kHubCap;
+  if (r < rho) {
+    const double spoke = 0.5 * std::max(2.0 * px, 0.12 * rho);
+    if (std::min(std::abs(x), std::abs(y)) < spoke) return darker(look.rim, 0.7f);
+    if (r > rho - 1.5 * px) return darker(look.rim, 0.55f);
+    return look.rim;
+  }
+  const double band = 1.0 - 0.42 * (1.0 - rho);
+  if (r < band) return kSidewall;
+  const double turn = std::atan2(y, x) / (2.0 * std::numbers::pi) + 0.5;  // [0, 1]
+  const int block = static_cast<int>(turn * look.tread_blocks) % std::max(look.tread_blocks, 1);
+  return block % 2 ? kTreadLight : kTreadDark;
+}
+
+void tire_image(const TireLook& look, int size, std::vector<std::uint32_t>& rgba_pixels) {
+  // 4 × 4 samples a texel. The tire's outer ring is one texel inside the image's edge and what is
+  // outside it has the tread's colours, so that filtering at the edge never mixes in a background.
+  constexpr int kSamples = 4;
+  rgba_pixels.assign(static_cast<std::size_t>(size) * size, 0);
+  const double radius = 0.5 * size - 1.0;
+  for (int ty = 0; ty < size; ++ty)
+    for (int tx = 0; tx < size; ++tx) {
+      int sum[4] = {0, 0, 0, 0};
+      for (int sy = 0; sy < kSamples; ++sy)
+        for (int sx = 0; sx < kSamples; ++sx) {
+          const double x = (tx + (sx + 0.5) / kSamples - 0.5 * size) / radius;
+          const double y = (ty + (sy + 0.5) / kSamples - 0.5 * size) / radius;
+          const double r = std::sqrt(x * x + y * y);
+          const double k = r > 0.999 ? 0.999 / r : 1.0;
+          const SDL_Color c = tire_texel(x * k, y * k, look);
+          sum[0] += c.r, sum[1] += c.g, sum[2] += c.b, sum[3] += c.a;
+        }
+      std::uint8_t bytes[4];
+      for (int i = 0; i < 4; ++i)
+        bytes[i] = static_cast<std::uint8_t>((sum[i] + kSamples * kSamples / 2) / (kSamples * kSamples));
+      std::uint32_t packed = 0;
+      std::memcpy(&packed, bytes, 4);  // SDL_PIXELFORMAT_RGBA32: bytes R, G, B, A in memory
+      rgba_pixels[static_cast<std::size_t>(ty) * size + tx] = packed;
+    }
+}
+
+WorldRenderer::~WorldRenderer() { release(); }
+
+void WorldRenderer::release() {
+  for (TireTexture& t : tire_textures_)
+    if (t.texture) SDL_DestroyTexture(t.texture);
+  tire_textures_.clear();
+}
+
+WorldRenderer::TireTexture* WorldRenderer::tire_texture(SDL_Renderer* renderer, const tire::Tire& t,
+                                                        float radius_px, bool is_player) {
+  if (!renderer) return nullptr;
+  int size = 16;
+  while (size < 128 && static_cast<float>(size) < 2.0f * radius_px) size *= 2;
+  const int ratio = static_cast<int>(std::lround(t.spec.inner_radius / t.spec.outer_radius * 50.0));
+  for (TireTexture& e : tire_textures_)
+    if (e.size == size && e.ratio == ratio && e.player == is_player) return e.texture ? &e : nullptr;
+  // First use of this look at this size: made once, kept until the renderer goes.
+  TireTexture entry{size, ratio, is_player, nullptr, {}};
+  TireLook look;
+  look.inner_ratio = ratio / 50.0;
+  look.radius_pixels = 0.5 * size;
+  look.rim = is_player ? kRimPlayer : kRimOther;
+  std::vector<std::uint32_t> pixels;
+  tire_image(look, size, pixels);
+  entry.texture = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STATIC, size, size);
+  if (entry.texture) {
+    SDL_UpdateTexture(entry.texture, nullptr, pixels.data(), 4 * size);
+    SDL_SetTextureBlendMode(entry.texture, SDL_BLENDMODE_NONE);  // opaque
+    SDL_SetTextureScaleMode(entry.texture, SDL_ScaleModeLinear);
+  }
+  tire_textures_.push_back(std::move(entry));
+  return tire_textures_.back().texture ? &tire_textures_.back() : nullptr;
+}
+
 void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                          const DebugOptions& debug) {
   const tire::World& world = session.world();
@@ -75,8 +163,17 @@ void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& sessi
   draw_obstacles(d, camera, world);
   draw_props(d, camera, session, alpha);
   const tire::Tire* player = world.player();
+  // The tires are opaque: a batch of their own is drawn without blending. Small ones go into one
+  // textured batch per look, drawn first.
+  d.flush();
   for (const tire::Tire& t : world.tires())
     if (&t != player) draw_tire(d, camera, session, t, alpha, false);
+  for (TireTexture& tex : tire_textures_) {
+    if (tex.vertices.empty()) continue;
+    SDL_RenderGeometry(d.renderer(), tex.texture, tex.vertices.data(), static_cast<int>(tex.vertices.size()),
+                       nullptr, 0);
+    tex.vertices.clear();
+  }
   if (player) draw_tire(d, camera, session, *player, alpha, true);
   if (debug.enabled) draw_debug(d, camera, session, alpha, debug);
   draw_grab(d, camera, session, alpha);
@@ -90,12 +187,14 @@ void WorldRenderer::draw_background(Draw& d, const Camera& camera) {
   for (double x = std::floor(view.min.x); x <= view.max.x; x += 1.0) {
     const bool major = std::fmod(std::abs(x), 5.0) < 0.5;
     const float sx = camera.to_screen({x, 0}).x;
-    d.line({sx, 0}, {sx, static_cast<float>(camera.height())}, major ? 1.5f : 1.0f, major ? kGridMajor : kGridMinor);
+    d.line({sx, 0}, {sx, static_cast<float>(camera.height())}, major ? 1.5f : 1.0f,
+           major ? kGridMajor : kGridMinor);
   }
   for (double y = std::floor(view.min.y); y <= view.max.y; y += 1.0) {
     const bool major = std::fmod(std::abs(y), 5.0) < 0.5;
     const float sy = camera.to_screen({0, y}).y;
-    d.line({0, sy}, {static_cast<float>(camera.width()), sy}, major ? 1.5f : 1.0f, major ? kGridMajor : kGridMinor);
+    d.line({0, sy}, {static_cast<float>(camera.width()), sy}, major ? 1.5f : 1.0f,
+           major ? kGridMajor : kGridMinor);
   }
   if (floor_ > view.min.y) {
     const float top = camera.to_screen({0, floor_}).y;
@@ -191,7 +290,8 @@ void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::World& 
   const double height = std::min(goal.box.max.y - goal.box.min.y, 2.5);
   const tire::Vec2 base{0.5 * (goal.box.min.x + goal.box.max.x), goal.box.min.y};
   const tire::Vec2 top = base + tire::Vec2{0, height};
-  d.line(camera.to_screen(base), camera.to_screen(top), std::max(2.0f, camera.pixels(0.05)), rgba(70, 70, 70));
+  d.line(camera.to_screen(base), camera.to_screen(top), std::max(2.0f, camera.pixels(0.05)),
+         rgba(70, 70, 70));
   const double fw = 0.8, fh = 0.5, cell = 0.1;
   for (int i = 0; i < static_cast<int>(fw / cell + 0.5); ++i)
     for (int j = 0; j < static_cast<int>(fh / cell + 0.5); ++j) {
@@ -205,32 +305,94 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
                               double alpha, bool is_player) {
   session.interpolated_positions(t, alpha, positions_);
   const std::uint32_t n = t.n;
-  outer_.resize(n);
-  inner_.resize(n);
   tire::Vec2 hub_world;
   for (std::uint32_t i = 0; i < 2 * n; ++i) hub_world += positions_[i];
   hub_world = hub_world / static_cast<double>(2 * n);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    outer_[i] = camera.to_screen(positions_[i]);
-    inner_[i] = camera.to_screen(positions_[n + i]);
-  }
   const ScreenPoint hub = camera.to_screen(hub_world);
+  // Level of detail: the rings are drawn through every `step`-th particle, so that the drawn tread
+  // segments are about kMinSegmentPixels long on screen or longer (at least 8 points a ring). A pile
+  // of small tires then costs a fraction of the triangles and looks the same.
+  const float segment_px = camera.pixels(2.0 * std::numbers::pi * t.spec.outer_radius / n);
+  const std::uint32_t step = std::clamp<std::uint32_t>(
+      segment_px > 0.0f ? static_cast<std::uint32_t>(std::lround(kMinSegmentPixels / segment_px)) : n, 1u,
+      std::max(1u, n / 8));
+  outer_.clear();
+  inner_.clear();
+  for (std::uint32_t i = 0; i < n; i += step) {
+    outer_.push_back(camera.to_screen(positions_[i]));
+    inner_.push_back(camera.to_screen(positions_[n + i]));
+  }
+  const auto m = static_cast<std::uint32_t>(outer_.size());
+  // A reduced tire is one fan of triangles over its tread, textured with a picture of the tire:
+  // particle i keeps its place in the picture, so the picture turns and squashes with the tire.
+  if (step > 1)
+    if (TireTexture* tex = tire_texture(d.renderer(), t, camera.pixels(t.spec.outer_radius), is_player)) {
+      // Where drawn point k sits in the picture; the same for every tire of this segment count.
+      const float uv_radius = 0.5f - 1.0f / static_cast<float>(tex->size);
+      if (uv_.size() != m || uv_segments_ != n || uv_step_ != step || uv_radius_ != uv_radius) {
+        uv_.clear();
+        for (std::uint32_t i = 0; i < n; i += step) {
+          const double a = 2.0 * std::numbers::pi * i / n;
+          uv_.push_back({0.5f + uv_radius * static_cast<float>(std::cos(a)),
+                         0.5f + uv_radius * static_cast<float>(std::sin(a))});
+        }
+        uv_segments_ = n, uv_step_ = step, uv_radius_ = uv_radius;
+      }
+      const auto vertex = [](ScreenPoint p, SDL_FPoint uv) {
+        SDL_Vertex out{};
+        out.position = {p.x, p.y};
+        out.color = {255, 255, 255, 255};
+        out.tex_coord = uv;
+        return out;
+      };
+      const SDL_Vertex centre = vertex(hub, {0.5f, 0.5f});
+      for (std::uint32_t k = 0; k < m; ++k) {
+        const std::uint32_t l = k + 1 == m ? 0 : k + 1;
+        tex->vertices.push_back(centre);
+        tex->vertices.push_back(vertex(outer_[k], uv_[k]));
+        tex->vertices.push_back(vertex(outer_[l], uv_[l]));
+      }
+      if (t.grabbed) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
+      return;
+    }
   // Sidewall: the whole tire as a fan from the hub over the tread.
   d.fan(hub, outer_, kSidewall);
-  // Tread: a band along the outer ring in alternating blocks, which turn as the tire rolls.
-  band_.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) band_[i] = lerp(outer_[i], inner_[i], 0.42f);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t j = (i + 1) % n;
-    d.quad(outer_[i], outer_[j], band_[j], band_[i], (i % 2) ? kTreadLight : kTreadDark);
+  // Tread: a band along the outer ring in alternating blocks, which turn as the tire rolls. The
+  // dark blocks are barely darker than the sidewall: only a tire drawn in full detail gets them.
+  band_.resize(m);
+  for (std::uint32_t i = 0; i < m; ++i) band_[i] = lerp(outer_[i], inner_[i], 0.42f);
+  for (std::uint32_t i = 0; i < m; ++i) {
+    const std::uint32_t j = (i + 1) % m;
+    if (i % 2)
+      d.quad(outer_[i], outer_[j], band_[j], band_[i], kTreadLight);
+    else if (step == 1)
+      d.quad(outer_[i], outer_[j], band_[j], band_[i], kTreadDark);
   }
-  // Rim, with four spokes drawn on it.
+  // Rim, with spokes and a hub cap. In full detail the rim has a dark edge (a fan under a fan 1.5 px
+  // smaller) and four spokes; a reduced tire, small on screen, gets a plain rim and two spokes
+  // across it.
   const SDL_Color rim = is_player ? kRimPlayer : kRimOther;
+  if (step == 1) {
+    d.fan(hub, inner_, darker(rim, 0.55f));
+    for (ScreenPoint& p : inner_) {
+      const float dx = p.x - hub.x, dy = p.y - hub.y;
+      const float len = std::sqrt(dx * dx + dy * dy);
+      const float k = len > 3.0f ? (len - 1.5f) / len : 0.5f;
+      p = {hub.x + dx * k, hub.y + dy * k};
+    }
+  }
   d.fan(hub, inner_, rim);
   const float spoke_width = std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.12));
-  for (std::uint32_t k = 0; k < 4 && n >= 4; ++k) d.line(hub, inner_[k * n / 4], spoke_width, darker(rim, 0.7f));
-  d.polyline(inner_, true, 1.5f, darker(rim, 0.55f));
-  d.circle(hub, std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.3)), kHubCap, 16);
+  if (m >= 4) {
+    if (step == 1)
+      for (std::uint32_t k = 0; k < 4; ++k) d.line(hub, inner_[k * m / 4], spoke_width, darker(rim, 0.7f));
+    else
+      for (std::uint32_t k = 0; k < 2; ++k)
+        d.line(inner_[k * m / 4], inner_[(k + 2) * m / 4], spoke_width, darker(rim, 0.7f));
+  }
+  // The cap: a circle of about one triangle per 1.5 px of radius, 4 to 16.
+  const float cap = std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.3));
+  d.circle(hub, cap, kHubCap, std::clamp(static_cast<int>(cap / 1.5f), 4, 16));
   if (t.grabbed) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
 }
 
@@ -267,8 +429,8 @@ void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession&
     if (debug.structure) {
       const auto& constraints = t.distance.constraints();
       for (std::size_t k = t.spokes_first(); k < constraints.size(); ++k)
-        d.line(camera.to_screen(positions_[constraints[k].a]), camera.to_screen(positions_[constraints[k].b]), 1.0f,
-               rgba(120, 220, 255, 200));
+        d.line(camera.to_screen(positions_[constraints[k].a]), camera.to_screen(positions_[constraints[k].b]),
+               1.0f, rgba(120, 220, 255, 200));
       inner_.resize(n);
       outer_.resize(n);
       for (std::uint32_t i = 0; i < n; ++i) {
@@ -285,7 +447,8 @@ void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession&
         if (!t.contacts[i].active) continue;
         const ScreenPoint p = camera.to_screen(t.particles.x[i]);
         d.circle(p, 3.5f, rgba(255, 40, 40), 8);
-        arrow(d, p, camera.to_screen(t.particles.x[i] + t.contacts[i].normal * 0.25), 2.0f, rgba(255, 40, 40));
+        arrow(d, p, camera.to_screen(t.particles.x[i] + t.contacts[i].normal * 0.25), 2.0f,
+              rgba(255, 40, 40));
       }
     if (debug.velocities) {
       const tire::Vec2 c = session.interpolated_centroid(t, alpha);

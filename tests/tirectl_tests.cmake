@@ -60,6 +60,8 @@ tirectl_test("level 06-tire-rain is won once the gate opens" 0
   ARGS run ${LEVELS}/06-tire-rain.json --ticks 2400 --steer 1 STDOUT "\"status\": \"won\"")
 tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0
   ARGS run ${LEVELS}/07-sandbox.json --ticks 1800 --steer 1 STDOUT "\"status\": \"won\"")
+tirectl_test("level 08-three-hundred is won through the gate the 300th tire opens" 0
+  ARGS run ${LEVELS}/08-three-hundred.json --ticks 1200 --steer -1 STDOUT "\"status\": \"won\"")
 
 # Hardening (README "Hardening"): hostile files get one clear line per problem naming the file, the
 # JSON path and what was expected, and exit code 2; never a crash, a stack trace or "terminate

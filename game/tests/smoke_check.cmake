@@ -1,8 +1,9 @@
 # Smoke test of the window game, headless (SDL_VIDEODRIVER=offscreen):
 #   cmake -DGAME=tire-game -DLEVEL=levels/01-first-roll.json -DSHOT=smoke.bmp -P smoke_check.cmake
 # Plays 300 frames holding right, then checks that it exits 0, that the JSON it prints shows the
-# player rolled right by more than 1 m from its start (x = 0), and that the screenshot is a picture
-# (a BMP with more than a handful of distinct colours), all without any image tool.
+# player rolled right by more than 1 m from its start (x = 0) and has the tire count and the frame
+# times of all 300 frames, and that the screenshot is a picture (a BMP with more than a handful of
+# distinct colours), all without any image tool.
 file(REMOVE "${SHOT}")
 execute_process(
   COMMAND "${GAME}" "${LEVEL}" --frames 300 --press right:0-299 --screenshot "${SHOT}"
@@ -23,6 +24,27 @@ if(NOT frames EQUAL 300)
 endif()
 if(NOT x GREATER 1.0)
   message(FATAL_ERROR "the player's x is ${x}: it did not roll right by more than 1 m from 0\n${out}")
+endif()
+string(JSON tires GET "${out}" tires)
+if(NOT tires EQUAL 1)
+  message(FATAL_ERROR "the summary counts ${tires} tires, expected 1: ${out}")
+endif()
+string(JSON samples GET "${out}" frame_ms samples)
+if(NOT samples EQUAL 300)
+  message(FATAL_ERROR "frame times of ${samples} frames, expected 300: ${out}")
+endif()
+foreach(part sim render present frame)
+  foreach(stat median p99 max)
+    string(JSON ms ERROR_VARIABLE json_error GET "${out}" frame_ms ${part} ${stat})
+    if(json_error OR NOT ms GREATER_EQUAL 0)
+      message(FATAL_ERROR "frame_ms.${part}.${stat} is missing or not a time (${ms}): ${out}")
+    endif()
+  endforeach()
+endforeach()
+string(JSON frame_median GET "${out}" frame_ms frame median)
+string(JSON frame_p99 GET "${out}" frame_ms frame p99)
+if(NOT frame_median GREATER 0 OR frame_p99 LESS frame_median)
+  message(FATAL_ERROR "frame times out of order (median ${frame_median}, p99 ${frame_p99}): ${out}")
 endif()
 message(STATUS "summary: ${out}")
 

@@ -1,17 +1,19 @@
 // The game's logic that needs no window: the --press parser, tuning changes, the session's event
-// routing and interpolation, hot reload, the level list and the camera.
+// routing and interpolation, hot reload, the level list, the camera, the frame-time statistics and
+// the picture small tires are drawn with.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
-
 #include <chrono>
 #include <fstream>
 #include <thread>
 
 #include "camera.h"
+#include "frame_stats.h"
 #include "game_session.h"
 #include "hot_reload.h"
 #include "key_script.h"
 #include "level_list.h"
+#include "renderer.h"
 #include "tuning.h"
 
 using namespace game;
@@ -180,7 +182,7 @@ TEST_CASE("hot reload notices a changed file once", "[unit][game]") {
   watcher.watch(file);
   CHECK_FALSE(watcher.poll(0.0));
   { std::ofstream(file) << "{\"changed\": true}"; }  // a different size, whatever the clock's resolution
-  CHECK_FALSE(watcher.poll(0.5));  // not yet time to look
+  CHECK_FALSE(watcher.poll(0.5));                    // not yet time to look
   CHECK(watcher.poll(1.0));
   CHECK_FALSE(watcher.poll(2.0));
   std::filesystem::remove(file);
@@ -223,4 +225,93 @@ TEST_CASE("the camera scales with the window and stays inside the level", "[unit
   CHECK(back.x == Approx(-45).margin(1e-4));
   CHECK(back.y == Approx(1).margin(1e-4));
   CHECK(p.y < camera.to_screen({-45, 0}).y);  // y up in the world is up on the screen
+}
+
+TEST_CASE("the 300-tire level is all on one screen at the game's zoom", "[unit][game]") {
+  const tire::LevelLoad load =
+      tire::load_level_file(std::filesystem::path(TIRE_LEVELS_DIR) / "08-three-hundred.json");
+  REQUIRE(load.level);
+  tire::World world(load.level->solver, load.level->gravity);
+  tire::populate_world(*load.level, world);
+  const tire::Aabb bounds = level_bounds(world);
+  const tire::Tire* player = world.player();
+  REQUIRE(player);
+  // 16:9, 4:3 and a tall window: the walls (x in [-4.5, 4.5]), the floor and the height the pile
+  // reaches (about 3.5 m) are in view while the player waits at the gate.
+  for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1024, 768}, std::pair{1920, 1080}}) {
+    Camera camera;
+    camera.resize(w, h);
+    camera.snap(camera.aim(player->centroid(), {}), bounds);
+    for (int i = 0; i < 300; ++i) camera.follow(camera.aim(player->centroid(), {}), bounds, 1.0 / 60.0);
+    INFO(w << "x" << h);
+    CHECK(camera.view().min.x <= -4.5);
+    CHECK(camera.view().max.x >= 4.5);
+    CHECK(camera.view().min.y <= 0.0);
+    CHECK(camera.view().max.y >= 4.5);
+  }
+}
+
+TEST_CASE("frame times: median and p99 by nearest rank, in a buffer reserved up front", "[unit][game]") {
+  std::vector<double> values;
+  for (int i = 100; i >= 1; --i) values.push_back(i);
+  CHECK(percentile(values, 0.5) == 50);
+  CHECK(percentile(values, 0.99) == 99);
+  CHECK(percentile(values, 1.0) == 100);
+  std::vector<double> none;
+  CHECK(percentile(none, 0.5) == 0);
+
+  FrameStats stats;
+  stats.add({1, 1, 1, 1});  // never reserved: kept nowhere, and nothing allocated
+  CHECK(stats.size() == 0);
+  stats.reserve(4);
+  const std::size_t capacity = stats.capacity();
+  for (float ms : {4.0f, 1.0f, 3.0f, 2.0f}) stats.add({ms, 2 * ms, 0.5f * ms, 3 * ms});
+  CHECK(stats.sim().median == 2);
+  CHECK(stats.sim().p99 == 4);
+  CHECK(stats.render().median == 4);
+  CHECK(stats.present().max == 2);
+  CHECK(stats.frame().max == 12);
+  // Full: the oldest frame (4 ms) makes room for the newest.
+  stats.add({10, 20, 5, 30});
+  CHECK(stats.size() == 4);
+  CHECK(stats.capacity() == capacity);
+  CHECK(stats.sim().max == 10);
+  CHECK(stats.sim().median == 2);
+  stats.clear();
+  CHECK(stats.sim().median == 0);
+}
+
+TEST_CASE("the picture of a small tire: hub cap, rim with spokes, sidewall, tread blocks", "[unit][game]") {
+  TireLook look;
+  look.inner_ratio = 0.6;
+  look.radius_pixels = 32;
+  const auto same = [](SDL_Color a, SDL_Color b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+  };
+  const SDL_Color cap = tire_texel(0, 0, look);
+  const SDL_Color rim = tire_texel(0.3, 0.3, look);       // r = 0.42, between the spokes
+  const SDL_Color spoke = tire_texel(0.45, 0.0, look);    // on the spoke along x
+  const SDL_Color sidewall = tire_texel(0.0, 0.7, look);  // between the rim and the tread band
+  CHECK(same(rim, look.rim));
+  CHECK_FALSE(same(spoke, rim));
+  CHECK_FALSE(same(cap, rim));
+  CHECK_FALSE(same(sidewall, rim));
+  // Round the tread the blocks alternate.
+  int changes = 0;
+  const auto at = [&](int degree) {
+    const double a = (degree + 0.5) * 3.14159265358979 / 180.0;  // never on a block's edge
+    return tire_texel(0.95 * std::cos(a), 0.95 * std::sin(a), look);
+  };
+  SDL_Color last = at(359);
+  for (int i = 0; i < 360; ++i) {
+    const SDL_Color c = at(i);
+    if (!same(c, last)) ++changes;
+    last = c;
+  }
+  CHECK(changes == look.tread_blocks);
+  // The image is opaque everywhere, so the tires can be drawn without blending.
+  std::vector<std::uint32_t> pixels;
+  tire_image(look, 32, pixels);
+  REQUIRE(pixels.size() == 32u * 32u);
+  for (std::uint32_t p : pixels) CHECK(reinterpret_cast<const std::uint8_t*>(&p)[3] == 255);
 }
