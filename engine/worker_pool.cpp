@@ -50,7 +50,8 @@ void WorkerPool::run_chunks(std::uint32_t generation) {
     if (generation_of(ticket) != generation) return;  // a later job: these fields may be stale
     const auto chunk = static_cast<std::uint32_t>(ticket);
     if (chunk >= chunks) return;
-    // Success proves the job is still this one, so the fields read above were its own.
+    // Success proves the job is still this one (a finished job's ticket is closed before the next
+    // job's fields are written), so the fields read above were its own.
     if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel)) continue;
     call(fn, n * chunk / chunks, n * (chunk + 1) / chunks);
     // Sequentially consistent with the load of caller_waiting_, as the caller's store of it is with
@@ -89,6 +90,10 @@ void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
     if (done != chunks) chunks_done_.wait(done);
     caller_waiting_.store(false, std::memory_order_relaxed);
   }
+  // Closes the job before the next one's fields are written: a thread still on its way into this
+  // job may read those fields, and must then find no chunk left to claim under this generation
+  // (with the ticket left at `chunks`, a next job with more chunks would let it claim one).
+  ticket_.store((std::uint64_t{generation} << 32) | 0xFFFFFFFFu, std::memory_order_release);
 }
 
 void WorkerPool::work() {
