@@ -12,6 +12,8 @@ namespace tire {
 
 DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> constraints)
     : constraints_(std::move(constraints)) {
+  for (const DistanceConstraint& c : constraints_)
+    particle_count_ = std::max<std::size_t>(particle_count_, std::max(c.a, c.b) + std::size_t{1});
   build_batches(nullptr);
 }
 
@@ -72,11 +74,9 @@ void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count,
 
 void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
   // The batches follow the inverse masses: built again only when one changed (a new tire mass).
-  std::size_t particles = 0;
-  for (const DistanceConstraint& c : constraints_) particles = std::max<std::size_t>(particles, std::max(c.a, c.b) + 1);
-  if (rebuild_ || w_built_.size() != particles || !std::equal(w_built_.begin(), w_built_.end(), w)) {
+  if (rebuild_ || w_built_.size() != particle_count_ || !std::equal(w_built_.begin(), w_built_.end(), w)) {
     build_batches(w);
-    w_built_.assign(w, w + particles);
+    w_built_.assign(w, w + particle_count_);
     rebuild_ = false;
   }
   const double inv_h2 = 1.0 / (h * h);

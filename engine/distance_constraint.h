@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "prefetch.h"
 #include "vec2.h"
 
 namespace tire {
@@ -72,10 +73,8 @@ class DistanceConstraintSet {
 
   // Asks the CPU to start loading the batches (a hint; changes nothing).
   void prefetch() const {
-    const char* p = reinterpret_cast<const char*>(batches_.data());
-    const char* end = reinterpret_cast<const char*>(batches_.data() + batches_.size());
-    for (; p < end; p += 64) __builtin_prefetch(p, 1);
-    __builtin_prefetch(params_of_.data(), 0);
+    tire::prefetch(batches_);
+    tire::prefetch(params_of_);
   }
 
   enum class Kernel { automatic, scalar };  // scalar: force the portable path (tests compare them)
@@ -113,6 +112,7 @@ class DistanceConstraintSet {
   std::vector<std::uint32_t> params_of_;  // per batch: its entry in params_
   std::vector<Params> params_;
   std::vector<std::uint32_t> slot_;  // constraint k is lane slot_[k] % kLanes of batch slot_[k] / kLanes
+  std::size_t particle_count_ = 0;   // 1 + the highest particle index any constraint names
   std::vector<double> w_built_;      // the inverse masses the batches were built for (empty: none yet)
   bool rebuild_ = false;             // a compliance changed: build again at the next prepare()
   Kernel kernel_ = Kernel::automatic;

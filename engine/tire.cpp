@@ -126,15 +126,6 @@ bool Tire::grounded() const {
                      [](std::uint8_t g) { return g != 0; });
 }
 
-namespace {
-template <typename T>
-void prefetch_range(const std::vector<T>& v) {
-  const char* p = reinterpret_cast<const char*>(v.data());
-  const char* end = reinterpret_cast<const char*>(v.data() + v.size());
-  for (; p < end; p += 64) __builtin_prefetch(p, 1);
-}
-}  // namespace
-
 void Tire::clear_contacts() {
   for_each_contact([this](std::uint32_t i) { contacts[i] = ContactRecord{}; });
   std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
@@ -142,23 +133,13 @@ void Tire::clear_contacts() {
 
 void Tire::prefetch() const {
   distance.prefetch();
-  prefetch_range(particles.x);
-  prefetch_range(particles.x_prev);
-  prefetch_range(particles.v);
-  prefetch_range(particles.w);
-  prefetch_range(grounded_flags);
-  prefetch_range(on_tire);
-  prefetch_range(soft_lambda);
-}
-
-void Tire::prefetch_tread() const {
-  for (std::uint32_t i = 0; i < n; i += 4) {  // 64-byte lines of four particles
-    __builtin_prefetch(&particles.x[i], 1);
-    __builtin_prefetch(&particles.x_prev[i], 0);
-  }
-  __builtin_prefetch(particles.w.data(), 0);
-  __builtin_prefetch(soft_lambda.data(), 1);
-  __builtin_prefetch(on_tire.data(), 1);
+  tire::prefetch(particles.x);
+  tire::prefetch(particles.x_prev);
+  tire::prefetch(particles.v);
+  tire::prefetch(particles.w);
+  tire::prefetch(grounded_flags);
+  tire::prefetch(on_tire);
+  tire::prefetch(soft_lambda);
 }
 
 std::size_t Tire::touching_particles() const {

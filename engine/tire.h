@@ -112,7 +112,6 @@ struct Tire {
   // Asks the CPU to start loading what a substep reads (a hint; changes nothing): the world calls
   // it for the next tire while it solves this one.
   void prefetch() const;
-  void prefetch_tread() const;  // what a contact with another tire reads
 
   TireId id;
   TireSpec spec;

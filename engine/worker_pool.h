@@ -38,7 +38,7 @@ class WorkerPool {
   using Call = void (*)(void*, std::size_t, std::size_t);
   void dispatch(std::size_t n, Call call, void* fn);
   void work();
-  // Claims and runs chunks of job `generation` until none is left; false if the job is over.
+  // Claims and runs chunks of job `generation` until none is left or a later job has begun.
   void run_chunks(std::uint32_t generation);
 
   std::vector<std::jthread> workers_;
