@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -266,6 +268,42 @@ struct OverBudget {
   std::string what;
 };
 
+// Where the parser is in the text. nlohmann's SAX events carry no position, so the parser reads
+// the text through a CountingIterator, which moves this forward one character at a time.
+struct Cursor {
+  std::size_t bytes = 0;  // characters consumed
+  std::size_t line = 1;   // of the next character
+};
+
+class CountingIterator {
+ public:
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  CountingIterator(const char* at, Cursor* cursor) : at_(at), cursor_(cursor) {}
+  reference operator*() const { return *at_; }
+  CountingIterator& operator++() {
+    if (*at_ == '\n') ++cursor_->line;
+    ++at_;
+    ++cursor_->bytes;
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator before = *this;
+    ++*this;
+    return before;
+  }
+  bool operator==(const CountingIterator& other) const { return at_ == other.at_; }
+  bool operator!=(const CountingIterator& other) const { return at_ != other.at_; }
+
+ private:
+  const char* at_;
+  Cursor* cursor_;
+};
+
 // Builds the document from nlohmann's SAX events, refusing it at the first event past the budget,
 // and knows at every moment the JSON pointer of the value being read, so that a refusal names the
 // place. (Not json::parse with a callback: its parser rescans an object's parent at every object
@@ -274,7 +312,7 @@ class BoundedBuilder {
  public:
   using json = nlohmann::json;
 
-  explicit BoundedBuilder(const JsonBudget& budget) : budget_(budget) {}
+  BoundedBuilder(const JsonBudget& budget, const Cursor& cursor) : budget_(budget), cursor_(cursor) {}
 
   bool null() { return value(json(nullptr)); }
   bool boolean(bool b) { return value(json(b)); }
@@ -283,14 +321,21 @@ class BoundedBuilder {
   bool number_float(json::number_float_t v, const json::string_t&) { return value(json(v)); }
   bool string(json::string_t& s) {
     check_string(s, "a string");
+    work_.string_bytes += s.size();
     return value(json(std::move(s)));
   }
   bool binary(json::binary_t& b) { return value(json(std::move(b))); }
   bool start_object(std::size_t) { return open(json::value_t::object); }
   bool start_array(std::size_t) { return open(json::value_t::array); }
   bool key(json::string_t& k) {
-    frames_.back().key = k;
+    Frame& f = frames_.back();
+    f.key = k;
     check_string(k, "a key");
+    work_.string_bytes += k.size();
+    // The lexer has just read the key's closing quote: the cursor is on the key's line.
+    const auto [first, inserted] = f.key_lines.emplace(k, cursor_.line);
+    if (!inserted && duplicates_.size() <= kMaxIssues)
+      duplicates_.push_back({path(), "key given twice (first at line " + std::to_string(first->second) + ")"});
     return true;
   }
   bool end_object() { return close(); }
@@ -304,12 +349,15 @@ class BoundedBuilder {
 
   json& root() { return root_; }
   const std::string& error() const { return error_; }
+  std::vector<JsonIssue>& duplicates() { return duplicates_; }
+  const JsonWork& work() const { return work_; }
 
  private:
   struct Frame {
     json* container;
     std::size_t index;  // arrays: of the element being read
     std::string key;    // objects: of the member being read
+    std::map<std::string, std::size_t, std::less<>> key_lines;  // objects: each key's first line
   };
 
   std::string path() const {
@@ -320,7 +368,7 @@ class BoundedBuilder {
   }
 
   void count() {
-    if (++values_ > budget_.max_values)
+    if (++work_.values > budget_.max_values)
       throw OverBudget{path() + ": " + budget_.document + " may hold at most " + std::to_string(budget_.max_values) +
                        " JSON values (numbers, strings, arrays, objects), and this one holds more"};
   }
@@ -342,7 +390,7 @@ class BoundedBuilder {
       f.container->push_back(std::move(v));
       return &f.container->back();
     }
-    json& slot = (*f.container)[f.key];  // a repeated key: the last one wins, as in json::parse
+    json& slot = (*f.container)[f.key];  // a repeated key (reported in key()): the last one stays
     slot = std::move(v);
     return &slot;
   }
@@ -360,7 +408,7 @@ class BoundedBuilder {
       throw OverBudget{path() + ": nesting deeper than " + std::to_string(budget_.max_depth) +
                        " levels; arrays and objects may nest at most " + std::to_string(budget_.max_depth) + " deep"};
     // The new container is the last element of its parent until it closes, so the pointer holds.
-    frames_.push_back({place(json(type)), 0, {}});
+    frames_.push_back({place(json(type)), 0, {}, {}});
     return true;
   }
 
@@ -371,27 +419,42 @@ class BoundedBuilder {
   }
 
   const JsonBudget& budget_;
+  const Cursor& cursor_;
   json root_;
   std::vector<Frame> frames_;
-  std::size_t values_ = 0;
+  std::vector<JsonIssue> duplicates_;
+  JsonWork work_;
   std::string error_;
 };
 
 }  // namespace
 
-// Parses untrusted text, refusing it as soon as it nests deeper than the budget, holds more values
-// (numbers, strings, booleans, nulls, arrays and objects) or a longer string than the budget
-// allows: the document tree never grows past the budget. On failure, `error` reads
-// "/json/pointer: what was expected, got what" or "invalid JSON: ...".
-std::optional<nlohmann::json> parse_json_bounded(const std::string& text, const JsonBudget& budget, std::string& error) {
-  BoundedBuilder builder(budget);
+// Refuses the text as soon as it nests deeper than the budget, holds more values (numbers,
+// strings, booleans, nulls, arrays and objects) or a longer string than the budget allows: the
+// document tree never grows past the budget.
+JsonParse parse_json_bounded(const std::string& text, const JsonBudget& budget) {
+  Cursor cursor;
+  BoundedBuilder builder(budget, cursor);
+  JsonParse out;
   try {
-    if (nlohmann::json::sax_parse(text, &builder)) return std::move(builder.root());
-    error = builder.error();
+    const CountingIterator begin(text.data(), &cursor), end(text.data() + text.size(), &cursor);
+    if (nlohmann::json::sax_parse(begin, end, &builder)) {
+      out.doc = std::move(builder.root());
+      out.duplicates = std::move(builder.duplicates());
+    } else {
+      out.error = builder.error();
+    }
   } catch (const OverBudget& e) {
-    error = e.what;
+    out.error = e.what;
   }
-  return std::nullopt;
+  out.work = builder.work();
+  out.work.parsed_bytes = cursor.bytes;
+  return out;
+}
+
+void report_duplicates(const JsonParse& parse, std::vector<JsonIssue>& issues) {
+  JsonReader reader(issues);
+  for (const JsonIssue& d : parse.duplicates) reader.fail(d.path, d.message);
 }
 
 }  // namespace tire

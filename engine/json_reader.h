@@ -2,6 +2,7 @@
 // it meets as "/json/pointer: what was expected, got what". One pass finds all of them.
 #pragma once
 
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -72,7 +73,30 @@ struct JsonBudget {
   std::size_t max_string_bytes;
   const char* document;  // "a level", "a replay": for messages
 };
-std::optional<nlohmann::json> parse_json_bounded(const std::string& text, const JsonBudget& budget, std::string& error);
+
+// What reading a document cost, counted rather than timed: tests bound the work a hostile file
+// causes with these, the same on any machine and in any build.
+struct JsonWork {
+  std::uintmax_t file_bytes = 0;  // read from disk (0: refused before reading, or given as text)
+  std::size_t parsed_bytes = 0;   // characters the parser consumed before it finished or refused
+  std::size_t values = 0;         // values built into the tree
+  std::size_t string_bytes = 0;   // bytes of the strings and keys kept in the tree
+};
+
+struct JsonParse {
+  std::optional<nlohmann::json> doc;  // empty when the text was refused
+  std::string error;                  // why: "/json/pointer: what was wrong" or "invalid JSON: ..."
+  // Each key given again in the same object, at the path of the repeat, "key given twice (first at
+  // line N)". The tree keeps the last value; a reader refuses the document when any is here.
+  std::vector<JsonIssue> duplicates;
+  JsonWork work;
+};
+
+// Parses untrusted text within `budget`. Never throws.
+JsonParse parse_json_bounded(const std::string& text, const JsonBudget& budget);
+
+// Records the parse's duplicate keys as issues (first among a reader's, under its issue cap).
+void report_duplicates(const JsonParse& parse, std::vector<JsonIssue>& issues);
 
 std::string join_path(const std::string& path, std::string_view key);
 std::string join_path(const std::string& path, std::size_t index);

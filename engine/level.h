@@ -34,6 +34,8 @@ struct Level {
 struct LevelLimits {
   static constexpr std::uintmax_t max_file_bytes = 64ull << 20;
   static constexpr int max_depth = 64;
+  static constexpr std::size_t max_json_values = 1'000'000;  // numbers, strings, arrays, objects
+  static constexpr std::size_t max_string_bytes = 4096;      // of one string or key
   static constexpr std::size_t max_tires = 10000;
   static constexpr std::size_t max_obstacles = 100000;
   static constexpr std::size_t max_props = 10000;
@@ -50,6 +52,7 @@ std::string apply_override(nlohmann::json& doc, const std::string& assignment);
 struct LevelLoad {
   std::optional<Level> level;
   std::vector<std::string> errors;  // "FILE: /json/path: what was expected, got what"
+  JsonWork work;                    // what reading it cost (file and parser), counted
 };
 
 // Reads, parses (with the size and depth limits), applies overrides and validates a level file.

@@ -17,7 +17,8 @@ using json = nlohmann::json;
 // deep tree: the largest legitimate level (a 100 000-point chain, 10 000 tires, 100 000
 // obstacles) holds under a million values, and no string it needs is longer than 4 KiB. A
 // million values make a tree of at most about 150 MB.
-constexpr JsonBudget kLevelBudget{LevelLimits::max_depth, 1'000'000, 4096, "a level"};
+constexpr JsonBudget kLevelBudget{LevelLimits::max_depth, LevelLimits::max_json_values, LevelLimits::max_string_bytes,
+                                  "a level"};
 
 // Splits "a.b.0.c" into its parts.
 std::vector<std::string> split_dotted(const std::string& path) {
@@ -40,6 +41,8 @@ std::string apply_override(json& doc, const std::string& assignment) {
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc{} || end != text.data() + text.size() || text.empty())
     return "--set " + assignment + ": value must be a number, got \"" + text + "\"";
+  // from_chars reads "nan" and "inf"; JSON has no such numbers, and no key takes one.
+  if (!std::isfinite(value)) return "--set " + assignment + ": value must be a finite number, got " + text;
 
   json* node = &doc;
   for (const std::string& part : split_dotted(key)) {
@@ -67,19 +70,21 @@ std::string apply_override(json& doc, const std::string& assignment) {
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides) {
   LevelLoad out;
-  std::string parse_error;
-  std::optional<json> parsed = parse_json_bounded(text, kLevelBudget, parse_error);
-  if (!parsed) {
-    out.errors.push_back(file + ": " + parse_error);
+  JsonParse parse = parse_json_bounded(text, kLevelBudget);
+  out.work = parse.work;
+  if (!parse.doc) {
+    out.errors.push_back(file + ": " + parse.error);
     return out;
   }
-  json& doc = *parsed;
+  json& doc = *parse.doc;
   for (const std::string& assignment : overrides) {
     if (std::string err = apply_override(doc, assignment); !err.empty()) out.errors.push_back(file + ": " + err);
   }
   if (!out.errors.empty()) return out;
   std::vector<JsonIssue> issues;
+  report_duplicates(parse, issues);
   out.level = read_level(doc, issues);
+  if (!issues.empty()) out.level.reset();
   for (const JsonIssue& issue : issues)
     out.errors.push_back(file + ": " + (issue.path.empty() ? "/" : issue.path) + ": " + issue.message);
   return out;
@@ -88,8 +93,10 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
 LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::string error;
   const auto text = read_file(file, LevelLimits::max_file_bytes, error);
-  if (!text) return {std::nullopt, {file.string() + ": " + error}};
-  return load_level_text(*text, file.string(), overrides);
+  if (!text) return {std::nullopt, {file.string() + ": " + error}, {}};
+  LevelLoad out = load_level_text(*text, file.string(), overrides);
+  out.work.file_bytes = text->size();
+  return out;
 }
 
 void populate_world(const Level& level, World& world) {

@@ -24,7 +24,8 @@ constexpr std::size_t kMaxCheckpoints = 500'000;
 constexpr std::size_t kMaxBoxes = 100'000;
 constexpr std::size_t kMaxSpawns = LevelLimits::max_tires;
 constexpr std::size_t kMaxRestarts = 10'000;
-constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, 2'500'000, 4096, "a replay"};
+constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, ReplayLimits::max_json_values, LevelLimits::max_string_bytes,
+                                   "a replay"};
 
 // The range of each key a replay may tune: those the level reference gives the same key (a tire's
 // mass up to ten times the largest a level allows: the game's tuning panel scales masses by up to 10).
@@ -231,13 +232,17 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
 }
 
 ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
-  std::string parse_error;
-  std::optional<json> parsed = parse_json_bounded(text, kReplayBudget, parse_error);
-  if (!parsed) return {std::nullopt, {file + ": " + parse_error}};
-  const json& doc = *parsed;
-  std::vector<JsonIssue> issues;
   ReplayLoad out;
-  out.replay = read_replay(doc, issues);
+  const JsonParse parse = parse_json_bounded(text, kReplayBudget);
+  out.work = parse.work;
+  if (!parse.doc) {
+    out.errors.push_back(file + ": " + parse.error);
+    return out;
+  }
+  std::vector<JsonIssue> issues;
+  report_duplicates(parse, issues);
+  out.replay = read_replay(*parse.doc, issues);
+  if (!issues.empty()) out.replay.reset();
   for (const JsonIssue& issue : issues)
     out.errors.push_back(file + ": " + (issue.path.empty() ? "/" : issue.path) + ": " + issue.message);
   return out;
@@ -246,8 +251,10 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
 ReplayLoad load_replay_file(const std::filesystem::path& file) {
   std::string error;
   const auto text = read_file(file, std::min(kMaxFileBytes, ReplayLimits::max_file_bytes), error);
-  if (!text) return {std::nullopt, {file.string() + ": " + error}};
-  return load_replay_text(*text, file.string());
+  if (!text) return {std::nullopt, {file.string() + ": " + error}, {}};
+  ReplayLoad out = load_replay_text(*text, file.string());
+  out.work.file_bytes = text->size();
+  return out;
 }
 
 std::string replay_to_json(const Replay& replay) {
@@ -337,6 +344,7 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
     }
     for (; next_box < boxes.size() && boxes[next_box]->tick <= tick; ++next_box) {
       const ReplayBox& b = *boxes[next_box];
+      ++out.box_checks;
       if (b.tick != tick) continue;
       if (b.tire >= world->tires().size()) {
         out.failures.push_back("tick " + std::to_string(tick) + ": no tire " + std::to_string(b.tire) + " (there are " +

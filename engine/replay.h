@@ -70,6 +70,7 @@ struct ReplayLimits {
   static constexpr std::uintmax_t max_file_bytes = 256ull << 20;
   static constexpr std::uint64_t max_ticks = 100'000'000;  // over 19 days at 60 Hz
   static constexpr std::size_t max_inputs = 10'000'000;
+  static constexpr std::size_t max_json_values = 2'500'000;
 };
 
 // Keys a replay (or a script) may tune: the ones World::set_parameter knows.
@@ -80,6 +81,7 @@ std::optional<Replay> read_replay(const nlohmann::json& doc, std::vector<JsonIss
 struct ReplayLoad {
   std::optional<Replay> replay;
   std::vector<std::string> errors;  // "FILE: /json/path: what was expected, got what"
+  JsonWork work;                    // what reading it cost (file and parser), counted
 };
 ReplayLoad load_replay_file(const std::filesystem::path& file);
 ReplayLoad load_replay_text(const std::string& text, const std::string& file);
@@ -101,6 +103,7 @@ struct ReplayOutcome {
   std::optional<std::uint64_t> first_divergent_tick;  // first checkpoint whose hash differs
   std::optional<std::uint64_t> last_matching_tick;    // the one before it that agreed (or 0: the start)
   std::vector<std::string> failures;                  // every expectation that broke, in words
+  std::size_t box_checks = 0;                         // centroid boxes looked at (once each at most)
 };
 
 // Runs the replay's ticks on `level` and checks every expectation.

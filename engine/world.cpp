@@ -66,6 +66,7 @@ bool set_tire_key(Tire& t, std::string_view key, double value) {
 }  // namespace
 
 bool World::set_parameter(std::string_view key, double value) {
+  if (!std::isfinite(value)) return false;
   if (key == "solver.substeps") return config_.substeps = static_cast<int>(value), true;
   if (key == "solver.iterations") return config_.iterations = static_cast<int>(value), true;
   if (key == "solver.damping") return config_.damping = value, true;
@@ -174,12 +175,7 @@ void World::step(const TickInput& input) {
     }
   }
   rigid_.begin_tick(config_.dt);
-  for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) {
-      if (i + 1 < e) tires_[i + 1].prefetch();
-      begin_tick(tires_[i], config_, rigid_);
-    }
-  });
+  sweep_tires([&](Tire& t) { begin_tick(t, config_, rigid_); });
   // Tire–tire contacts only when there is more than one tire: a lone tire skips the pass.
   tire_pairs_.clear();
   if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
@@ -205,12 +201,7 @@ void World::step(const TickInput& input) {
   // and the hand-over keep their own place.
   const bool fuse_substeps = !rigid_.takes_impulses();
   const auto end_substeps = [&](const SubstepContext& previous) {
-    for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) {
-        if (i + 1 < e) tires_[i + 1].prefetch();
-        end_substep(tires_[i], previous);
-      }
-    });
+    sweep_tires([&](Tire& t) { end_substep(t, previous); });
     hand_over_impulses();
   };
   for (int s = 0; s < config_.substeps; ++s) {
@@ -218,20 +209,15 @@ void World::step(const TickInput& input) {
     ctx.time = s * h;
     const bool end_previous_here = s > 0 && fuse_substeps;
     if (s > 0 && !fuse_substeps) end_substeps(previous);
-    for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) {
-        if (i + 1 < e) tires_[i + 1].prefetch();
-        if (end_previous_here) end_substep(tires_[i], previous);
-        begin_substep(tires_[i], ctx);
-        solve_iteration(tires_[i], ctx, config_.iterations == 1);
-      }
+    sweep_tires([&](Tire& t) {
+      if (end_previous_here) end_substep(t, previous);
+      begin_substep(t, ctx);
+      solve_iteration(t, ctx, config_.iterations == 1);
     });
     hand_over_impulses();
     solve_tire_pairs();
     for (int it = 1; it < config_.iterations; ++it) {
-      for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) solve_iteration(tires_[i], ctx, it + 1 == config_.iterations);
-      });
+      sweep_tires([&](Tire& t) { solve_iteration(t, ctx, it + 1 == config_.iterations); });
       hand_over_impulses();
       solve_tire_pairs();
     }
@@ -259,6 +245,16 @@ unsigned World::threads_in_use() const { return tires_.size() >= kParallelMinTir
 void World::set_threads(unsigned threads) {
   threads_ = std::max(1u, threads);
   pool_.reset();
+}
+
+template <typename F>
+void World::sweep_tires(F&& fn) {
+  for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      if (i + 1 < e) tires_[i + 1].prefetch();  // memory-bound in big scenes: load the next one early
+      fn(tires_[i]);
+    }
+  });
 }
 
 template <typename F>

@@ -61,7 +61,8 @@ class World {
   // "solver.substeps|iterations|damping", "player.<key>" or "tires.<key>" for the tire keys
   // friction, kinetic_friction, pressure, material_damping, rolling_resistance,
   // drive_acceleration, jump_speed, max_speed, mass, mass_scale (times the tire's spawn mass),
-  // compliance.outer|inner|spoke|pressure. False for an unknown key.
+  // compliance.outer|inner|spoke|pressure. False, changing nothing, for an unknown key or a value
+  // that is not finite.
   bool set_parameter(std::string_view key, double value);
   void show_message(std::string_view text, double seconds);
   void set_checkpoint(Vec2 position) { checkpoint_ = position; }
@@ -116,6 +117,9 @@ class World {
   // fn(begin, end) over tire indices [0, n): in parallel when the scene is big enough.
   template <typename F>
   void for_tires(std::size_t n, F&& fn);
+  // fn(tire) for every tire, through for_tires, the next tire's data prefetched meanwhile.
+  template <typename F>
+  void sweep_tires(F&& fn);
 
   SolverConfig config_;
   Vec2 gravity_;

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app.h"
+#include "cli_numbers.h"
 
 #ifndef TIRE_LEVELS_DIR
 #define TIRE_LEVELS_DIR "levels"
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
   cli.add_option("--levels-dir", levels_dir, "directory the level menu and next/previous level list")
       ->capture_default_str();
   cli.add_option("--frames", frames, "run exactly N frames (one tick each) and exit; for tests")
-      ->check(CLI::NonNegativeNumber);
+      ->transform(tire_tools::integer_in({0, 1e12}));
   cli.add_option("--press", presses, "scripted key press KEY:FRAME or KEY:FIRST-LAST, e.g. right:0-300, space:120");
   cli.add_option("--screenshot", screenshot, "save the last frame to FILE (BMP)");
   std::string record;

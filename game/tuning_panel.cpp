@@ -27,9 +27,16 @@ bool log_slider(const char* label, double& value, double min, double max, const 
 
 bool slider(const char* label, double& value, double min, double max, const char* format, const char* tip,
             ImGuiSliderFlags flags = 0) {
+  const double before = value;
   const bool changed =
       ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags | ImGuiSliderFlags_AlwaysClamp);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+  // Ctrl+click lets the player type a value; ImGui reads "nan" and "inf" with %lf, and clamping
+  // lets NaN through (every comparison with it is false): such text leaves the value as it was.
+  if (changed && !std::isfinite(value)) {
+    value = before;
+    return false;
+  }
   return changed;
 }
 

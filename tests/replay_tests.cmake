@@ -13,6 +13,8 @@ tirectl_test("replay refuses a truncated file" 2 ARGS replay ${BAD_REPLAYS}/trun
   STDERR "truncated.json: invalid JSON: parse error at line 1")
 tirectl_test("replay names every wrong type" 2 ARGS replay ${BAD_REPLAYS}/wrong-types.json
   STDERR "/ticks: must be an integer.*/inputs/0/steer: must be a number in \\[-1, 1\\], got \"left\".*/expect/status: must be one of")
+tirectl_test("replay refuses keys given twice" 2 ARGS replay ${BAD_REPLAYS}/duplicate-keys.json
+  STDERR "duplicate-keys.json: /inputs/1/steer: key given twice \\(first at line 4\\).*duplicate-keys.json: /ticks: key given twice \\(first at line 2\\)")
 tirectl_test("replay refuses inputs out of order" 2 ARGS replay ${BAD_REPLAYS}/out-of-order.json
   STDERR "/inputs/1/tick: inputs must be in tick order: 10 comes after 50")
 tirectl_test("replay refuses ticks past the end" 2 ARGS replay ${BAD_REPLAYS}/past-the-end.json

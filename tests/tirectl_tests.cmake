@@ -33,6 +33,30 @@ tirectl_test("run applies --set and validates it" 2 ARGS run ${LEVELS}/01-first-
   STDERR "/solver/substeps: must be an integer in \\[1, 256\\], got 0")
 tirectl_test("run refuses a steer outside [-1, 1]" 2 ARGS run ${LEVELS}/01-first-roll.json --steer 3)
 tirectl_test("unknown subcommand is a usage error" 2 ARGS fly)
+# Numbers a user types are finite and in range: NaN fails every comparison, so a range check alone
+# lets it through (issue 18). The message names the option and what was typed.
+tirectl_test("run refuses --steer nan" 2 ARGS run ${LEVELS}/01-first-roll.json --ticks 5 --steer nan
+  STDERR "--steer: must be a number in \\[-1, 1\\], got nan")
+tirectl_test("run refuses --steer inf" 2 ARGS run ${LEVELS}/01-first-roll.json --ticks 5 --steer inf
+  STDERR "--steer: must be a number in \\[-1, 1\\], got inf")
+tirectl_test("run refuses --ticks 1e300" 2 ARGS run ${LEVELS}/01-first-roll.json --ticks 1e300
+  STDERR "--ticks: must be an integer in \\[0, 1e\\+08\\], got 1e300")
+tirectl_test("run takes --ticks 1e2 as 100" 0 ARGS run ${LEVELS}/01-first-roll.json --ticks 1e2 STDOUT "\"ticks\": 100,")
+tirectl_test("run refuses --set solver.substeps=nan" 2 ARGS run ${LEVELS}/01-first-roll.json --set solver.substeps=nan
+  STDERR "--set solver.substeps=nan: value must be a finite number, got nan")
+tirectl_test("run refuses --set tires.0.mass=inf" 2 ARGS run ${LEVELS}/01-first-roll.json --set tires.0.mass=inf
+  STDERR "--set tires.0.mass=inf: value must be a finite number, got inf")
+tirectl_test("bench refuses --seconds nan" 2 ARGS bench --seconds nan --scene prototype
+  STDERR "--seconds: must be a number in \\[0, 3600\\], got nan")
+tirectl_test("bench refuses --threads nan" 2 ARGS bench --threads nan --scene prototype
+  STDERR "--threads: must be an integer in \\[1, 256\\], got nan")
+tirectl_test("tradeoff refuses --game-error nan" 2 ARGS tradeoff --game-error nan
+  STDERR "--game-error: must be a number in \\(0, inf\\), got nan")
+tirectl_test("tradeoff refuses a nan inside a list" 2 ARGS tradeoff --tunnel-clamp 1,nan
+  STDERR "--tunnel-clamp: must be a number in \\[0.1, 1000\\], got nan")
+# A key written twice: every repeat, with its JSON path and the first one's line.
+tirectl_test("validate refuses keys given twice" 2 ARGS validate ${BAD}/bad-duplicate-keys.json
+  STDERR "bad-duplicate-keys.json: /name: key given twice \\(first at line 1\\).*bad-duplicate-keys.json: /solver: key given twice \\(first at line 3\\).*bad-duplicate-keys.json: /tires/0/mass: key given twice \\(first at line 5\\)")
 tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --steps 50
   STDOUT "^scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,p99_ms,[^\n]*\nprototype,1,56,[1-9][0-9]*,0,1,28,1,22,50,")
 tirectl_test("bench counts the contacts and tire pairs of a pile" 0 ARGS bench --scene pile-100 --threads 2 --steps 3 --warmup 10

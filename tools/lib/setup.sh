@@ -33,12 +33,22 @@ tire_ensure_packages() {
   apt-get install -y -q $missing >/dev/null
 }
 
-# Configures once, then builds incrementally into build/.
-tire_build() {
+# The build folder of TIRE_BUILD_TYPE (default Release): build/ for Release, build-debug/ for
+# Debug, build-<type>/ for any other, so that no build type ever reuses another's cache.
+tire_build_dir() {
   local root build_type=${TIRE_BUILD_TYPE:-Release}
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-  if [ ! -f "$root/build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE="$build_type" >/dev/null
+  if [ "$build_type" = Release ]; then echo "$root/build"
+  else echo "$root/build-$(echo "$build_type" | tr '[:upper:]' '[:lower:]')"; fi
+}
+
+# Configures once, then builds incrementally into tire_build_dir.
+tire_build() {
+  local root build
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+  build=$(tire_build_dir)
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE="${TIRE_BUILD_TYPE:-Release}" >/dev/null
   fi
-  cmake --build "$root/build" -j "$(nproc)"
+  cmake --build "$build" -j "$(nproc)"
 }

@@ -9,10 +9,6 @@
 //
 //   build/bin/tire-soak [--minutes 60] [--level levels/07-sandbox.json] [--seed 1] [--max-tires 200]
 //                       [--warmup 3] [--rss-slack-mib 16]
-#include <unistd.h>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -20,11 +16,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
-#include <fstream>
 #include <random>
 #include <string>
 
+#include "cli_numbers.h"
 #include "level.h"
+#include "process_memory.h"
 #include "replay.h"
 #include "world.h"
 
@@ -39,31 +36,8 @@ struct Options {
   double rss_slack_mib = 16.0;
 };
 
-double rss_mib() {
-  std::ifstream statm("/proc/self/statm");
-  long pages_total = 0, pages_resident = 0;
-  statm >> pages_total >> pages_resident;
-  return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-// Bytes the program has allocated and not freed (glibc's count), in MiB: unlike RSS, it does not
-// move with the allocator's fragmentation. -1 where unknown.
-double heap_mib() {
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
-  const struct mallinfo2 m = mallinfo2();
-  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
-#else
-  return -1.0;
-#endif
-}
-
-int usage(const char* why) {
-  std::fprintf(stderr,
-               "tire-soak: %s\nusage: tire-soak [--minutes M] [--level FILE] [--seed S] [--max-tires N] "
-               "[--warmup MINUTES] [--rss-slack-mib MIB]\n",
-               why);
-  return 2;
-}
+using tire_tools::heap_mib;
+using tire_tools::rss_mib;
 
 // The region random inputs aim at: the box around the level's obstacles, shrunk by a margin, upper
 // part (spawns fall in from above, as clicks in the sky would).
@@ -92,23 +66,25 @@ Region region_of(const tire::Level& level) {
 
 int main(int argc, char** argv) {
   Options opt;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (i + 1 >= argc) return usage(("missing value after " + a).c_str());
-    const char* v = argv[++i];
-    char* end = nullptr;
-    if (a == "--minutes") opt.minutes = std::strtod(v, &end);
-    else if (a == "--level") opt.level = v, end = const_cast<char*>(v) + std::char_traits<char>::length(v);
-    else if (a == "--seed") opt.seed = std::strtoull(v, &end, 10);
-    else if (a == "--max-tires") opt.max_tires = std::strtoull(v, &end, 10);
-    else if (a == "--warmup") opt.warmup_minutes = static_cast<int>(std::strtol(v, &end, 10));
-    else if (a == "--rss-slack-mib") opt.rss_slack_mib = std::strtod(v, &end);
-    else return usage(("unknown option " + a).c_str());
-    if (end == v || *end != '\0') return usage(("bad value for " + a + ": " + v).c_str());
+  using tire_tools::integer_in;
+  using tire_tools::number_in;
+  CLI::App cli{"tire-soak: simulated play with random inputs; fails on NaN or growing memory", "tire-soak"};
+  cli.add_option("--minutes", opt.minutes, "simulated minutes to play")->check(number_in({0, 1440, true}))->capture_default_str();
+  cli.add_option("--level", opt.level, "level file to play")->capture_default_str();
+  cli.add_option("--seed", opt.seed, "seed of the random inputs")->transform(integer_in({0, 1e15}))->capture_default_str();
+  cli.add_option("--max-tires", opt.max_tires, "most tires alive at once")->transform(integer_in({1, 10000}))->capture_default_str();
+  cli.add_option("--warmup", opt.warmup_minutes, "simulated minutes before memory is watched")
+      ->transform(integer_in({0, 1440}))
+      ->capture_default_str();
+  cli.add_option("--rss-slack-mib", opt.rss_slack_mib, "how much RSS may grow after the warm-up (MiB)")
+      ->check(number_in({0, 1e6}))
+      ->capture_default_str();
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? 0 : 2;
   }
-  if (!(opt.minutes > 0 && opt.minutes <= 24 * 60) || opt.max_tires < 1 || opt.max_tires > 10000 ||
-      opt.warmup_minutes < 0)
-    return usage("--minutes in (0, 1440], --max-tires in [1, 10000], --warmup >= 0");
 
   const tire::LevelLoad load = tire::load_level_file(opt.level);
   if (!load.level) {

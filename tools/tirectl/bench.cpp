@@ -1,22 +1,17 @@
 // Performance scenes, timed with a monotonic clock outside the simulation. CSV on stdout.
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <fstream>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <iostream>
 #include <memory>
 #include <string_view>
 
-#include <sys/resource.h>
-#include <unistd.h>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 #include "commands.h"
 #include "level.h"
+#include "process_memory.h"
 #include "tire_solver.h"
 #include "world.h"
 
@@ -189,33 +184,11 @@ double quantile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, i == 0 ? 0 : i - 1)];
 }
 
-// The process's resident memory now (MiB), from /proc/self/statm; -1 where unknown.
-double rss_mib() {
-  std::ifstream statm("/proc/self/statm");
-  double pages_total = 0.0, pages_resident = -1.0;
-  if (!(statm >> pages_total >> pages_resident)) return -1.0;
-  return pages_resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-// Bytes allocated and not yet freed (glibc's count), in MiB: unlike RSS it does not move with the
-// allocator's caching. -1 where unknown.
-double heap_mib() {
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
-  const struct mallinfo2 m = mallinfo2();
-  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
-#else
-  return -1.0;
-#endif
-}
-
-// The process's peak resident memory so far (MiB).
-double peak_rss_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
 }  // namespace
+
+using tire_tools::heap_mib;
+using tire_tools::peak_rss_mib;
+using tire_tools::rss_mib;
 
 int bench(const BenchOptions& options) {
   for (const std::string& name : options.scenes) {

@@ -2,23 +2,26 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "cli_numbers.h"
 #include "commands.h"
 #include "tradeoff.h"
 
 int main(int argc, char** argv) {
+  using tire_tools::integer_in;
+  using tire_tools::number_in;
   CLI::App app{"tirectl: run, validate and measure soft-tire levels without a window"};
   app.require_subcommand(1);
 
   tirectl::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Step a level headless and print its final state as JSON");
   run_cmd->add_option("level", run.level, "Level file (JSON)")->required();
-  run_cmd->add_option("--ticks", run.ticks, "Fixed ticks to step")->check(CLI::Range(0LL, 100000000LL));
+  run_cmd->add_option("--ticks", run.ticks, "Fixed ticks to step")->transform(integer_in({0, 1e8}));
   run_cmd->add_option("--set", run.overrides, "Override a numeric key by dotted path, e.g. solver.substeps=16");
-  run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")->check(CLI::Range(-1.0, 1.0));
+  run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")->check(number_in({-1, 1}));
   run_cmd->add_option("--jump-at", run.jump_at, "Ask the player to jump at this tick (repeatable)")
-      ->check(CLI::NonNegativeNumber);
+      ->transform(integer_in({0, 1e8}));
   run_cmd->add_option("--trace", run.trace_every, "Every N ticks, print a readable line about the player on stderr")
-      ->check(CLI::PositiveNumber);
+      ->transform(integer_in({1, 1e8}));
 
   run_cmd->add_option("--input", run.input, "Drive the player with the inputs of this replay file");
   run_cmd->add_option("--record", run.record, "Record the run as a replay file (written atomically)");
@@ -39,15 +42,15 @@ int main(int argc, char** argv) {
   CLI::App* bench_cmd = app.add_subcommand("bench", "Time the performance scenes; CSV on stdout");
   bench_cmd->add_option("--scene", bench.scenes, "Only these scenes (repeatable; default all)");
   bench_cmd->add_option("--threads", bench.threads, "Threads to step with (default: the hardware's)")
-      ->check(CLI::Range(1, 256));
+      ->transform(integer_in({1, 256}));
   bench_cmd->add_option("--steps", bench.steps, "Timed steps per scene (default: as many as --seconds allow, at least 30)")
-      ->check(CLI::Range(1, 10000000));
+      ->transform(integer_in({1, 1e7}));
   bench_cmd->add_option("--seconds", bench.seconds, "Timing budget per scene when --steps is not given")
-      ->check(CLI::Range(0.0, 3600.0));
-  bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")->check(CLI::Range(0, 1000000));
+      ->check(number_in({0, 3600}));
+  bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")->transform(integer_in({0, 1e6}));
   bench_cmd->add_option("--report-every", bench.report_every,
                         "Every N timed steps, print the recent median and p99, RSS and heap in use to stderr")
-      ->check(CLI::Range(1, 10000000));
+      ->transform(integer_in({1, 1e7}));
 
   tirectl::TradeoffOptions tradeoff;
   CLI::App* tradeoff_cmd = tirectl::add_tradeoff_command(app, tradeoff);

@@ -25,6 +25,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cli_numbers.h"
 #include "commands.h"
 #include "file_io.h"
 #include "solver_config.h"
@@ -469,45 +470,48 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
 }  // namespace
 
 CLI::App* add_tradeoff_command(CLI::App& app, TradeoffOptions& options) {
+  using tire_tools::integer_in;
+  using tire_tools::number_in;
+  const tire::Range kPositive{0, tire_tools::kUnbounded, true, true};
   CLI::App* cmd = app.add_subcommand(
       "tradeoff", "Measure error against cost over substeps, iterations and segments; writes DIR/tradeoff.csv and .svg");
   cmd->add_option("--substeps", options.substeps, "Substeps to sweep, e.g. 1,2,4,8")
-      ->delimiter(',')->check(CLI::Range(1, 256));
+      ->delimiter(',')->transform(integer_in({1, 256}));
   cmd->add_option("--iterations", options.iterations, "Iterations to sweep, e.g. 1,2,4")
-      ->delimiter(',')->check(CLI::Range(1, 64));
+      ->delimiter(',')->transform(integer_in({1, 64}));
   cmd->add_option("--segments", options.segments, "Tire segments to sweep, e.g. 12,28,64")
-      ->delimiter(',')->check(CLI::Range(6, 256));
+      ->delimiter(',')->transform(integer_in({6, 256}));
   cmd->add_option("--tunnel-clamp", options.tunnel_clamp,
                            "Anti-tunneling clamps to sweep (rest segments per substep); the first is the main one")
-      ->delimiter(',')->check(CLI::Range(0.1, 1000.0));
+      ->delimiter(',')->check(number_in({0.1, 1000}));
   cmd->add_option("--max-sweeps", options.max_sweeps,
                            "Skip settings with substeps x iterations above this (default 512)")
-      ->check(CLI::Range(1, 65536));
+      ->transform(integer_in({1, 65536}));
   cmd->add_option("--scenarios", options.scenarios, "Only these scenarios: rest,rest-soft,drop,slope,crush,impact")
       ->delimiter(',');
   cmd->add_option("--repeats", options.repeats, "Timed runs per setting; each tick's median over them is used (default 3)")
-      ->check(CLI::Range(1, 1000));
+      ->transform(integer_in({1, 1000}));
   cmd->add_option("--ref-substeps", options.ref_substeps,
                            "Substeps of the converged reference (default: each scenario's own)")
-      ->check(CLI::Range(1, 65536));
+      ->transform(integer_in({1, 65536}));
   cmd->add_option("--ref-iterations", options.ref_iterations,
                            "Iterations of the converged reference (default: each scenario's own)")
-      ->check(CLI::Range(1, 64));
+      ->transform(integer_in({1, 64}));
   cmd->add_option("--material-damping", options.material_damping,
                            "The tire's material damping time (s) in every run (default 1e-4; TireSpec's is 5e-3)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in({0, 1}));
   cmd->add_option("--game-error", options.game_error,
                            "A game setting's centroid error bound in each scenario (m; default 0.025)...")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(kPositive));
   cmd->add_option("--game-relative", options.game_relative,
                            "...or this fraction of how far the tire moves, if larger (default 0.1)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(kPositive));
   cmd->add_option("--accurate-error", options.accurate_error,
                            "An accurate setting's centroid error bound (m; default 0.0025)...")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(kPositive));
   cmd->add_option("--accurate-relative", options.accurate_relative,
                            "...or this fraction of how far the tire moves, if larger (default 0.01)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(kPositive));
   cmd->add_option("--out", options.out, "Output directory (created if missing)");
   cmd->add_flag("!--no-progress", options.progress, "No progress bar on stderr");
   return cmd;
