@@ -9,9 +9,9 @@
 #include <variant>
 #include <vector>
 
-#include "level.h"
-#include "replay.h"
-#include "world.h"
+#include "tire/io/level.h"
+#include "tire/replay/replay.h"
+#include "tire/world/world.h"
 
 namespace tire::fuzz {
 

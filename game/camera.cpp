@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "world.h"
+#include "tire/world/world.h"
 
 namespace game {
 

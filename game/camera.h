@@ -2,8 +2,8 @@
 // bounds, and its scale follows the window size: about kViewHeight metres are always in view.
 #pragma once
 
-#include "aabb.h"
-#include "vec2.h"
+#include "tire/math/aabb.h"
+#include "tire/math/vec2.h"
 
 namespace tire {
 class World;

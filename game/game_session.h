@@ -11,10 +11,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "level.h"
+#include "tire/io/level.h"
 #include "session_input.h"
 #include "tuning.h"
-#include "world.h"
+#include "tire/world/world.h"
 
 namespace game {
 

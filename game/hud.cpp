@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "world.h"
+#include "tire/world/world.h"
 
 namespace game {
 

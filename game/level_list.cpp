@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "level.h"
+#include "tire/io/level.h"
 
 namespace game {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "level_list.h"
-#include "script_runner.h"
+#include "tire/script/script_runner.h"
 
 struct ImFont;
 

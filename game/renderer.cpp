@@ -7,7 +7,7 @@
 #include <cstring>
 #include <numbers>
 
-#include "world.h"
+#include "tire/world/world.h"
 
 namespace game {
 

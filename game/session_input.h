@@ -11,8 +11,8 @@
 #include <variant>
 #include <vector>
 
-#include "level.h"
-#include "world.h"
+#include "tire/io/level.h"
+#include "tire/world/world.h"
 
 namespace game {
 

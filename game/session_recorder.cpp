@@ -4,7 +4,7 @@
 #include <cmath>
 #include <ctime>
 
-#include "file_io.h"
+#include "tire/io/file_io.h"
 
 namespace game {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "replay.h"
+#include "tire/replay/replay.h"
 #include "session_input.h"
 
 namespace game {

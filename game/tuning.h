@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "session_input.h"
-#include "world.h"
+#include "tire/world/world.h"
 
 namespace game {
 

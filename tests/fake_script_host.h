@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "script_host.h"
-#include "script_runner.h"
+#include "tire/script/script_host.h"
+#include "tire/script/script_runner.h"
 
 namespace tire::test {
 

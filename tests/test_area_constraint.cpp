@@ -4,8 +4,8 @@
 #include <numbers>
 #include <vector>
 
-#include "area_constraint.h"
-#include "particles.h"
+#include "tire/xpbd/area_constraint.h"
+#include "tire/xpbd/particles.h"
 
 using namespace tire;
 

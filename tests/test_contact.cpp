@@ -2,8 +2,8 @@
 // Coulomb friction's physical meaning.
 #include <catch2/catch.hpp>
 
-#include "contact.h"
-#include "particles.h"
+#include "tire/xpbd/contact.h"
+#include "tire/xpbd/particles.h"
 
 using namespace tire;
 

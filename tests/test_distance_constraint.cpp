@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "distance_constraint.h"
-#include "particles.h"
+#include "tire/xpbd/distance_constraint.h"
+#include "tire/xpbd/particles.h"
 
 using namespace tire;
 

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "../fuzz/fuzz_common.h"
-#include "file_io.h"
-#include "level.h"
-#include "replay.h"
+#include "tire/io/file_io.h"
+#include "tire/io/level.h"
+#include "tire/replay/replay.h"
 #include "tire_fixtures.h"
 
 using namespace tire;

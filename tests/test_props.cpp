@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "prop_geometry.h"
+#include "tire/rigid/prop_geometry.h"
 #include "tire_fixtures.h"
 
 using namespace tire;

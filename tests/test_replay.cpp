@@ -5,8 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "file_io.h"
-#include "replay.h"
+#include "tire/io/file_io.h"
+#include "tire/replay/replay.h"
 #include "tire_fixtures.h"
 
 using namespace tire;

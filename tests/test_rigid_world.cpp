@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <random>
 
-#include "rigid_world.h"
+#include "tire/rigid/rigid_world.h"
 
 using namespace tire;
 

@@ -4,7 +4,7 @@
 
 #include "fake_script_host.h"
 #include "script_reader.h"
-#include "script_runner.h"
+#include "tire/script/script_runner.h"
 
 using namespace tire;
 using namespace tire::test;

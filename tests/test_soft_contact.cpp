@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "soft_contact.h"
+#include "tire/tire/soft_contact.h"
 #include "tire_fixtures.h"
 
 using namespace tire;

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "level.h"
-#include "world.h"
+#include "tire/io/level.h"
+#include "tire/world/world.h"
 
 namespace tire::test {
 

@@ -20,10 +20,10 @@
 #include <string>
 
 #include "cli_numbers.h"
-#include "level.h"
+#include "tire/io/level.h"
 #include "process_memory.h"
-#include "replay.h"
-#include "world.h"
+#include "tire/replay/replay.h"
+#include "tire/world/world.h"
 
 namespace {
 

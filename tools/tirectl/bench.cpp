@@ -10,10 +10,10 @@
 
 
 #include "commands.h"
-#include "level.h"
+#include "tire/io/level.h"
 #include "process_memory.h"
-#include "tire_solver.h"
-#include "world.h"
+#include "tire/tire/tire_solver.h"
+#include "tire/world/world.h"
 
 namespace tirectl {
 

@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "commands.h"
-#include "file_io.h"
-#include "replay.h"
+#include "tire/io/file_io.h"
+#include "tire/replay/replay.h"
 
 namespace tirectl {
 

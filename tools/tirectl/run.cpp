@@ -6,11 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "file_io.h"
-#include "level.h"
-#include "replay.h"
-#include "state_hash.h"
-#include "world.h"
+#include "tire/io/file_io.h"
+#include "tire/io/level.h"
+#include "tire/replay/replay.h"
+#include "tire/math/state_hash.h"
+#include "tire/world/world.h"
 
 namespace tirectl {
 

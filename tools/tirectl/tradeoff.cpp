@@ -27,8 +27,8 @@
 
 #include "cli_numbers.h"
 #include "commands.h"
-#include "file_io.h"
-#include "solver_config.h"
+#include "tire/io/file_io.h"
+#include "tire/tire/solver_config.h"
 #include "svg_plot.h"
 #include "tradeoff.h"
 #include "tradeoff_scenarios.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "world.h"
+#include "tire/world/world.h"
 
 namespace tirectl {
 

@@ -1,7 +1,7 @@
 #include <iostream>
 
 #include "commands.h"
-#include "level.h"
+#include "tire/io/level.h"
 
 namespace tirectl {
 

@@ -1,0 +1,69 @@
+// A level as read from its JSON file, and the one loader every program uses. Keys, units,
+// defaults and ranges are those of levels/README.md.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tire/io/json_reader.h"
+#include "tire/rigid/obstacle.h"
+#include "tire/rigid/prop_spec.h"
+#include "tire/script/script_spec.h"
+#include "tire/tire/solver_config.h"
+#include "tire/tire/tire_spec.h"
+
+namespace tire {
+
+class World;
+
+struct Level {
+  std::string name;
+  std::string description;
+  Vec2 gravity{0.0, -9.81};
+  SolverConfig solver;
+  std::vector<TireSpec> tires;
+  std::vector<Obstacle> obstacles;
+  std::vector<PropSpec> props;
+  ScriptSpec script;  // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
+};
+
+// Limits enforced before any work is done (CONTRACTS.md "Limits").
+struct LevelLimits {
+  static constexpr std::uintmax_t max_file_bytes = 64ull << 20;
+  static constexpr int max_depth = 64;
+  static constexpr std::size_t max_json_values = 1'000'000;  // numbers, strings, arrays, objects
+  static constexpr std::size_t max_string_bytes = 4096;      // of one string or key
+  static constexpr std::size_t max_tires = 10000;
+  static constexpr std::size_t max_obstacles = 100000;
+  static constexpr std::size_t max_props = 10000;
+  static constexpr double max_coordinate = 10000.0;  // m
+};
+
+// Reads a level from parsed JSON. Returns the level when there were no issues.
+std::optional<Level> read_level(const nlohmann::json& doc, std::vector<JsonIssue>& issues);
+
+// One "--set a.b.0.c=value" override: sets a numeric value at a dotted path, creating missing
+// object keys (which validation then judges like any other key). Returns an error text or "".
+std::string apply_override(nlohmann::json& doc, const std::string& assignment);
+
+struct LevelLoad {
+  std::optional<Level> level;
+  std::vector<std::string> errors;  // "FILE: /json/path: what was expected, got what"
+  JsonWork work;                    // what reading it cost (file and parser), counted
+};
+
+// Reads, parses (with the size and depth limits), applies overrides and validates a level file.
+LevelLoad load_level_file(const std::filesystem::path& file,
+                          const std::vector<std::string>& overrides = {});
+// The same, from text already in memory; `file` only names it in messages.
+LevelLoad load_level_text(const std::string& text, const std::string& file,
+                          const std::vector<std::string>& overrides = {});
+
+// Adds the level's obstacles, props, tires and script to an empty world built with its solver and
+// gravity.
+void populate_world(const Level& level, World& world);
+
+}  // namespace tire

@@ -1,0 +1,128 @@
+// Replays (format "tire-replay/1", CONTRACTS.md): the level a session ran, every input that
+// reached the World, tick by tick, and what the run must come to. The game records them, tirectl
+// records and checks them, and the replay suite runs them in ctest.
+//
+// Inputs are changes: steer holds until the next steer; jump, spawn, grab, drag, release, set,
+// gravity and restart act once, at their tick, before that tick's step. Several inputs may share
+// a tick; they apply in file order.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tire/io/json_reader.h"
+#include "tire/io/level.h"
+#include "tire/math/vec2.h"
+#include "tire/world/world.h"
+
+namespace tire {
+
+inline constexpr const char* kReplayFormat = "tire-replay/1";
+
+struct ReplayInput {
+  std::uint64_t tick = 0;
+  std::optional<double> steer;  // [-1, 1], holds
+  bool jump = false;
+  std::optional<Vec2> spawn;    // a default tire at this point (a mouse click)
+  std::optional<Vec2> grab;     // grab the tire at this point (mouse press)
+  double grab_radius = kGrabRadius;  // how near a tread particle the press must be (m)
+  std::optional<Vec2> drag;     // move the grab (mouse drag)
+  bool release = false;         // let go (mouse release)
+  std::optional<std::string> set_key;  // a tuning change: World::set_parameter(key, value)
+  double set_value = 0.0;
+  std::optional<Vec2> gravity;  // a tuning change of gravity
+  bool restart = false;         // the level restarted (R)
+};
+
+struct ReplayCheckpoint {
+  std::uint64_t tick = 0;  // the state after this many ticks
+  std::string hash;
+};
+
+// A tolerance instead of an exact hash: tire `tire` (index in the world's list) has its centroid
+// inside [min, max] after `tick` ticks.
+struct ReplayBox {
+  std::uint64_t tick = 0;
+  std::size_t tire = 0;
+  Vec2 min;
+  Vec2 max;
+};
+
+struct ReplayExpect {
+  std::optional<std::string> status;  // running | won | lost, at the end
+  std::vector<ReplayCheckpoint> checkpoints;
+  std::optional<std::string> hash;    // after the last tick
+  std::vector<ReplayBox> boxes;
+};
+
+struct Replay {
+  std::string level;         // path, relative to the replay file
+  std::string level_sha256;  // of the level file's bytes when recorded
+  std::uint64_t ticks = 0;
+  std::vector<ReplayInput> inputs;
+  ReplayExpect expect;
+};
+
+struct ReplayLimits {
+  static constexpr std::uintmax_t max_file_bytes = 256ull << 20;
+  static constexpr std::uint64_t max_ticks = 100'000'000;  // over 19 days at 60 Hz
+  static constexpr std::size_t max_inputs = 10'000'000;
+  static constexpr std::size_t max_json_values = 2'500'000;
+};
+
+// Keys a replay (or a script) may tune: the ones World::set_parameter knows.
+bool is_tunable_key(std::string_view key);
+
+std::optional<Replay> read_replay(const nlohmann::json& doc, std::vector<JsonIssue>& issues);
+
+struct ReplayLoad {
+  std::optional<Replay> replay;
+  std::vector<std::string> errors;  // "FILE: /json/path: what was expected, got what"
+  JsonWork work;                    // what reading it cost (file and parser), counted
+};
+ReplayLoad load_replay_file(const std::filesystem::path& file);
+ReplayLoad load_replay_text(const std::string& text, const std::string& file);
+
+std::string replay_to_json(const Replay& replay);
+
+// Plays inputs into a world. `held_steer` carries the steer between ticks. A restart rebuilds the
+// world from `level`.
+void apply_input(const ReplayInput& input, World& world, const Level& level, double& held_steer, bool& jump);
+
+// Builds a fresh world for a level.
+std::unique_ptr<World> make_world(const Level& level);
+
+// What a replay run came to.
+struct ReplayOutcome {
+  std::string status;
+  std::string hash;
+  std::vector<ReplayCheckpoint> checkpoints;  // actual hashes at the expected checkpoint ticks
+  std::optional<std::uint64_t> first_divergent_tick;  // first checkpoint whose hash differs
+  std::optional<std::uint64_t> last_matching_tick;    // the one before it that agreed (or 0: the start)
+  std::vector<std::string> failures;                  // every expectation that broke, in words
+  std::size_t box_checks = 0;                         // centroid boxes looked at (once each at most)
+};
+
+// Runs the replay's ticks on `level` and checks every expectation.
+ReplayOutcome run_replay(const Replay& replay, const Level& level);
+
+// Records a run: call input() for each input as it happens and step() after each World::step;
+// finish() gives the replay with its expectations (status, final hash, a checkpoint every
+// `checkpoint_every` ticks).
+class ReplayRecorder {
+ public:
+  ReplayRecorder(std::string level_path, std::string level_sha256, std::uint64_t checkpoint_every = 30);
+  void input(const ReplayInput& in) { replay_.inputs.push_back(in); }
+  void after_step(const World& world);
+  Replay finish(const World& world) const;
+  std::uint64_t ticks() const { return replay_.ticks; }
+
+ private:
+  Replay replay_;
+  std::uint64_t checkpoint_every_;
+};
+
+}  // namespace tire

@@ -1,0 +1,132 @@
+// The rigid side of the world, in one Box2D world: the static box obstacles and the props (static,
+// dynamic and kinematic bodies). Box2D's broad phase answers which of them are near a tire; Box2D
+// integrates the props and their contacts with each other; the tire's solver handles particle
+// contacts itself and hands the reaction impulses back (two-way coupling).
+//
+// Within a tick the tire sees each prop at a predicted pose: its pose at the start of the tick
+// moved on with its velocity, and that velocity includes the impulses the tires gave it so far this
+// tick, so a crate gives way as it is pushed. At the end of the tick the impulses go to Box2D and
+// Box2D steps (only if something can move).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "tire/rigid/obstacle.h"
+#include "tire/rigid/prop_geometry.h"
+#include "tire/rigid/prop_spec.h"
+#include "tire/math/state_hash.h"
+
+class b2World;
+class b2Body;
+
+namespace tire {
+
+struct Prop {
+  PropSpec spec;
+  PropGeometry geometry;
+  b2Body* body = nullptr;
+  bool alive = true;
+
+  // Tick state (doubles, read from Box2D at the start of the tick).
+  Pose start_pose;          // body origin at the start of the tick
+  Vec2 start_center;        // centre of mass, world, at the start of the tick
+  Vec2 local_center;        // centre of mass in the body frame
+  Vec2 velocity;            // of the centre of mass, including this tick's impulses so far
+  double omega = 0.0;       // angular velocity, including this tick's impulses so far
+  double inverse_mass = 0.0;     // 0: static or kinematic (infinite mass for the tire)
+  double inverse_inertia = 0.0;  // about the centre of mass
+  Vec2 impulse;                  // this tick's impulses from tires (N·s)
+  double angular_impulse = 0.0;  // their moment about the centre of mass (N·m·s)
+
+  // What holds a dynamic prop up (shock propagation, one level deep): the normals, pointing into
+  // the prop, of its Box2D contacts with static and kinematic bodies at the start of the tick. A
+  // push into a support cannot move the prop this tick; the support (in Box2D) takes it.
+  static constexpr int kMaxSupports = 4;
+  Vec2 supports[kMaxSupports];
+  int support_count = 0;
+  // How freely the prop moves when pushed along unit vector `push`: 1 when nothing holds it that
+  // way, 0 straight into a support, 1 − (push·s)² in between (only the part of the push along the
+  // support's surface can move it). Scales the prop's inverse mass for the tire's contacts.
+  double mobility(Vec2 push) const {
+    double m = 1.0;
+    for (int i = 0; i < support_count; ++i)
+      if (const double into = -dot(push, supports[i]); into > 0.0) m = std::min(m, 1.0 - into * into);
+    return m;
+  }
+
+  // Kinematic path state.
+  std::size_t next_waypoint = 0;
+  int direction = 1;  // +1 forward along the waypoints, −1 back
+
+  // The predicted pose and centre at time t (s) into the tick.
+  Pose pose_at(double t) const;
+  Vec2 center_at(double t) const { return start_center + velocity * t; }
+  // Velocity of the body's material point at world position p, time t.
+  Vec2 point_velocity(Vec2 p, double t) const { return velocity + perp(p - center_at(t)) * omega; }
+  bool is_dynamic() const { return inverse_mass > 0.0; }
+};
+
+class RigidWorld {
+ public:
+  explicit RigidWorld(Vec2 gravity);
+  ~RigidWorld();
+  RigidWorld(const RigidWorld&) = delete;
+  RigidWorld& operator=(const RigidWorld&) = delete;
+  RigidWorld(RigidWorld&&) noexcept;
+  RigidWorld& operator=(RigidWorld&&) noexcept;
+
+  std::uint32_t add_obstacle(const Obstacle& obstacle);
+  const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+
+  // Props keep their index for the life of the world; a removed prop stays as a dead slot.
+  std::uint32_t add_prop(const PropSpec& spec);
+  bool remove_prop(std::string_view name);
+  std::optional<std::uint32_t> find_prop(std::string_view name) const;
+  const std::vector<Prop>& props() const { return props_; }
+  Prop& prop(std::uint32_t i) { return props_[i]; }
+  // A live prop's pose and velocity now (Box2D's, between ticks).
+  Pose current_pose(std::uint32_t i) const;
+  Vec2 current_velocity(std::uint32_t i) const;
+  bool path_command(std::string_view name, PathCommand command);
+
+  void set_gravity(Vec2 gravity);
+  // An impulse (N·s) at a live prop's centre of mass, now (between ticks); ignored for a name not
+  // in the world or a prop that cannot move.
+  void apply_impulse_now(std::string_view name, Vec2 impulse);
+
+  // Replaces `obstacles` and `props` with the indices of those whose (fattened) bounds overlap
+  // `region`, ascending. Does not allocate once the vectors have grown to the largest answer.
+  void query(const Aabb& region, std::vector<std::uint32_t>& obstacles, std::vector<std::uint32_t>& props) const;
+
+  // Start of a tick: read every prop's state, steer kinematic props along their paths.
+  void begin_tick(double dt);
+  // A tire's contact pushed prop i with impulse P at world point p (at time t into the tick).
+  void add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t);
+  // End of a tick: hand the impulses to Box2D and step it, if anything can move.
+  void end_tick(double dt);
+
+  // Whether Box2D has anything to integrate (a dynamic or kinematic prop): otherwise it is never
+  // stepped.
+  bool needs_stepping() const { return moving_props_ > 0; }
+  // Whether a tire can push anything (a live dynamic prop): otherwise add_impulse never happens.
+  bool takes_impulses() const { return dynamic_props_ > 0; }
+
+  void hash_into(StateHash& h) const;
+
+ private:
+  void steer_along_path(Prop& p, double dt);
+
+  std::unique_ptr<b2World> world_;
+  b2Body* ground_ = nullptr;  // carries every obstacle fixture
+  std::vector<Obstacle> obstacles_;
+  std::vector<Prop> props_;
+  std::size_t moving_props_ = 0;
+  std::size_t dynamic_props_ = 0;
+};
+
+}  // namespace tire

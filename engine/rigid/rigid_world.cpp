@@ -1,0 +1,315 @@
+#include "tire/rigid/rigid_world.h"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tire {
+
+namespace {
+
+// Fixture user data: which list, and the index in it.
+constexpr std::uintptr_t kPropTag = std::uintptr_t{1} << 31;
+
+// Box2D's own solver settings for the props (its recommended values).
+constexpr int kBox2dVelocityIterations = 8;
+constexpr int kBox2dPositionIterations = 3;
+
+b2Vec2 to_b2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
+Vec2 from_b2(b2Vec2 v) { return {v.x, v.y}; }
+
+class CollectFixtures final : public b2QueryCallback {
+ public:
+  CollectFixtures(std::vector<std::uint32_t>& obstacles, std::vector<std::uint32_t>& props)
+      : obstacles_(obstacles), props_(props) {}
+  bool ReportFixture(b2Fixture* fixture) override {
+    const std::uintptr_t tag = fixture->GetUserData().pointer;
+    if (tag & kPropTag) props_.push_back(static_cast<std::uint32_t>(tag & ~kPropTag));
+    else obstacles_.push_back(static_cast<std::uint32_t>(tag));
+    return true;  // every candidate
+  }
+
+ private:
+  std::vector<std::uint32_t>& obstacles_;
+  std::vector<std::uint32_t>& props_;
+};
+
+b2BodyType body_type(PropType t) {
+  switch (t) {
+    case PropType::dynamic_body: return b2_dynamicBody;
+    case PropType::kinematic_body: return b2_kinematicBody;
+    case PropType::static_body: break;
+  }
+  return b2_staticBody;
+}
+
+}  // namespace
+
+Pose Prop::pose_at(double t) const {
+  // The centre of mass moves with `velocity`, the body turns about it with `omega`.
+  const Pose turned = Pose::make({}, start_pose.angle + omega * t);
+  return Pose::make(center_at(t) - turned.rotate(local_center), turned.angle);
+}
+
+RigidWorld::RigidWorld(Vec2 gravity) : world_(std::make_unique<b2World>(to_b2(gravity))) {
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  ground_ = world_->CreateBody(&def);
+}
+
+RigidWorld::~RigidWorld() = default;
+RigidWorld::RigidWorld(RigidWorld&&) noexcept = default;
+RigidWorld& RigidWorld::operator=(RigidWorld&&) noexcept = default;
+
+std::uint32_t RigidWorld::add_obstacle(const Obstacle& obstacle) {
+  const auto index = static_cast<std::uint32_t>(obstacles_.size());
+  obstacles_.push_back(obstacle);
+  const Vec2 half = (obstacle.box.max - obstacle.box.min) * 0.5;
+  const Vec2 center = (obstacle.box.max + obstacle.box.min) * 0.5;
+  b2PolygonShape shape;
+  shape.SetAsBox(static_cast<float>(half.x), static_cast<float>(half.y), to_b2(center), 0.0f);
+  b2FixtureDef fixture;
+  fixture.shape = &shape;
+  fixture.friction = static_cast<float>(obstacle.friction);
+  fixture.userData.pointer = index;
+  ground_->CreateFixture(&fixture);
+  return index;
+}
+
+std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
+  const auto index = static_cast<std::uint32_t>(props_.size());
+  Prop prop;
+  prop.spec = spec;
+  prop.geometry = PropGeometry::from_spec(spec);
+
+  b2BodyDef def;
+  def.type = body_type(spec.type);
+  def.position = to_b2(spec.position);
+  def.angle = static_cast<float>(spec.angle);
+  def.linearVelocity = to_b2(spec.velocity);
+  def.angularVelocity = static_cast<float>(spec.angular_velocity);
+  prop.body = world_->CreateBody(&def);
+
+  b2FixtureDef fixture;
+  fixture.density = static_cast<float>(spec.density);
+  fixture.friction = static_cast<float>(spec.friction);
+  fixture.restitution = static_cast<float>(spec.restitution);
+  fixture.userData.pointer = kPropTag | index;
+  b2PolygonShape polygon;
+  b2CircleShape circle;
+  b2ChainShape chain;
+  std::vector<b2Vec2> points;
+  for (const Vec2& p : prop.geometry.vertices) points.push_back(to_b2(p));
+  // Box2D's chains are one-sided too, but solid on the left of their direction (their normals
+  // point right, as a counter-clockwise polygon's do); ours are solid on the right. Same side:
+  // reverse the points.
+  if (spec.shape == PropShape::chain) std::reverse(points.begin(), points.end());
+  switch (spec.shape) {
+    case PropShape::box:
+    case PropShape::polygon:
+      polygon.Set(points.data(), static_cast<int32>(points.size()));
+      fixture.shape = &polygon;
+      break;
+    case PropShape::circle:
+      circle.m_radius = static_cast<float>(spec.radius);
+      fixture.shape = &circle;
+      break;
+    case PropShape::chain:
+      if (spec.loop) chain.CreateLoop(points.data(), static_cast<int32>(points.size()));
+      else chain.CreateChain(points.data(), static_cast<int32>(points.size()), points.front(), points.back());
+      fixture.shape = &chain;
+      break;
+  }
+  prop.body->CreateFixture(&fixture);
+  if (spec.type != PropType::static_body) ++moving_props_;
+  if (spec.type == PropType::dynamic_body) ++dynamic_props_;
+  props_.push_back(std::move(prop));
+  return index;
+}
+
+Pose RigidWorld::current_pose(std::uint32_t i) const {
+  const b2Body& b = *props_[i].body;
+  return Pose::make(from_b2(b.GetPosition()), b.GetAngle());
+}
+
+Vec2 RigidWorld::current_velocity(std::uint32_t i) const { return from_b2(props_[i].body->GetLinearVelocity()); }
+
+std::optional<std::uint32_t> RigidWorld::find_prop(std::string_view name) const {
+  for (std::uint32_t i = 0; i < props_.size(); ++i)
+    if (props_[i].alive && props_[i].spec.name == name) return i;
+  return std::nullopt;
+}
+
+bool RigidWorld::remove_prop(std::string_view name) {
+  const auto i = find_prop(name);
+  if (!i) return false;
+  Prop& p = props_[*i];
+  world_->DestroyBody(p.body);
+  p.body = nullptr;
+  p.alive = false;
+  if (p.spec.type != PropType::static_body) --moving_props_;
+  if (p.spec.type == PropType::dynamic_body) --dynamic_props_;
+  return true;
+}
+
+namespace {
+
+// Moves `next` one waypoint on in `direction`, at the ends doing what the path's mode says.
+void advance_waypoint(Prop& p) {
+  KinematicPath& path = p.spec.path;
+  const auto n = static_cast<std::ptrdiff_t>(path.waypoints.size());
+  const auto next = static_cast<std::ptrdiff_t>(p.next_waypoint) + p.direction;
+  if (next >= 0 && next < n) {
+    p.next_waypoint = static_cast<std::size_t>(next);
+    return;
+  }
+  switch (path.mode) {
+    case PathMode::loop:
+      p.next_waypoint = static_cast<std::size_t>((next + n) % n);
+      break;
+    case PathMode::ping_pong:
+      p.direction = -p.direction;
+      if (n > 1) p.next_waypoint = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(p.next_waypoint) + p.direction);
+      break;
+    case PathMode::once:
+      path.running = false;
+      break;
+  }
+}
+
+}  // namespace
+
+bool RigidWorld::path_command(std::string_view name, PathCommand command) {
+  const auto i = find_prop(name);
+  if (!i || props_[*i].spec.type != PropType::kinematic_body) return false;
+  Prop& p = props_[*i];
+  switch (command) {
+    case PathCommand::start: p.spec.path.running = true; break;
+    case PathCommand::stop: p.spec.path.running = false; break;
+    case PathCommand::reverse:
+      // Between waypoints next − direction and next: turn round towards the one it came from.
+      p.direction = -p.direction;
+      if (!p.spec.path.waypoints.empty()) advance_waypoint(p);
+      break;
+  }
+  return true;
+}
+
+void RigidWorld::set_gravity(Vec2 gravity) { world_->SetGravity(to_b2(gravity)); }
+
+void RigidWorld::apply_impulse_now(std::string_view name, Vec2 impulse) {
+  const auto i = find_prop(name);
+  if (!i || props_[*i].spec.type != PropType::dynamic_body) return;
+  props_[*i].body->ApplyLinearImpulseToCenter(to_b2(impulse), true);
+}
+
+void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles,
+                       std::vector<std::uint32_t>& props) const {
+  obstacles.clear();
+  props.clear();
+  // Widen by a float ulp's worth so rounding to float never drops a touching shape.
+  const double scale = std::max({std::abs(region.min.x), std::abs(region.min.y), std::abs(region.max.x),
+                                 std::abs(region.max.y)});
+  const Aabb r = region.expanded(1e-3 + 1e-6 * scale);
+  b2AABB aabb;
+  aabb.lowerBound = to_b2(r.min);
+  aabb.upperBound = to_b2(r.max);
+  CollectFixtures collect(obstacles, props);
+  world_->QueryAABB(&collect, aabb);
+  std::sort(obstacles.begin(), obstacles.end());
+  std::sort(props.begin(), props.end());
+}
+
+void RigidWorld::steer_along_path(Prop& p, double dt) {
+  const KinematicPath& path = p.spec.path;
+  if (path.waypoints.empty()) return;
+  Vec2 velocity;
+  if (path.running) {
+    // Head for the next waypoint at the path's speed, arriving exactly rather than overshooting.
+    const Vec2 to_target = path.waypoints[p.next_waypoint] - from_b2(p.body->GetPosition());
+    const double distance = length(to_target);
+    if (distance <= path.speed * dt) {
+      velocity = to_target / dt;
+      advance_waypoint(p);
+    } else {
+      velocity = to_target * (path.speed / distance);
+    }
+  }
+  p.body->SetLinearVelocity(to_b2(velocity));
+}
+
+void RigidWorld::begin_tick(double dt) {
+  for (Prop& p : props_) {
+    if (!p.alive) continue;
+    if (p.spec.type == PropType::kinematic_body) {
+      steer_along_path(p, dt);
+      p.body->SetAngularVelocity(static_cast<float>(p.spec.angular_velocity));
+    }
+    const b2Body& b = *p.body;
+    p.start_pose = Pose::make(from_b2(b.GetPosition()), b.GetAngle());
+    p.local_center = from_b2(b.GetLocalCenter());
+    p.start_center = from_b2(b.GetWorldCenter());
+    p.velocity = from_b2(b.GetLinearVelocity());
+    p.omega = b.GetAngularVelocity();
+    const bool dynamic = b.GetType() == b2_dynamicBody && b.GetMass() > 0.0f;
+    p.inverse_mass = dynamic ? 1.0 / b.GetMass() : 0.0;
+    // GetInertia is about the body origin; the parallel-axis theorem gives it about the centre.
+    const double inertia = dynamic ? b.GetInertia() - b.GetMass() * length_squared(p.local_center) : 0.0;
+    p.inverse_inertia = inertia > 0.0 ? 1.0 / inertia : 0.0;
+    p.impulse = {};
+    p.angular_impulse = 0.0;
+    p.support_count = 0;
+    if (!dynamic) continue;
+    for (const b2ContactEdge* edge = b.GetContactList(); edge && p.support_count < Prop::kMaxSupports;
+         edge = edge->next) {
+      const b2Contact* contact = edge->contact;
+      if (!contact->IsTouching() || edge->other->GetType() == b2_dynamicBody) continue;
+      b2WorldManifold manifold;
+      contact->GetWorldManifold(&manifold);
+      // Box2D's normal points from fixture A to fixture B; the support's normal points into us.
+      const Vec2 normal = from_b2(manifold.normal);
+      p.supports[p.support_count++] = contact->GetFixtureA()->GetBody() == &b ? -normal : normal;
+    }
+  }
+}
+
+void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t) {
+  Prop& p = props_[i];
+  if (!p.is_dynamic()) return;
+  const double moment = cross(point - p.center_at(t), impulse);
+  p.impulse += impulse;
+  p.angular_impulse += moment;
+  // A free body gives way at once: the rest of the tick sees its new velocity. One resting on
+  // something is moved by Box2D alone, which weighs the push against its support's contact and
+  // friction; within the tick it stays on its course.
+  if (p.support_count > 0) return;
+  p.velocity += impulse * p.inverse_mass;
+  p.omega += moment * p.inverse_inertia;
+}
+
+void RigidWorld::end_tick(double dt) {
+  for (Prop& p : props_) {
+    if (!p.alive || !p.is_dynamic() || (p.impulse == Vec2{} && p.angular_impulse == 0.0)) continue;
+    p.body->ApplyLinearImpulseToCenter(to_b2(p.impulse), true);
+    p.body->ApplyAngularImpulse(static_cast<float>(p.angular_impulse), true);
+  }
+  if (needs_stepping()) world_->Step(static_cast<float>(dt), kBox2dVelocityIterations, kBox2dPositionIterations);
+}
+
+void RigidWorld::hash_into(StateHash& h) const {
+  for (const Prop& p : props_) {
+    h.add(p.alive);
+    if (!p.alive) continue;
+    const b2Body& b = *p.body;
+    h.add(b.GetPosition());
+    h.add(b.GetAngle());
+    h.add(b.GetLinearVelocity());
+    h.add(b.GetAngularVelocity());
+    h.add(p.next_waypoint);
+    h.add(p.direction);
+    h.add(p.spec.path.running);
+  }
+}
+
+}  // namespace tire

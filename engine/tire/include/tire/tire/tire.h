@@ -1,0 +1,158 @@
+// A soft tire: two concentric rings of N particles (outer = tread, inner = rim), distance
+// constraints along both rings and on the spokes between them, and one area constraint on the
+// outer ring. The hub is derived (the mass-weighted centroid), never a free particle.
+//
+// Particle layout: outer ring at [0, N), inner ring at [N, 2N), both counter-clockwise.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include "tire/xpbd/area_constraint.h"
+#include "tire/xpbd/contact.h"
+#include "tire/xpbd/distance_constraint.h"
+#include "tire/xpbd/particles.h"
+#include "tire/rigid/prop_geometry.h"
+#include "tire/tire/tire_spec.h"
+
+namespace tire {
+
+using TireId = std::uint32_t;
+
+// What drives a tire during one tick.
+struct TireControl {
+  double steer = 0.0;  // [-1, 1]; +1 drives towards +x
+  bool jump = false;   // a jump request; consumed at the start of the tick
+};
+
+// A particle that may touch an obstacle or a prop during this substep (narrow-phase candidate),
+// with the friction of the pair already mixed.
+struct ContactPair {
+  std::uint32_t particle;
+  std::uint32_t index;  // into the obstacles, or into prop_frames when is_prop
+  bool is_prop;
+  double mu_static;
+  double mu_kinetic;
+};
+
+// A reaction impulse a tire's contact owes a dynamic prop. Collected per tire while tires are
+// solved (possibly in parallel) and handed to the props afterwards in tire order, so the result
+// never depends on which thread solved what.
+struct PropImpulse {
+  std::uint32_t prop;
+  Vec2 impulse;  // N·s
+  Vec2 point;    // where it acts (world)
+  double time;   // into the tick (s)
+};
+
+// A nearby prop's predicted pose at the start and end of the current substep.
+struct PropFrame {
+  std::uint32_t prop;
+  Pose start;
+  Pose end;
+};
+
+// The tire's motion as a rigid body: what the hub does. Every particle has the same mass m.
+struct RigidMotion {
+  Vec2 centroid;          // hub (m)
+  Vec2 velocity;          // of the hub (m/s)
+  double omega = 0.0;     // angular velocity about the hub (rad/s, CCW): L / I
+  double inertia = 0.0;   // I = Σ m |r|² about the hub (kg m²)
+};
+
+struct Tire {
+  Tire(TireId id, const TireSpec& spec);
+
+  // Puts every particle back where the spec builds it, at rest; forgets contacts and λ.
+  void reset();
+
+  // Live tuning: new compliances (to every constraint of each kind) and a new total mass.
+  void set_compliance(const TireCompliance& compliance);
+  void set_mass(double mass);
+
+  // The constraints of each kind, as ranges of `distance` (rings first, then spokes).
+  std::size_t outer_ring_first() const { return 0; }
+  std::size_t inner_ring_first() const { return n; }
+  std::size_t spokes_first() const { return 2 * n; }
+
+  std::uint32_t segments() const { return n; }
+  std::uint32_t particle_count() const { return 2 * n; }
+  double total_mass() const { return spec.mass; }
+  double particle_mass() const { return spec.mass / (2.0 * n); }  // every particle weighs the same
+
+  // Every particle has the same mass, so mass-weighted means are plain means.
+  Vec2 centroid() const;             // mass-weighted centroid of all particles (the hub)
+  Vec2 velocity() const;             // mass-weighted mean velocity
+  double angular_velocity() const { return rigid_motion().omega; }
+  RigidMotion rigid_motion() const;
+  double area() const;               // current area of the outer ring (m²)
+  double area_ratio() const { return area() / area_constraint.rest_area; }
+  bool grounded() const;             // an outer particle touched ground in the last substep
+  // Particles in contact in the last substep: with a surface, or with another tire (pushed by it or
+  // carrying it).
+  std::size_t touching_particles() const;
+  bool is_finite() const;            // no NaN/Inf in positions or velocities
+  double max_abs_coordinate() const;
+  // The contact record of particle i, marked as written this substep.
+  ContactRecord& touch_contact(std::uint32_t i) {
+    contact_mask[i >> 6] |= std::uint64_t{1} << (i & 63);
+    return contacts[i];
+  }
+  // f(i) for each particle i whose record was written this substep, ascending.
+  template <typename F>
+  void for_each_contact(F&& f) const {
+    for (std::size_t word = 0; word < contact_mask.size(); ++word)
+      for (std::uint64_t bits = contact_mask[word]; bits != 0; bits &= bits - 1)
+        f(static_cast<std::uint32_t>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
+  }
+  // Puts the written records back to default and clears the mask.
+  void clear_contacts();
+
+  // Asks the CPU to start loading what a substep reads (a hint; changes nothing): the world calls
+  // it for the next tire while it solves this one.
+  void prefetch() const;
+
+  TireId id;
+  TireSpec spec;
+  double spawn_mass;            // the mass it was built with: "mass_scale" scales this
+  std::uint32_t n;              // particles per ring
+  double segment_length;        // rest length of one outer-ring segment (m)
+
+  Particles particles;
+  DistanceConstraintSet distance;  // rings, then spokes; ordered so neighbours rarely share a particle
+  AreaConstraint area_constraint;
+  double area_lambda = 0.0;
+  // The rim (inner ring) keeps its area as stiffly as its edges keep their lengths: a wheel's rim is
+  // rigid metal, and without this the ring of fixed edge lengths could fold flat under a heavy load.
+  AreaConstraint rim_area_constraint;
+  double rim_area_lambda = 0.0;
+
+  std::vector<ContactRecord> contacts;        // per particle, this substep (default where untouched)
+  // Bit i set: contacts[i] was written this substep. Only those are visited and cleared, so a
+  // substep costs nothing for the particles nowhere near a surface.
+  std::vector<std::uint64_t> contact_mask;
+  std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
+  std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
+  std::vector<std::uint32_t> prop_candidates; // props near the tire this tick (broad phase)
+  std::vector<PropFrame> prop_frames;         // their poses this substep
+  std::vector<ContactPair> pairs;             // particles near any of them this substep
+  std::vector<PropImpulse> prop_impulses;     // owed to props since they were last handed over
+  std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
+  Vec2 tread_hub;                             // mean of the tread particles, after this iteration's own solve
+  double tread_reach = 0.0;                   // largest distance of a tread particle from tread_hub
+  Vec2 rim_hub;                               // the same for the rim, for the tread–rim contact
+  double rim_reach = 0.0;
+  std::vector<std::uint8_t> on_tire;          // per particle: resting on another tire, this substep
+  TireControl control;
+
+  // A mouse grab: particle `grab_particle` pulled towards `grab_target` by a compliant XPBD
+  // constraint C = |x − target| (compliance grab_compliance), while grabbed.
+  bool grabbed = false;
+  std::uint32_t grab_particle = 0;
+  Vec2 grab_target;
+  double grab_compliance = 1e-4;  // m/N: 10 kg hangs 1 cm below the mouse
+  double grab_lambda = 0.0;
+};
+
+}  // namespace tire

@@ -1,0 +1,47 @@
+// Everything that defines a tire as built: the level's tire object, with SI units and defaults.
+#pragma once
+
+#include "tire/math/vec2.h"
+
+namespace tire {
+
+// Which particle pairs the spokes join: "radial" joins inner i to outer i only (the prototype's
+// layout; the rings can shear against each other at first order), "cross" adds the diagonals
+// inner i – outer i±1, which gives the sidewall shear stiffness.
+enum class SpokePattern { radial, cross };
+
+struct TireCompliance {
+  double outer = 1e-6;     // outer ring (tread) distance constraints (m/N)
+  double inner = 1e-7;     // inner ring (rim) distance constraints (m/N)
+  double spoke = 1e-6;     // spokes (m/N)
+  double pressure = 1e-5;  // area constraint (m⁴/J in 2D)
+};
+
+struct TireSpec {
+  Vec2 position{0.0, 0.5};      // hub position at spawn (m)
+  Vec2 velocity{0.0, 0.0};      // initial velocity (m/s)
+  double angle = 0.0;           // rotation (rad, CCW) from the pose with one tread segment flat at the bottom
+  double angular_velocity = 0.0;  // initial spin (rad/s, counter-clockwise positive)
+  double outer_radius = 0.5;    // R (m)
+  double inner_radius = 0.3;    // r (m), r < R
+  int segments = 28;            // N particles per ring
+  double mass = 10.0;           // whole tire (kg), shared equally by the 2N particles
+  double friction = 0.9;        // static friction coefficient μ_s
+  double kinetic_friction = 0.9;  // kinetic friction coefficient μ_k
+  double pressure = 1.0;        // target area = pressure · rest area
+  TireCompliance compliance;
+  SpokePattern spokes = SpokePattern::cross;
+  // Material damping time τ (s): a dashpot beside every constraint's spring (Kelvin–Voigt rubber),
+  // resisting its rate of change with a force τ·k·dC/dt. It is the rubber's hysteresis: it takes
+  // energy out of bounces and vibrations. 0 is perfectly elastic.
+  double material_damping = 5e-3;
+  // Rolling resistance coefficient C_rr: a grounded tire feels a moment C_rr·N·R against its spin
+  // (N the contact normal force), as in vehicle dynamics (SAE J2452); car tires are near 0.01.
+  double rolling_resistance = 0.01;
+  bool player = false;
+  double drive_acceleration = 12.0;  // tangential acceleration of the tread at full steer (m/s²)
+  double jump_speed = 5.0;           // upward speed a jump adds (m/s)
+  double max_speed = 15.0;           // cap on the hub's horizontal speed and the tread's drive speed (m/s)
+};
+
+}  // namespace tire

@@ -1,0 +1,164 @@
+#include "tire/tire/tire.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tire {
+
+namespace {
+
+// Appends ring edges (i, i+1) of a ring starting at `first`: even edges, then odd ones, so that
+// consecutive constraints share no particle and the CPU can overlap their square roots.
+void add_ring(std::vector<DistanceConstraint>& out, std::uint32_t first, std::uint32_t n,
+              double compliance) {
+  for (std::uint32_t parity = 0; parity < 2; ++parity)
+    for (std::uint32_t i = parity; i < n; i += 2)
+      out.push_back({first + i, first + (i + 1) % n, 0.0, compliance});
+}
+
+}  // namespace
+
+Tire::Tire(TireId id_, const TireSpec& spec_)
+    : id(id_), spec(spec_), spawn_mass(spec_.mass), n(static_cast<std::uint32_t>(spec_.segments)),
+      segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
+  particles.resize(2 * n);
+  contacts.resize(2 * n);
+  contact_mask.resize((2 * n + 63) / 64);
+  grounded_flags.resize(2 * n);
+  candidates.reserve(16);
+  prop_candidates.reserve(16);
+  prop_frames.reserve(16);
+  prop_impulses.reserve(64);
+  pairs.reserve(4 * n);
+  soft_lambda.resize(n);
+  on_tire.resize(2 * n);
+
+  std::vector<DistanceConstraint> list;
+  add_ring(list, 0, n, spec.compliance.outer);
+  add_ring(list, n, n, spec.compliance.inner);
+  for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, i, 0.0, spec.compliance.spoke});
+  if (spec.spokes == SpokePattern::cross) {
+    for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + 1) % n, 0.0, spec.compliance.spoke});
+    for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + n - 1) % n, 0.0, spec.compliance.spoke});
+  }
+  area_constraint = {0, n, 0.0, spec.pressure, spec.compliance.pressure};
+  // The rim's area is as stiff as its ring: α_area = α_inner·r² (m³/N) matches the ring's own
+  // resistance to a change of radius, so a metal rim is nearly rigid and a rubber one is not.
+  rim_area_constraint = {n, n, 0.0, 1.0, spec.compliance.inner * spec.inner_radius * spec.inner_radius};
+  reset();
+  // Rest lengths and rest area are those of the tire as built, so it starts in equilibrium.
+  for (DistanceConstraint& c : list) c.rest_length = length(particles.x[c.b] - particles.x[c.a]);
+  distance = DistanceConstraintSet(std::move(list));
+  area_constraint.rest_area = polygon_area(particles.x.data(), n);
+  rim_area_constraint.rest_area = polygon_area(particles.x.data() + n, n);
+}
+
+void Tire::reset() {
+  const double w = 2.0 * n / spec.mass;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    // At angle 0 the segment between particles n−1 and 0 lies flat at the bottom: a polygon resting
+    // on a vertex is balanced on a knife edge and would tip over, on an edge it is at rest.
+    const double theta = spec.angle - std::numbers::pi / 2 + std::numbers::pi * (2.0 * i + 1.0) / n;
+    const Vec2 dir{std::cos(theta), std::sin(theta)};
+    const Vec2 r_out = dir * spec.outer_radius;
+    const Vec2 r_in = dir * spec.inner_radius;
+    particles.x[i] = spec.position + r_out;
+    particles.x[n + i] = spec.position + r_in;
+    particles.v[i] = spec.velocity + perp(r_out) * spec.angular_velocity;
+    particles.v[n + i] = spec.velocity + perp(r_in) * spec.angular_velocity;
+  }
+  particles.x_prev = particles.x;
+  std::fill(particles.w.begin(), particles.w.end(), w);
+  std::fill(contacts.begin(), contacts.end(), ContactRecord{});
+  std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
+  std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
+  distance.reset_lambda();
+  area_lambda = 0.0;
+  rim_area_lambda = 0.0;
+  control = {};
+}
+
+namespace {
+Vec2 mean(const std::vector<Vec2>& values) {
+  Vec2 sum;
+  for (const Vec2& v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+}  // namespace
+
+void Tire::set_compliance(const TireCompliance& c) {
+  spec.compliance = c;
+  distance.set_compliance(outer_ring_first(), n, c.outer);
+  distance.set_compliance(inner_ring_first(), n, c.inner);
+  distance.set_compliance(spokes_first(), distance.size() - spokes_first(), c.spoke);
+  area_constraint.compliance = c.pressure;
+  rim_area_constraint.compliance = c.inner * spec.inner_radius * spec.inner_radius;
+}
+
+void Tire::set_mass(double mass) {
+  spec.mass = mass;
+  std::fill(particles.w.begin(), particles.w.end(), 2.0 * n / mass);
+}
+
+Vec2 Tire::centroid() const { return mean(particles.x); }
+
+Vec2 Tire::velocity() const { return mean(particles.v); }
+
+RigidMotion Tire::rigid_motion() const {
+  RigidMotion m{centroid(), velocity(), 0.0, 0.0};
+  double momentum = 0.0;  // L and I per unit particle mass
+  double inertia = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Vec2 r = particles.x[i] - m.centroid;
+    momentum += cross(r, particles.v[i] - m.velocity);
+    inertia += length_squared(r);
+  }
+  m.omega = inertia > 0.0 ? momentum / inertia : 0.0;
+  m.inertia = inertia * particle_mass();
+  return m;
+}
+
+double Tire::area() const { return polygon_area(particles.x.data(), n); }
+
+bool Tire::grounded() const {
+  return std::any_of(grounded_flags.begin(), grounded_flags.begin() + n,
+                     [](std::uint8_t g) { return g != 0; });
+}
+
+void Tire::clear_contacts() {
+  for_each_contact([this](std::uint32_t i) { contacts[i] = ContactRecord{}; });
+  std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
+}
+
+void Tire::prefetch() const {
+  distance.prefetch();
+  tire::prefetch(particles.x);
+  tire::prefetch(particles.x_prev);
+  tire::prefetch(particles.v);
+  tire::prefetch(particles.w);
+  tire::prefetch(grounded_flags);
+  tire::prefetch(on_tire);
+  tire::prefetch(soft_lambda);
+}
+
+std::size_t Tire::touching_particles() const {
+  std::size_t count = 0;
+  for (std::uint32_t i = 0; i < particle_count(); ++i)
+    count += contacts[i].active || on_tire[i] != 0 || (i < n && soft_lambda[i] > 0.0);
+  return count;
+}
+
+bool Tire::is_finite() const {
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (!tire::is_finite(particles.x[i]) || !tire::is_finite(particles.v[i])) return false;
+  return true;
+}
+
+double Tire::max_abs_coordinate() const {
+  double m = 0.0;
+  for (const Vec2& x : particles.x) m = std::max({m, std::abs(x.x), std::abs(x.y)});
+  return m;
+}
+
+}  // namespace tire

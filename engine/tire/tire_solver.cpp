@@ -1,0 +1,309 @@
+#include "tire/tire/tire_solver.h"
+
+#include "tire/tire/soft_contact.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tire {
+
+namespace {
+
+// Friction of two surfaces in contact, mixed as Box2D's b2MixFriction does.
+double mix_friction(double a, double b) { return std::sqrt(a * b); }
+
+Aabb bounds(const std::vector<Vec2>& x) {
+  Aabb b{x.front(), x.front()};
+  for (const Vec2& p : x) {
+    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y)};
+    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y)};
+  }
+  return b;
+}
+
+// Angular acceleration (rad/s², CCW positive) that steering asks for this substep: the tread is
+// driven at drive_acceleration·|steer| until its speed reaches max_speed·|steer|.
+double drive_angular_acceleration(const Tire& t, const RigidMotion& motion) {
+  const double steer = std::clamp(t.control.steer, -1.0, 1.0);
+  if (steer == 0.0) return 0.0;
+  const double tread_speed = -motion.omega * t.spec.outer_radius;  // > 0 rolling to +x
+  const double target = steer * t.spec.max_speed;
+  if (steer > 0.0 ? tread_speed >= target : tread_speed <= target) return 0.0;
+  return -steer * t.spec.drive_acceleration / t.spec.outer_radius;
+}
+
+// Semi-implicit Euler velocity step (Small Steps, Alg. 1 line 4) with steering as a uniform
+// angular acceleration about the hub (a pure torque: no net force, so the tire moves only by
+// traction), then the anti-tunneling clamp on each particle's speed, then the position prediction.
+void predict(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  const double h = ctx.h;
+  const RigidMotion motion = t.control.steer != 0.0 ? t.rigid_motion() : RigidMotion{};
+  const double alpha = drive_angular_acceleration(t, motion);
+  const Vec2 hub = motion.centroid;
+  const double v_max = ctx.config->tunnel_clamp * t.segment_length / h;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.w[i] == 0.0) continue;
+    Vec2 v = p.v[i] + ctx.gravity * h;
+    if (alpha != 0.0) v += perp(p.x[i] - hub) * (alpha * h);
+    const double speed2 = length_squared(v);
+    if (speed2 > v_max * v_max) v *= v_max / std::sqrt(speed2);
+    p.v[i] = v;
+  }
+  predict_positions(p, h);
+}
+
+bool path_near(Vec2 a, Vec2 b, const Aabb& box) {
+  return !(std::max(a.x, b.x) < box.min.x || std::min(a.x, b.x) > box.max.x || std::max(a.y, b.y) < box.min.y ||
+           std::min(a.y, b.y) > box.max.y);
+}
+
+Aabb world_bounds(const Aabb& local, const Pose& pose) {
+  const Vec2 corners[4] = {local.min, {local.max.x, local.min.y}, local.max, {local.min.x, local.max.y}};
+  Aabb b{pose.to_world(corners[0]), pose.to_world(corners[0])};
+  for (const Vec2& c : corners) {
+    const Vec2 w = pose.to_world(c);
+    b.min = {std::min(b.min.x, w.x), std::min(b.min.y, w.y)};
+    b.max = {std::max(b.max.x, w.x), std::max(b.max.y, w.y)};
+  }
+  return b;
+}
+
+// Narrow phase, once per substep after prediction: the particles whose path this substep passes
+// within one segment length of a nearby obstacle or prop. Only these are tested in the iterations
+// (the margin covers what the constraints move a particle within one substep).
+void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
+  const Particles& p = t.particles;
+  const RigidWorld& rigid = *ctx.rigid;
+  t.pairs.clear();
+  for (const std::uint32_t k : t.candidates) {
+    const Obstacle& o = rigid.obstacles()[k];
+    const Aabb near = o.box.expanded(t.segment_length);
+    const double mu_s = mix_friction(t.spec.friction, o.friction);
+    const double mu_k = mix_friction(t.spec.kinetic_friction, o.friction);
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      if (path_near(p.x_prev[i], p.x[i], near)) t.pairs.push_back({i, k, false, mu_s, mu_k});
+  }
+  t.prop_frames.clear();
+  for (const std::uint32_t k : t.prop_candidates) {
+    const Prop& prop = rigid.props()[k];
+    if (!prop.alive) continue;
+    const auto frame = static_cast<std::uint32_t>(t.prop_frames.size());
+    t.prop_frames.push_back({k, prop.pose_at(ctx.time), prop.pose_at(ctx.time + ctx.h)});
+    const Aabb local = prop.geometry.local_bounds();
+    Aabb near = world_bounds(local, t.prop_frames.back().start);
+    const Aabb end = world_bounds(local, t.prop_frames.back().end);
+    near = Aabb{{std::min(near.min.x, end.min.x), std::min(near.min.y, end.min.y)},
+                {std::max(near.max.x, end.max.x), std::max(near.max.y, end.max.y)}}
+               .expanded(t.segment_length);
+    const double mu_s = mix_friction(t.spec.friction, prop.spec.friction);
+    const double mu_k = mix_friction(t.spec.kinetic_friction, prop.spec.friction);
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      if (path_near(p.x_prev[i], p.x[i], near)) t.pairs.push_back({i, frame, true, mu_s, mu_k});
+  }
+}
+
+// A particle against a prop: the contact in the prop's frame (its motion over the substep taken
+// into account), friction relative to the moving surface, and for a dynamic prop the generalized
+// inverse mass w = 1/M + (r×n)²/I (Müller 2020 eq. 2–3) and the reaction impulse −m Δx/h.
+void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext& ctx) {
+  const PropFrame& frame = t.prop_frames[pair.index];
+  const Prop& prop = ctx.rigid->props()[frame.prop];
+  Vec2& x = t.particles.x[pair.particle];
+  const Vec2 x_prev = t.particles.x_prev[pair.particle];
+  const auto local = local_contact(prop.geometry, frame.start.to_local(x_prev), frame.end.to_local(x));
+  if (!local) return;
+  const SurfaceContact c{frame.end.rotate(local->normal), local->depth};
+  const double t_end = ctx.time + ctx.h;
+  const Vec2 surface_velocity = prop.point_velocity(x, t_end);
+  double normal_share = 1.0, tangent_share = 1.0;
+  const double w = t.particles.w[pair.particle];
+  // A dynamic prop pushed into what holds it up (the ground under a crate) cannot give way that way
+  // this tick: its inverse mass along the push is scaled by its mobility (0 straight into a
+  // support), and the impulse still reaches it, where Box2D hands it to the support (shock
+  // propagation, one level deep).
+  if (prop.is_dynamic()) {
+    const Vec2 r = x - prop.center_at(t_end);
+    const double rn = cross(r, c.normal), rt = dot(r, c.normal);  // r × n and r × t, t = perp(n)
+    const double mob_n = prop.mobility(-c.normal), mob_t = std::min(prop.mobility(perp(c.normal)),
+                                                                    prop.mobility(-perp(c.normal)));
+    normal_share = w / (w + mob_n * (prop.inverse_mass + rn * rn * prop.inverse_inertia));
+    tangent_share = w / (w + mob_t * (prop.inverse_mass + rt * rt * prop.inverse_inertia));
+  }
+  ContactRecord& rec = t.touch_contact(pair.particle);
+  const Vec2 before = x;
+  resolve_contact(x, x_prev, c, pair.mu_static, pair.mu_kinetic, rec, surface_velocity * ctx.h, normal_share,
+                  tangent_share);
+  rec.surface_velocity = surface_velocity;
+  rec.prop = static_cast<std::int32_t>(frame.prop);
+  if (prop.is_dynamic()) t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end});
+}
+
+void solve_contacts(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  const std::vector<Obstacle>& obstacles = ctx.rigid->obstacles();
+  for (const ContactPair& pair : t.pairs) {
+    const std::uint32_t i = pair.particle;
+    if (pair.is_prop) {
+      resolve_prop_contact(t, pair, ctx);
+    } else if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], obstacles[pair.index].box)) {
+      ContactRecord& rec = t.touch_contact(i);
+      resolve_contact(p.x[i], p.x_prev[i], *c, pair.mu_static, pair.mu_kinetic, rec);
+      rec.surface_velocity = {};
+      rec.prop = -1;
+    }
+  }
+}
+
+// Momentum-conserving damping (Müller et al. 2007, "Position Based Dynamics", Sec. 3.5): only the
+// deviation from the tire's rigid motion decays, at rate `damping` per second. Leaves `m` as is.
+void damp_deviation(Tire& t, const RigidMotion& m, double damping, double h) {
+  const double k = 1.0 - std::exp(-damping * h);
+  Particles& p = t.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 rigid = m.velocity + perp(p.x[i] - m.centroid) * m.omega;
+    p.v[i] += (rigid - p.v[i]) * k;
+  }
+}
+
+// Rolling resistance: a moment M_r = C_rr·N·R against the spin while grounded, with N the total
+// contact normal force, Σ m·λ_n/h² (λ_n kept as a distance, see contact.h). Applied as a change
+// of the rigid angular velocity about the hub, Δv_i = Δω × r_i: a pure moment, no net force; the
+// ground's friction then passes it on to the tire's motion, as it does for a real tire.
+void apply_rolling_resistance(Tire& t, RigidMotion& m, double h) {
+  if (t.spec.rolling_resistance <= 0.0 || m.inertia <= 0.0) return;
+  // Σ over the tread, in particle order; the records not written this substep hold λ_n = 0.
+  double lambda_sum = 0.0;
+  t.for_each_contact([&](std::uint32_t i) {
+    if (i < t.n) lambda_sum += t.contacts[i].lambda_n;
+  });
+  if (lambda_sum <= 0.0) return;
+  const double normal_force = t.particle_mass() * lambda_sum / (h * h);
+  const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / m.inertia;
+  const double change = std::abs(m.omega) <= max_change ? -m.omega : -std::copysign(max_change, m.omega);
+  for (std::size_t i = 0; i < t.particles.size(); ++i) t.particles.v[i] += perp(t.particles.x[i] - m.centroid) * change;
+  m.omega += change;
+}
+
+// Caps the hub's horizontal speed by shifting every particle alike (spin and shape untouched).
+void cap_horizontal_speed(Tire& t, RigidMotion& m) {
+  const double vx = m.velocity.x;
+  if (std::abs(vx) <= t.spec.max_speed) return;
+  const double shift = std::copysign(t.spec.max_speed, vx) - vx;
+  for (Vec2& v : t.particles.v) v.x += shift;
+  m.velocity.x += shift;
+}
+
+void update_velocities(Tire& t, const SubstepContext& ctx) {
+  Particles& p = t.particles;
+  derive_velocities(p, ctx.h);
+  std::copy(t.on_tire.begin(), t.on_tire.end(), t.grounded_flags.begin());
+  t.for_each_contact([&](std::uint32_t i) {
+    const ContactRecord& c = t.contacts[i];
+    const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
+    if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
+      t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
+    if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
+  });
+  if (const double tau = t.spec.material_damping; tau > 0.0) {
+    t.distance.damp(p.x.data(), p.v.data());
+    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
+  }
+  RigidMotion motion = t.rigid_motion();
+  if (ctx.config->damping > 0.0) damp_deviation(t, motion, ctx.config->damping, ctx.h);
+  apply_rolling_resistance(t, motion, ctx.h);
+  cap_horizontal_speed(t, motion);
+}
+
+}  // namespace
+
+void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
+  const double h = config.dt / config.substeps;
+  t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
+  // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
+  // tire's radius covers what the constraints can move a particle on top of that.
+  const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
+  rigid.query(bounds(t.particles.x).expanded(reach), t.candidates, t.prop_candidates);
+  if (t.control.jump && t.grounded())
+    for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
+  t.control.jump = false;
+}
+
+void begin_substep(Tire& t, const SubstepContext& ctx) {
+  predict(t, ctx);
+  find_contact_pairs(t, ctx);
+  t.distance.reset_lambda();
+  t.area_lambda = 0.0;
+  t.rim_area_lambda = 0.0;
+  t.clear_contacts();
+  std::fill(t.soft_lambda.begin(), t.soft_lambda.end(), 0.0);
+  std::fill(t.on_tire.begin(), t.on_tire.end(), std::uint8_t{0});
+  t.grab_lambda = 0.0;
+}
+
+namespace {
+
+// The grab: C = |x − target| pulled to 0 with compliance α (XPBD eq. 18 with one particle).
+void solve_grab(Tire& t, double inv_h2) {
+  Vec2& x = t.particles.x[t.grab_particle];
+  const double w = t.particles.w[t.grab_particle];
+  const Vec2 d = x - t.grab_target;
+  const double len = length(d);
+  if (len <= 0.0 || w <= 0.0) return;
+  const double alpha_tilde = t.grab_compliance * inv_h2;
+  const double delta_lambda = (-len - alpha_tilde * t.grab_lambda) / (w + alpha_tilde);
+  t.grab_lambda += delta_lambda;
+  x += d * (w * delta_lambda / len);
+}
+
+}  // namespace
+
+void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
+  Particles& p = t.particles;
+  if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
+  t.distance.solve(p.x.data());
+  const double inv_h2 = 1.0 / (ctx.h * ctx.h);
+  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
+  // The rim's area, once per substep (in its last iteration): it is there so that a heavy load
+  // cannot fold the rim, and a load builds over substeps, not within one. Its ring's edges, solved
+  // every iteration, keep its shape in between. (With one iteration, the default, that is every
+  // iteration anyway.)
+  if (last) solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
+  // Where each ring is now: for the tread–rim contact, and for the contacts between tires that
+  // follow this iteration.
+  const auto bounds_of = [&](std::uint32_t first, Vec2& hub, double& reach) {
+    hub = {};
+    for (std::uint32_t i = first; i < first + t.n; ++i) hub += p.x[i];
+    hub = hub / static_cast<double>(t.n);
+    double reach2 = 0.0;
+    for (std::uint32_t i = first; i < first + t.n; ++i) reach2 = std::max(reach2, length_squared(p.x[i] - hub));
+    reach = std::sqrt(reach2);
+  };
+  // The tread against its own rim, once per substep: it only matters when a load crushes the tire,
+  // which builds over substeps, not within one.
+  if (last && rim_can_hold_tread(t)) {
+    bounds_of(t.n, t.rim_hub, t.rim_reach);
+    keep_tread_outside_rim(t);
+  }
+  solve_contacts(t, ctx);
+  if (ctx.tire_pairs) bounds_of(0, t.tread_hub, t.tread_reach);
+}
+
+void end_substep(Tire& t, const SubstepContext& ctx) { update_velocities(t, ctx); }
+
+void apply_prop_impulses(Tire& t, RigidWorld& rigid) {
+  for (const PropImpulse& p : t.prop_impulses) rigid.add_impulse(p.prop, p.impulse, p.point, p.time);
+  t.prop_impulses.clear();
+}
+
+void substep(Tire& t, const SubstepContext& ctx, RigidWorld& rigid) {
+  begin_substep(t, ctx);
+  for (int it = 0; it < ctx.config->iterations; ++it) {
+    solve_iteration(t, ctx, it + 1 == ctx.config->iterations);
+    apply_prop_impulses(t, rigid);
+  }
+  end_substep(t, ctx);
+  apply_prop_impulses(t, rigid);
+}
+
+}  // namespace tire

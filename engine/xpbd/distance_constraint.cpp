@@ -1,0 +1,248 @@
+#include "tire/xpbd/distance_constraint.h"
+
+#include <algorithm>
+#include <cmath>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define TIRE_HAVE_AVX_PATH 1
+#endif
+
+namespace tire {
+
+DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> constraints)
+    : constraints_(std::move(constraints)) {
+  for (const DistanceConstraint& c : constraints_)
+    particle_count_ = std::max<std::size_t>(particle_count_, std::max(c.a, c.b) + std::size_t{1});
+  build_batches(nullptr);
+}
+
+void DistanceConstraintSet::build_batches(const double* w) {
+  batches_.clear();
+  params_of_.clear();
+  params_.clear();
+  slot_.assign(constraints_.size(), 0);
+  const auto params_index = [&](const Params& q) {
+    for (std::size_t i = 0; i < params_.size(); ++i)
+      if (params_[i].compliance == q.compliance && params_[i].w_a == q.w_a && params_[i].w_b == q.w_b)
+        return static_cast<std::uint32_t>(i);
+    params_.push_back(q);
+    return static_cast<std::uint32_t>(params_.size() - 1);
+  };
+  // Greedy, in order: a constraint joins the open batch unless it shares a particle with it or has
+  // another compliance or other inverse masses. The order of the constraints is kept whatever the
+  // cut, and the lanes of a batch are independent, so the cut never changes a result.
+  Batch open{};
+  Params open_params;
+  std::uint32_t count = 0;
+  const auto close = [&] {
+    if (count == 0) return;
+    // A batch that is not full repeats its first lane: the copy computes and writes exactly what
+    // lane 0 does, so the vector path needs no lane count (the scalar path skips copies).
+    for (std::uint32_t l = count; l < kLanes; ++l) {
+      open.a[l] = open.a[0];
+      open.b[l] = open.b[0];
+      open.rest_length[l] = open.rest_length[0];
+    }
+    batches_.push_back(open);
+    params_of_.push_back(params_index(open_params));
+    open = Batch{};
+    count = 0;
+  };
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const DistanceConstraint& c = constraints_[k];
+    const Params q{c.compliance, w ? w[c.a] : 1.0, w ? w[c.b] : 1.0};
+    bool fits = q.compliance == open_params.compliance && q.w_a == open_params.w_a && q.w_b == open_params.w_b;
+    for (std::uint32_t l = 0; l < count; ++l)
+      fits &= open.a[l] != c.a && open.a[l] != c.b && open.b[l] != c.a && open.b[l] != c.b;
+    if (!fits) close();
+    if (count == 0) open_params = q;
+    const std::uint32_t l = count++;
+    slot_[k] = static_cast<std::uint32_t>(batches_.size() * kLanes + l);
+    open.a[l] = c.a;
+    open.b[l] = c.b;
+    open.rest_length[l] = c.rest_length;
+    if (count == kLanes) close();
+  }
+  close();
+}
+
+void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count, double compliance) {
+  for (std::size_t k = first; k < first + count && k < constraints_.size(); ++k) constraints_[k].compliance = compliance;
+  rebuild_ = true;
+}
+
+void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
+  // The batches follow the inverse masses: built again only when one changed (a new tire mass).
+  if (rebuild_ || w_built_.size() != particle_count_ || !std::equal(w_built_.begin(), w_built_.end(), w)) {
+    build_batches(w);
+    w_built_.assign(w, w + particle_count_);
+    rebuild_ = false;
+  }
+  const double inv_h2 = 1.0 / (h * h);
+  for (Params& q : params_) {
+    q.alpha_tilde = q.compliance * inv_h2;  // α̃ = α/h²  (XPBD eq. 4)
+    // ∇C M⁻¹ ∇Cᵀ + α̃ with |∇C| = 1 at each end
+    const double denominator = q.w_a + q.w_b + q.alpha_tilde;
+    q.inv_denominator = denominator > 0.0 ? 1.0 / denominator : 0.0;
+    // The dashpot's impulse per unit rate: rate·removed/W with removed = chW/(1 + chW), c = τ/α,
+    // simplifies to τh/(α + τhW), which also covers α = 0 (all of the rate removed).
+    const double tau_h = tau * h, w_sum = q.w_a + q.w_b;
+    const double damping_denominator = q.compliance + tau_h * w_sum;
+    q.damping = tau_h > 0.0 && w_sum > 0.0 ? tau_h / damping_denominator : 0.0;
+  }
+}
+
+void DistanceConstraintSet::reset_lambda() {
+  for (Batch& batch : batches_) std::fill(std::begin(batch.lambda), std::end(batch.lambda), 0.0);
+}
+
+double DistanceConstraintSet::lambda(std::size_t k) const {
+  return k < slot_.size() ? batches_[slot_[k] / kLanes].lambda[slot_[k] % kLanes] : 0.0;
+}
+
+namespace {
+
+// The projection of one lane, written so that the vector path below performs the very same
+// operations in the same order:
+//   n = (x_b − x_a)/|x_b − x_a|, C = |x_b − x_a| − L0,
+//   Δλ = (−C − α̃λ) / (w_a + w_b + α̃)   (XPBD eq. 18),
+//   x_a −= w_a Δλ n,  x_b += w_b Δλ n  (XPBD eq. 17).
+// A zero length (coincident particles) gets n = 0: λ still accumulates, nothing moves.
+// Lane l > 0 is a copy of lane 0 (a batch that is not full): the scalar path does that work once.
+template <typename B>
+bool is_copy(const B& batch, std::uint32_t l) {
+  return l > 0 && batch.a[l] == batch.a[0];
+}
+
+template <typename B, typename P>
+void solve_scalar(B& batch, const P& q, Vec2* x) {
+  for (std::uint32_t l = 0; l < B::kLanes && !is_copy(batch, l); ++l) {
+    const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
+    const double dx = xb.x - xa.x, dy = xb.y - xa.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    const double inv_len = len > 0.0 ? 1.0 / len : 0.0;
+    const double delta_lambda = ((batch.rest_length[l] - len) - q.alpha_tilde * batch.lambda[l]) * q.inv_denominator;
+    batch.lambda[l] += delta_lambda;
+    const double nx = dx * inv_len, ny = dy * inv_len;
+    const double sa = q.w_a * delta_lambda, sb = q.w_b * delta_lambda;
+    x[batch.a[l]] = {xa.x - nx * sa, xa.y - ny * sa};
+    x[batch.b[l]] = {xb.x + nx * sb, xb.y + ny * sb};
+  }
+}
+
+// The dashpot of one lane, in the same operations and order as the vector path below:
+// n as in solve_scalar, dC/dt = n·(v_b − v_a), p = dC/dt · damping, v_a += w_a p n, v_b −= w_b p n.
+template <typename B, typename P>
+void damp_scalar(const B& batch, const P& q, const Vec2* x, Vec2* v) {
+  for (std::uint32_t l = 0; l < B::kLanes && !is_copy(batch, l); ++l) {
+    const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
+    const Vec2 va = v[batch.a[l]], vb = v[batch.b[l]];
+    const double dx = xb.x - xa.x, dy = xb.y - xa.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    const double inv_len = len > 0.0 ? 1.0 / len : 0.0;
+    const double nx = dx * inv_len, ny = dy * inv_len;
+    const double rate = nx * (vb.x - va.x) + ny * (vb.y - va.y);
+    const double impulse = rate * q.damping;
+    const double sa = q.w_a * impulse, sb = q.w_b * impulse;
+    v[batch.a[l]] = {va.x + nx * sa, va.y + ny * sa};
+    v[batch.b[l]] = {vb.x - nx * sb, vb.y - ny * sb};
+  }
+}
+
+#ifdef TIRE_HAVE_AVX_PATH
+// Four particles' (x, y) → (x0 x1 x2 x3), (y0 y1 y2 y3).
+__attribute__((target("avx"))) inline void gather(const Vec2* x, const std::uint32_t* idx, __m256d& px,
+                                                   __m256d& py) {
+  const __m128d p0 = _mm_loadu_pd(&x[idx[0]].x), p1 = _mm_loadu_pd(&x[idx[1]].x);
+  const __m128d p2 = _mm_loadu_pd(&x[idx[2]].x), p3 = _mm_loadu_pd(&x[idx[3]].x);
+  const __m256d t02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p0), p2, 1);  // x0 y0 x2 y2
+  const __m256d t13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p1), p3, 1);  // x1 y1 x3 y3
+  px = _mm256_unpacklo_pd(t02, t13);
+  py = _mm256_unpackhi_pd(t02, t13);
+}
+
+// Writes lane l's (px, py) to x[idx[l]]. A copy of lane 0 writes what lane 0 wrote.
+__attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t* idx, __m256d px, __m256d py) {
+  const __m256d t02 = _mm256_unpacklo_pd(px, py);  // x0 y0 x2 y2
+  const __m256d t13 = _mm256_unpackhi_pd(px, py);  // x1 y1 x3 y3
+  _mm_storeu_pd(&x[idx[0]].x, _mm256_castpd256_pd128(t02));
+  _mm_storeu_pd(&x[idx[1]].x, _mm256_castpd256_pd128(t13));
+  _mm_storeu_pd(&x[idx[2]].x, _mm256_extractf128_pd(t02, 1));
+  _mm_storeu_pd(&x[idx[3]].x, _mm256_extractf128_pd(t13, 1));
+}
+
+template <typename B, typename P>
+__attribute__((target("avx"))) void solve_avx(B* batches, const std::uint32_t* params_of, const P* params,
+                                               std::size_t n, Vec2* x) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    B& batch = batches[k];
+    const P& q = params[params_of[k]];
+    __m256d ax, ay, bx, by;
+    gather(x, batch.a, ax, ay);
+    gather(x, batch.b, bx, by);
+    const __m256d dx = _mm256_sub_pd(bx, ax), dy = _mm256_sub_pd(by, ay);
+    const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
+    const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
+    const __m256d lambda = _mm256_load_pd(batch.lambda);
+    const __m256d delta_lambda = _mm256_mul_pd(
+        _mm256_sub_pd(_mm256_sub_pd(_mm256_load_pd(batch.rest_length), len),
+                      _mm256_mul_pd(_mm256_set1_pd(q.alpha_tilde), lambda)),
+        _mm256_set1_pd(q.inv_denominator));
+    _mm256_store_pd(batch.lambda, _mm256_add_pd(lambda, delta_lambda));
+    const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
+    const __m256d sa = _mm256_mul_pd(_mm256_set1_pd(q.w_a), delta_lambda);
+    const __m256d sb = _mm256_mul_pd(_mm256_set1_pd(q.w_b), delta_lambda);
+    scatter(x, batch.a, _mm256_sub_pd(ax, _mm256_mul_pd(nx, sa)), _mm256_sub_pd(ay, _mm256_mul_pd(ny, sa)));
+    scatter(x, batch.b, _mm256_add_pd(bx, _mm256_mul_pd(nx, sb)), _mm256_add_pd(by, _mm256_mul_pd(ny, sb)));
+  }
+}
+
+template <typename B, typename P>
+__attribute__((target("avx"))) void damp_avx(const B* batches, const std::uint32_t* params_of, const P* params,
+                                              std::size_t n, const Vec2* x, Vec2* v) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const B& batch = batches[k];
+    const P& q = params[params_of[k]];
+    __m256d ax, ay, bx, by, vax, vay, vbx, vby;
+    gather(x, batch.a, ax, ay);
+    gather(x, batch.b, bx, by);
+    gather(v, batch.a, vax, vay);
+    gather(v, batch.b, vbx, vby);
+    const __m256d dx = _mm256_sub_pd(bx, ax), dy = _mm256_sub_pd(by, ay);
+    const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
+    const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
+    const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
+    const __m256d rate = _mm256_add_pd(_mm256_mul_pd(nx, _mm256_sub_pd(vbx, vax)), _mm256_mul_pd(ny, _mm256_sub_pd(vby, vay)));
+    const __m256d impulse = _mm256_mul_pd(rate, _mm256_set1_pd(q.damping));
+    const __m256d sa = _mm256_mul_pd(_mm256_set1_pd(q.w_a), impulse);
+    const __m256d sb = _mm256_mul_pd(_mm256_set1_pd(q.w_b), impulse);
+    scatter(v, batch.a, _mm256_add_pd(vax, _mm256_mul_pd(nx, sa)), _mm256_add_pd(vay, _mm256_mul_pd(ny, sa)));
+    scatter(v, batch.b, _mm256_sub_pd(vbx, _mm256_mul_pd(nx, sb)), _mm256_sub_pd(vby, _mm256_mul_pd(ny, sb)));
+  }
+}
+
+const bool kCpuHasAvx = __builtin_cpu_supports("avx");
+#endif
+
+}  // namespace
+
+void DistanceConstraintSet::solve(Vec2* x) {
+#ifdef TIRE_HAVE_AVX_PATH
+  if (kCpuHasAvx && kernel_ == Kernel::automatic)
+    return solve_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x);
+#endif
+  for (std::size_t k = 0; k < batches_.size(); ++k) solve_scalar(batches_[k], params_[params_of_[k]], x);
+}
+
+void DistanceConstraintSet::damp(const Vec2* x, Vec2* v) {
+#ifdef TIRE_HAVE_AVX_PATH
+  if (kCpuHasAvx && kernel_ == Kernel::automatic)
+    return damp_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x, v);
+#endif
+  for (std::size_t k = 0; k < batches_.size(); ++k) damp_scalar(batches_[k], params_[params_of_[k]], x, v);
+}
+
+}  // namespace tire
