@@ -101,7 +101,8 @@ inline void fuzz_simulate(const std::string& input, const SimulateBudget& budget
       level.obstacles.size() > budget.max_obstacles || sweeps > budget.max_particle_sweeps)
     return;
 
-  std::unique_ptr<World> world = make_world(level);
+  std::unique_ptr<LevelSession> session = make_session(level);
+  World* const world = &session->world();  // the same object after a restart (assigned in place)
   // Inputs from the bytes themselves, so that the fuzzer steers them too.
   std::size_t h = 1469598103934665603ull;
   for (const unsigned char c : input) h = (h ^ c) * 1099511628211ull;
@@ -118,12 +119,12 @@ inline void fuzz_simulate(const std::string& input, const SimulateBudget& budget
     if (tick == 25) in.steer = -steer;
     if (tick == 30 && (h & 1)) in.restart = true;
     if (tick == 31) in.spawn = Vec2{0.0, 6.0};
-    apply_input(in, *world, level, steer, jump);
-    world->step({steer, jump});
+    apply_input(in, *session, level, steer, jump);
+    session->step({steer, jump});
     for (const Tire& t : world->tires()) require(t.is_finite(), "every tire stays finite", level.name);
     world->warnings().clear();
   }
-  (void)world->state_hash();
+  (void)session->state_hash();
 }
 
 }  // namespace tire::fuzz

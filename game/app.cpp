@@ -113,7 +113,7 @@ void App::go_to_level(int delta) {
 void App::after_level_change() {
   seen_generation_ = session_.generation();
   level_tuning_ = session_.tuning();
-  bounds_ = level_bounds(session_.world());
+  bounds_ = level_bounds(session_.level_session());
   world_renderer_.set_floor(underground_height(session_.world()));
   const tire::Tire* player = session_.world().player();
   camera_.snap(player ? camera_.aim(player->centroid(), {}) : (bounds_.min + bounds_.max) * 0.5, bounds_);
@@ -125,14 +125,14 @@ void App::after_level_change() {
   if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
 }
 
-bool App::level_over() const { return session_.world().status() != tire::ScriptStatus::running; }
+bool App::level_over() const { return session_.level_session().status() != tire::ScriptStatus::running; }
 
 // Saves the session so far into replays/ beside the levels folder, under a name with the level and
 // the time, written atomically.
 void App::save_replay() {
   const std::filesystem::path dir = std::filesystem::absolute(options_.levels_dir).parent_path() / "replays";
   const std::filesystem::path file = recorder_.default_file(dir);
-  if (const std::string err = recorder_.save(session_.world(), file); !err.empty())
+  if (const std::string err = recorder_.save(session_.level_session(), file); !err.empty())
     warn("cannot save the replay: " + err);
   else
     warn("replay saved: " + file.string() + " (" + std::to_string(recorder_.ticks()) + " ticks)");
@@ -215,7 +215,7 @@ void App::key_down(SDL_Scancode k) {
     return;
   }
   if (level_over()) {
-    const bool won = session_.world().status() == tire::ScriptStatus::won;
+    const bool won = session_.level_session().status() == tire::ScriptStatus::won;
     if (k == SDL_SCANCODE_N || (won && is_any(k, {SDL_SCANCODE_RETURN, SDL_SCANCODE_KP_ENTER}))) {
       go_to_level(+1);
       return;
@@ -317,7 +317,7 @@ void App::advance(double frame_seconds) {
     accumulator_ -= session_.world().config().dt;
     step_once();
     if (session_.generation() != seen_generation_) after_level_change();
-    if (session_.world().next_level_requested()) break;
+    if (session_.level_session().next_level_requested()) break;
   }
   // A slow frame: drop the time the cap left over rather than owe it to the next frames.
   const double dt = session_.world().config().dt;
@@ -326,7 +326,7 @@ void App::advance(double frame_seconds) {
   step_requested_ = false;
   if (level_over() && !finished_at_) finished_at_ = session_.world().time();
   // A script asked for the next level.
-  if (session_.world().next_level_requested() && !next_level_handled_) {
+  if (session_.level_session().next_level_requested() && !next_level_handled_) {
     next_level_handled_ = true;
     go_to_level(+1);
   }
@@ -368,9 +368,9 @@ void App::draw_ui() {
   hud.steps_last_frame = steps_this_frame_;
   hud.tires = world.tires().size();
   hud.paused = paused_;
-  hud.status = tire::to_string(world.status());
+  hud.status = tire::to_string(session_.level_session().status());
   draw_hud(hud);
-  draw_script_messages(world, imgui_->big_font());
+  draw_script_messages(session_.level_session(), imgui_->big_font());
 
   if (show_tuning_) {
     for (TuneEvent& e : draw_tuning_panel(session_.tuning(), level_tuning_, debug_, &show_tuning_))
@@ -389,7 +389,7 @@ void App::draw_ui() {
     else if (choice == MenuChoice::quit)
       quit_ = true;
   } else if (level_over()) {
-    switch (draw_end_screen(world.status(), session_.level().name, finished_at_.value_or(world.time()),
+    switch (draw_end_screen(session_.level_session().status(), session_.level().name, finished_at_.value_or(world.time()),
                             imgui_->big_font())) {
       case EndChoice::next:
         go_to_level(+1);
@@ -486,7 +486,7 @@ int App::run() {
     }
   }
   if (!options_.record.empty()) {
-    if (const std::string err = recorder_.save(session_.world(), options_.record); !err.empty()) {
+    if (const std::string err = recorder_.save(session_.level_session(), options_.record); !err.empty()) {
       std::cerr << "tire-game: cannot save the replay " << options_.record << ": " << err << "\n";
       return 2;
     }
@@ -500,7 +500,7 @@ void App::print_summary(long long frames) const {
   out["frames"] = frames;
   out["level"] = session_.level().name;
   out["ticks"] = session_.world().tick();
-  out["status"] = tire::to_string(session_.world().status());
+  out["status"] = tire::to_string(session_.level_session().status());
   if (const tire::Tire* p = session_.world().player()) {
     const tire::Vec2 c = p->centroid();
     out["player"] = {c.x, c.y};

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace game {
 
@@ -81,7 +81,8 @@ double underground_height(const tire::World& world) {
   return height;
 }
 
-tire::Aabb level_bounds(const tire::World& world, double margin, double below) {
+tire::Aabb level_bounds(const tire::LevelSession& session, double margin, double below) {
+  const tire::World& world = session.world();
   tire::Aabb box{{-10, -2}, {10, 8}};
   bool any = false;
   for (const tire::Obstacle& o : world.rigid().obstacles()) {
@@ -100,7 +101,7 @@ tire::Aabb level_bounds(const tire::World& world, double margin, double below) {
       grow(box, any, w + local.max);
     }
   }
-  if (const tire::ScriptRunner* script = world.script())
+  if (const tire::ScriptRunner* script = session.script())
     for (const tire::Region& r : script->spec().regions) {
       grow(box, any, r.box.min);
       grow(box, any, r.box.max);

@@ -6,6 +6,7 @@
 #include "tire/math/vec2.h"
 
 namespace tire {
+class LevelSession;
 class World;
 }
 
@@ -65,6 +66,6 @@ class Camera {
 double underground_height(const tire::World& world);
 
 constexpr double kBoundsMarginBelow = 0.75;  // m
-tire::Aabb level_bounds(const tire::World& world, double margin = 1.5, double below = kBoundsMarginBelow);
+tire::Aabb level_bounds(const tire::LevelSession& session, double margin = 1.5, double below = kBoundsMarginBelow);
 
 }  // namespace game

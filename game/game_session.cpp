@@ -7,12 +7,10 @@
 namespace game {
 
 void GameSession::start(std::string path, std::shared_ptr<const tire::Level> level) {
-  auto world = std::make_unique<tire::World>(level->solver, level->gravity);
-  tire::populate_world(*level, *world);
-  world_ = std::move(world);
+  session_ = tire::make_session(*level);
   level_ = std::move(level);
   path_ = std::move(path);
-  tuning_ = Tuning::from_world(*world_);
+  tuning_ = Tuning::from_world(session_->world());
   previous_x_.clear();
   previous_poses_.clear();
   ++generation_;
@@ -34,10 +32,10 @@ void GameSession::flush() {
   for (SessionEvent& e : queue_) {
     const bool load = std::holds_alternative<LoadLevelEvent>(e);
     if (load && !batch.empty()) {
-      if (observer_) observer_->on_events(world_->tick(), batch);
+      if (observer_) observer_->on_events(session_->world().tick(), batch);
       batch.clear();
     }
-    const std::uint64_t tick = world_ ? world_->tick() : 0;
+    const std::uint64_t tick = session_ ? session_->world().tick() : 0;
     apply(e);
     batch.push_back(std::move(e));
     if (load) {
@@ -45,7 +43,7 @@ void GameSession::flush() {
       batch.clear();
     }
   }
-  if (!batch.empty() && observer_) observer_->on_events(world_->tick(), batch);
+  if (!batch.empty() && observer_) observer_->on_events(session_->world().tick(), batch);
   queue_.clear();
 }
 
@@ -59,15 +57,15 @@ void GameSession::apply(const SessionEvent& event) {
           tire::TireSpec spec;
           spec.position = e.position;
           spec.player = false;
-          world_->add_tire(spec);
+          session_->world().add_tire(spec);
         } else if constexpr (std::is_same_v<T, GrabEvent>) {
-          world_->grab(e.point, e.radius);
+          session_->grab(e.point, e.radius);
         } else if constexpr (std::is_same_v<T, MoveGrabEvent>) {
-          world_->move_grab(e.target);
+          session_->move_grab(e.target);
         } else if constexpr (std::is_same_v<T, ReleaseGrabEvent>) {
-          world_->release_grab();
+          session_->release_grab();
         } else if constexpr (std::is_same_v<T, TuneEvent>) {
-          if (apply_tuning(*world_, e.key, e.value)) tuning_.set(e.key, e.value);
+          if (apply_tuning(session_->world(), e.key, e.value)) tuning_.set(e.key, e.value);
         }
       },
       event);
@@ -76,17 +74,17 @@ void GameSession::apply(const SessionEvent& event) {
 
 void GameSession::step(const tire::TickInput& input) {
   flush();
-  for (const tire::Tire& t : world_->tires()) previous_x_[t.id] = t.particles.x;  // reuses capacity
-  if (previous_x_.size() > 2 * world_->tires().size() + 16) {
-    std::erase_if(previous_x_, [this](const auto& entry) { return !world_->find_tire(entry.first); });
+  for (const tire::Tire& t : session_->world().tires()) previous_x_[t.id] = t.particles.x;  // reuses capacity
+  if (previous_x_.size() > 2 * session_->world().tires().size() + 16) {
+    std::erase_if(previous_x_, [this](const auto& entry) { return !session_->world().find_tire(entry.first); });
   }
-  const auto& props = world_->rigid().props();
+  const auto& props = session_->world().rigid().props();
   previous_poses_.resize(props.size());
   for (std::uint32_t i = 0; i < props.size(); ++i)
-    if (props[i].alive) previous_poses_[i] = world_->rigid().current_pose(i);
-  if (observer_) observer_->on_step(world_->tick(), input);
-  world_->step(input);
-  if (observer_) observer_->on_stepped(*world_);
+    if (props[i].alive) previous_poses_[i] = session_->world().rigid().current_pose(i);
+  if (observer_) observer_->on_step(session_->world().tick(), input);
+  session_->step(input);
+  if (observer_) observer_->on_stepped(*session_);
 }
 
 void GameSession::interpolated_positions(const tire::Tire& t, double alpha, std::vector<tire::Vec2>& out) const {
@@ -112,7 +110,7 @@ tire::Vec2 GameSession::interpolated_centroid(const tire::Tire& t, double alpha)
 }
 
 tire::Pose GameSession::interpolated_pose(std::uint32_t prop, double alpha) const {
-  const tire::Pose now = world_->rigid().current_pose(prop);
+  const tire::Pose now = session_->world().rigid().current_pose(prop);
   if (prop >= previous_poses_.size()) return now;
   const tire::Pose& before = previous_poses_[prop];
   return tire::Pose::make(before.position + (now.position - before.position) * alpha,
@@ -121,7 +119,7 @@ tire::Pose GameSession::interpolated_pose(std::uint32_t prop, double alpha) cons
 
 std::vector<std::string> GameSession::take_warnings() {
   std::vector<std::string> out;
-  if (world_) out.swap(world_->warnings());
+  if (session_) out.swap(session_->world().warnings());
   return out;
 }
 

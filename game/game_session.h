@@ -1,7 +1,8 @@
-// One level being played: the World, the Level it was built from, the tuning in force and what
-// rendering needs to interpolate between ticks. Every input reaches the World through here
-// (session_input.h): events are queued, then applied between ticks by flush(); step() flushes and
-// then calls World::step, the same fixed tick tirectl runs.
+// One level being played: the engine's LevelSession (world and script), the Level it was built
+// from, the tuning in force and what rendering needs to interpolate between ticks. Every input
+// reaches the session through here (session_input.h): events are queued, then applied between
+// ticks by flush(); step() flushes and then calls LevelSession::step, the same fixed tick tirectl
+// runs.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,7 @@
 #include "tire/io/level.h"
 #include "session_input.h"
 #include "tuning.h"
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace game {
 
@@ -32,9 +33,11 @@ class GameSession {
 
   void set_observer(SessionObserver* observer) { observer_ = observer; }
 
-  bool loaded() const { return world_ != nullptr; }
-  tire::World& world() { return *world_; }
-  const tire::World& world() const { return *world_; }
+  bool loaded() const { return session_ != nullptr; }
+  tire::LevelSession& level_session() { return *session_; }
+  const tire::LevelSession& level_session() const { return *session_; }
+  tire::World& world() { return session_->world(); }
+  const tire::World& world() const { return session_->world(); }
   const tire::Level& level() const { return *level_; }
   const std::shared_ptr<const tire::Level>& level_ptr() const { return level_; }
   const std::string& path() const { return path_; }
@@ -55,7 +58,7 @@ class GameSession {
  private:
   void apply(const SessionEvent& event);
 
-  std::unique_ptr<tire::World> world_;
+  std::unique_ptr<tire::LevelSession> session_;
   std::shared_ptr<const tire::Level> level_;
   std::string path_;
   Tuning tuning_;

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace game {
 
@@ -72,8 +72,8 @@ void draw_help(bool* open) {
   ImGui::End();
 }
 
-void draw_script_messages(const tire::World& world, ImFont* big) {
-  const auto& messages = world.messages();
+void draw_script_messages(const tire::LevelSession& session, ImFont* big) {
+  const auto& messages = session.messages();
   if (messages.empty()) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float max_width = vp->Size.x * 0.8f;

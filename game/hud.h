@@ -11,7 +11,7 @@
 struct ImFont;
 
 namespace tire {
-class World;
+class LevelSession;
 }
 
 namespace game {
@@ -32,7 +32,7 @@ struct HudInfo {
 
 void draw_hud(const HudInfo& info);
 void draw_help(bool* open);
-void draw_script_messages(const tire::World& world, ImFont* big);
+void draw_script_messages(const tire::LevelSession& session, ImFont* big);
 // A red window listing why the level file failed to reload (the last good level keeps playing).
 void draw_level_errors(const std::string& file, const std::vector<std::string>& errors);
 // Recent warnings (a diverged tire that was reset, a failed screenshot ...).

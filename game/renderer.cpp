@@ -159,7 +159,7 @@ void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& sessi
                          const DebugOptions& debug) {
   const tire::World& world = session.world();
   draw_background(d, camera);
-  draw_goal(d, camera, world);
+  draw_goal(d, camera, session.level_session());
   draw_obstacles(d, camera, world);
   draw_props(d, camera, session, alpha);
   const tire::Tire* player = world.player();
@@ -279,8 +279,8 @@ void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession&
   }
 }
 
-void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::World& world) {
-  const tire::ScriptRunner* script = world.script();
+void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::LevelSession& session) {
+  const tire::ScriptRunner* script = session.script();
   if (!script || !script->spec().goal) return;
   const tire::Region& goal = script->spec().regions[*script->spec().goal];
   const ScreenPoint a = camera.to_screen(goal.box.min), b = camera.to_screen(goal.box.max);
@@ -416,7 +416,7 @@ void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession&
   ImDrawList* labels = ImGui::GetBackgroundDrawList();
 
   if (debug.regions)
-    if (const tire::ScriptRunner* script = world.script())
+    if (const tire::ScriptRunner* script = session.level_session().script())
       for (const tire::Region& r : script->spec().regions) {
         const ScreenPoint a = camera.to_screen({r.box.min.x, r.box.max.y});
         d.rect_outline(a, camera.to_screen({r.box.max.x, r.box.min.y}), 1.5f, rgba(40, 70, 220, 200));

@@ -59,7 +59,7 @@ class WorldRenderer {
   void draw_background(Draw& d, const Camera& camera);
   void draw_obstacles(Draw& d, const Camera& camera, const tire::World& world);
   void draw_props(Draw& d, const Camera& camera, const GameSession& session, double alpha);
-  void draw_goal(Draw& d, const Camera& camera, const tire::World& world);
+  void draw_goal(Draw& d, const Camera& camera, const tire::LevelSession& session);
   void draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::Tire& t, double alpha,
                  bool is_player);
   void draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "tire/io/level.h"
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace game {
 
@@ -20,16 +20,16 @@ namespace game {
 struct SpawnTireEvent {
   tire::Vec2 position;
 };
-// A press on a tire: World::grab(point, radius).
+// A press on a tire: LevelSession::grab(point, radius).
 struct GrabEvent {
   tire::Vec2 point;
   double radius = 0.0;  // m
 };
-// Dragging: World::move_grab(target).
+// Dragging: LevelSession::move_grab(target).
 struct MoveGrabEvent {
   tire::Vec2 target;
 };
-// Button released: World::release_grab().
+// Button released: LevelSession::release_grab().
 struct ReleaseGrabEvent {};
 // A tuning change, key = value. Keys are World::set_parameter's ("tires.compliance.outer",
 // "tires.pressure", "tires.mass_scale", "solver.substeps", ...) plus the game's own
@@ -58,7 +58,7 @@ class SessionObserver {
   // World::step(input) is about to advance the world from tick `tick` to `tick + 1`.
   virtual void on_step(std::uint64_t tick, const tire::TickInput& input) = 0;
   // ... and has just done so.
-  virtual void on_stepped(const tire::World& world) = 0;
+  virtual void on_stepped(const tire::LevelSession& session) = 0;
 };
 
 }  // namespace game

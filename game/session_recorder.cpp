@@ -94,13 +94,13 @@ void SessionRecorder::on_step(std::uint64_t, const tire::TickInput& input_now) {
   if (in.steer || in.jump) input(in);
 }
 
-void SessionRecorder::on_stepped(const tire::World& world) {
-  if (recorder_) recorder_->after_step(world);
+void SessionRecorder::on_stepped(const tire::LevelSession& session) {
+  if (recorder_) recorder_->after_step(session);
 }
 
-std::string SessionRecorder::save(const tire::World& world, const std::filesystem::path& file) const {
+std::string SessionRecorder::save(const tire::LevelSession& session, const std::filesystem::path& file) const {
   if (!recorder_) return "nothing recorded yet";
-  tire::Replay replay = recorder_->finish(world);
+  tire::Replay replay = recorder_->finish(session);
   const std::filesystem::path target = std::filesystem::absolute(file);
   std::error_code ec;
   std::filesystem::create_directories(target.parent_path(), ec);

@@ -20,11 +20,11 @@ class SessionRecorder final : public SessionObserver {
 
   void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) override;
   void on_step(std::uint64_t tick, const tire::TickInput& input) override;
-  void on_stepped(const tire::World& world) override;
+  void on_stepped(const tire::LevelSession& session) override;
 
   // Writes the recording so far (atomically) to `file`; the level path inside is relative to it.
   // Returns an error text, or "" when saved.
-  std::string save(const tire::World& world, const std::filesystem::path& file) const;
+  std::string save(const tire::LevelSession& session, const std::filesystem::path& file) const;
   // A file name the player can find: <dir>/<level name>-<YYYYmmdd-HHMMSS>.json.
   std::filesystem::path default_file(const std::filesystem::path& dir) const;
 

@@ -20,7 +20,7 @@ TEST_CASE("SHA-256 is the standard one", "[unit][replay]") {
 TEST_CASE("a recorded run replays to the same hashes, and a changed input is caught", "[unit][replay][determinism]") {
   const Level level = default_level();
   ReplayRecorder recorder("level.json", std::string(64, '0'), 10);
-  auto world = make_world(level);
+  auto session = make_session(level);
   double steer = 0.0;
   for (std::uint64_t tick = 0; tick < 240; ++tick) {
     bool jump = false;
@@ -32,12 +32,12 @@ TEST_CASE("a recorded run replays to the same hashes, and a changed input is cau
     if (tick == 160) in.set_key = "tires.pressure", in.set_value = 1.3;
     if (in.steer || in.jump || in.spawn || in.set_key) {
       recorder.input(in);
-      apply_input(in, *world, level, steer, jump);
+      apply_input(in, *session, level, steer, jump);
     }
-    world->step({steer, jump});
-    recorder.after_step(*world);
+    session->step({steer, jump});
+    recorder.after_step(*session);
   }
-  Replay replay = recorder.finish(*world);
+  Replay replay = recorder.finish(*session);
   REQUIRE(replay.expect.checkpoints.size() == 24);
   // Through JSON and back, then played: every expectation holds.
   const ReplayLoad again = load_replay_text(replay_to_json(replay), "r.json");

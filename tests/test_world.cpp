@@ -41,19 +41,21 @@ TEST_CASE("the first tire is the player unless another says so", "[unit][world]"
   steer.step({1.0, false});  // no player: input goes nowhere, nothing breaks
 }
 
-TEST_CASE("a grabbed tire follows the mouse and falls when released", "[unit][world]") {
-  World world = flat_world(tire_at({0, 0.5}));
-  REQUIRE_FALSE(world.grab({5, 5}, 0.2));  // nothing there
-  REQUIRE(world.grab({0.1, 0.6}, 0.2) == world.tires().front().id);
+TEST_CASE("a grabbed tire follows the mouse and falls when released", "[unit][world][session]") {
+  LevelSession session(SolverConfig{}, {0, -9.81});
+  session.world() = flat_world(tire_at({0, 0.5}));
+  const World& world = session.world();
+  REQUIRE_FALSE(session.grab({5, 5}, 0.2));  // nothing there
+  REQUIRE(session.grab({0.1, 0.6}, 0.2) == world.tires().front().id);
   for (int i = 1; i <= 60; ++i) {  // dragged over a second, as a mouse does
-    world.move_grab(Vec2{0.1, 0.6} + (Vec2{2, 3} - Vec2{0.1, 0.6}) * (i / 60.0));
-    world.step({});
+    session.move_grab(Vec2{0.1, 0.6} + (Vec2{2, 3} - Vec2{0.1, 0.6}) * (i / 60.0));
+    session.step({});
   }
-  run(world, 180);
+  run(session, 180);
   const Tire& t = world.tires().front();
   CHECK(length(t.particles.x[t.grab_particle] - Vec2{2, 3}) < 0.1);  // hanging from the grab point
-  world.release_grab();
-  run(world, 480);
+  session.release_grab();
+  run(session, 480);
   CHECK(t.centroid().y < 0.6);  // fell, bounced and settled back on the ground
 }
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "tire/io/level.h"
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace tire::test {
 
@@ -34,6 +34,10 @@ inline World flat_world(const TireSpec& spec, const SolverConfig& config = {}, V
 
 inline void run(World& world, int ticks, TickInput input = {}) {
   for (int i = 0; i < ticks; ++i) world.step(input);
+}
+
+inline void run(LevelSession& session, int ticks, TickInput input = {}) {
+  for (int i = 0; i < ticks; ++i) session.step(input);
 }
 
 }  // namespace tire::test

@@ -5,6 +5,8 @@
 
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
+
+#include "tire/session/level_session.h"
 #include "tire/world/world.h"
 
 namespace tire {
@@ -103,7 +105,13 @@ void populate_world(const Level& level, World& world) {
   for (const Obstacle& o : level.obstacles) world.add_obstacle(o);
   for (const PropSpec& p : level.props) world.add_prop(p);
   for (const TireSpec& t : level.tires) world.add_tire(t);
-  world.set_script(level.script);
+}
+
+std::unique_ptr<LevelSession> make_session(const Level& level) {
+  auto session = std::make_unique<LevelSession>(level.solver, level.gravity);
+  populate_world(level, session->world());
+  session->set_script(level.script);
+  return session;
 }
 
 }  // namespace tire

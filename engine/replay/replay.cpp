@@ -292,17 +292,12 @@ std::string replay_to_json(const Replay& replay) {
   return doc.dump(1) + "\n";
 }
 
-std::unique_ptr<World> make_world(const Level& level) {
-  auto world = std::make_unique<World>(level.solver, level.gravity);
-  populate_world(level, *world);
-  return world;
-}
-
-void apply_input(const ReplayInput& in, World& world, const Level& level, double& held_steer, bool& jump) {
+void apply_input(const ReplayInput& in, LevelSession& session, const Level& level, double& held_steer, bool& jump) {
   if (in.restart) {
-    world = std::move(*make_world(level));
+    session = std::move(*make_session(level));
     held_steer = 0.0;
   }
+  World& world = session.world();
   if (in.steer) held_steer = *in.steer;
   if (in.jump) jump = true;
   if (in.spawn) {
@@ -310,16 +305,16 @@ void apply_input(const ReplayInput& in, World& world, const Level& level, double
     spec.position = *in.spawn;
     world.add_tire(spec);
   }
-  if (in.grab) world.grab(*in.grab, in.grab_radius);
-  if (in.drag) world.move_grab(*in.drag);
-  if (in.release) world.release_grab();
+  if (in.grab) session.grab(*in.grab, in.grab_radius);
+  if (in.drag) session.move_grab(*in.drag);
+  if (in.release) session.release_grab();
   if (in.set_key) world.set_parameter(*in.set_key, in.set_value);
   if (in.gravity) world.set_gravity(*in.gravity);
 }
 
 ReplayOutcome run_replay(const Replay& replay, const Level& level) {
   ReplayOutcome out;
-  std::unique_ptr<World> world = make_world(level);
+  std::unique_ptr<LevelSession> session = make_session(level);
   double steer = 0.0;
   std::size_t next_input = 0, next_checkpoint = 0, next_box = 0;
   // The boxes in tick order (file order within a tick): each tick looks only at its own, so that
@@ -331,7 +326,7 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
   const auto check = [&](std::uint64_t tick) {
     while (next_checkpoint < replay.expect.checkpoints.size() && replay.expect.checkpoints[next_checkpoint].tick == tick) {
       const ReplayCheckpoint& want = replay.expect.checkpoints[next_checkpoint++];
-      const std::string got = to_hex(world->state_hash());
+      const std::string got = to_hex(session->state_hash());
       out.checkpoints.push_back({tick, got});
       if (got == want.hash) {
         if (!out.first_divergent_tick) out.last_matching_tick = tick;
@@ -346,12 +341,12 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
       const ReplayBox& b = *boxes[next_box];
       ++out.box_checks;
       if (b.tick != tick) continue;
-      if (b.tire >= world->tires().size()) {
+      if (b.tire >= session->world().tires().size()) {
         out.failures.push_back("tick " + std::to_string(tick) + ": no tire " + std::to_string(b.tire) + " (there are " +
-                               std::to_string(world->tires().size()) + ")");
+                               std::to_string(session->world().tires().size()) + ")");
         continue;
       }
-      const Vec2 c = world->tires()[b.tire].centroid();
+      const Vec2 c = session->world().tires()[b.tire].centroid();
       if (c.x < b.min.x || c.x > b.max.x || c.y < b.min.y || c.y > b.max.y)
         out.failures.push_back("tick " + std::to_string(tick) + ": tire " + std::to_string(b.tire) + " centroid (" +
                                std::to_string(c.x) + ", " + std::to_string(c.y) + ") is outside its box");
@@ -361,12 +356,12 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
   for (std::uint64_t tick = 0; tick < replay.ticks; ++tick) {
     bool jump = false;
     while (next_input < replay.inputs.size() && replay.inputs[next_input].tick == tick)
-      apply_input(replay.inputs[next_input++], *world, level, steer, jump);
-    world->step({steer, jump});
+      apply_input(replay.inputs[next_input++], *session, level, steer, jump);
+    session->step({steer, jump});
     check(tick + 1);
   }
-  out.status = to_string(world->status());
-  out.hash = to_hex(world->state_hash());
+  out.status = to_string(session->status());
+  out.hash = to_hex(session->state_hash());
   if (replay.expect.status && *replay.expect.status != out.status)
     out.failures.push_back("status is " + out.status + ", expected " + *replay.expect.status);
   if (replay.expect.hash && *replay.expect.hash != out.hash) {
@@ -382,16 +377,16 @@ ReplayRecorder::ReplayRecorder(std::string level_path, std::string level_sha256,
   replay_.level_sha256 = std::move(level_sha256);
 }
 
-void ReplayRecorder::after_step(const World& world) {
+void ReplayRecorder::after_step(const LevelSession& session) {
   ++replay_.ticks;
   if (checkpoint_every_ > 0 && replay_.ticks % checkpoint_every_ == 0)
-    replay_.expect.checkpoints.push_back({replay_.ticks, to_hex(world.state_hash())});
+    replay_.expect.checkpoints.push_back({replay_.ticks, to_hex(session.state_hash())});
 }
 
-Replay ReplayRecorder::finish(const World& world) const {
+Replay ReplayRecorder::finish(const LevelSession& session) const {
   Replay r = replay_;
-  r.expect.status = to_string(world.status());
-  r.expect.hash = to_hex(world.state_hash());
+  r.expect.status = to_string(session.status());
+  r.expect.hash = to_hex(session.state_hash());
   return r;
 }
 

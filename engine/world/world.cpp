@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "tire/math/state_hash.h"
-#include "world_script_host.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/tire_solver.h"
 
@@ -19,16 +18,6 @@ World::World(const SolverConfig& config, Vec2 gravity)
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
-
-void World::set_script(const ScriptSpec& spec) {
-  const bool empty = spec.regions.empty() && spec.triggers.empty() && spec.counters.empty() && !spec.goal &&
-                     !spec.time_limit;
-  script_ = empty ? nullptr : std::make_unique<ScriptRunner>(spec);
-  if (script_) {
-    WorldScriptHost host(*this);
-    script_->update(host);
-  }
-}
 
 void World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   Tire* t = find_tire(id);
@@ -82,55 +71,27 @@ bool World::set_parameter(std::string_view key, double value) {
   return false;
 }
 
-void World::show_message(std::string_view text, double seconds) {
-  messages_.push_back({std::string(text), tick_ + static_cast<std::uint64_t>(std::ceil(seconds / config_.dt))});
+void World::reset_tire(TireId id, std::optional<Vec2> position) {
+  Tire* t = find_tire(id);
+  if (!t) return;
+  if (position) t->spec.position = *position;
+  t->reset();
 }
 
-std::optional<TireId> World::grab(Vec2 point, double radius) {
-  release_grab();
-  // The nearest tread particle within `radius`; failing that, the tire whose hub is under the
-  // point, by its nearest tread particle.
-  Tire* chosen = nullptr;
-  std::uint32_t particle = 0;
-  double best = radius * radius;
-  for (Tire& t : tires_)
-    for (std::uint32_t i = 0; i < t.n; ++i)
-      if (const double d2 = length_squared(t.particles.x[i] - point); d2 < best) best = d2, chosen = &t, particle = i;
-  if (!chosen) {
-    for (Tire& t : tires_) {
-      if (length(t.centroid() - point) >= t.spec.outer_radius) continue;
-      chosen = &t;
-      double nearest = 1e300;
-      for (std::uint32_t i = 0; i < t.n; ++i)
-        if (const double d2 = length_squared(t.particles.x[i] - point); d2 < nearest) nearest = d2, particle = i;
-      break;
-    }
-  }
-  if (!chosen) return std::nullopt;
-  chosen->grabbed = true;
-  chosen->grab_particle = particle;
-  chosen->grab_target = point;
-  grabbed_ = chosen->id;
-  return grabbed_;
+void World::grab_particle(TireId id, std::uint32_t particle, Vec2 target) {
+  Tire* t = find_tire(id);
+  if (!t || particle >= t->n) return;
+  t->grabbed = true;
+  t->grab_particle = particle;
+  t->grab_target = target;
 }
 
-void World::move_grab(Vec2 target) {
-  if (grabbed_)
-    if (Tire* t = find_tire(*grabbed_)) t->grab_target = target;
+void World::move_grabbed_particle(TireId id, Vec2 target) {
+  if (Tire* t = find_tire(id)) t->grab_target = target;
 }
 
-void World::release_grab() {
-  if (grabbed_)
-    if (Tire* t = find_tire(*grabbed_)) t->grabbed = false;
-  grabbed_.reset();
-}
-
-void World::respawn_player() {
-  const Tire* p = player();
-  if (!p) return;
-  Tire& t = *find_tire(p->id);
-  if (checkpoint_) t.spec.position = *checkpoint_;
-  t.reset();
+void World::release_particle(TireId id) {
+  if (Tire* t = find_tire(id)) t->grabbed = false;
 }
 
 TireId World::add_tire(const TireSpec& spec) {
@@ -226,11 +187,6 @@ void World::step(const TickInput& input) {
   rigid_.end_tick(config_.dt);
   for (Tire& t : tires_) guard_divergence(t);
   ++tick_;
-  std::erase_if(messages_, [this](const ScriptMessage& m) { return m.until_tick <= tick_; });
-  if (script_) {
-    WorldScriptHost host(*this);
-    script_->update(host);
-  }
 }
 
 namespace {
@@ -306,6 +262,11 @@ void World::guard_divergence(Tire& t) {
 
 std::uint64_t World::state_hash() const {
   StateHash h;
+  hash_into(h);
+  return h.digest();
+}
+
+void World::hash_into(StateHash& h) const {
   h.add(tick_);
   for (const Tire& t : tires_) {
     h.add(t.id);
@@ -314,8 +275,6 @@ std::uint64_t World::state_hash() const {
     h.add_bytes(t.grounded_flags.data(), t.grounded_flags.size());
   }
   rigid_.hash_into(h);
-  if (script_) script_->hash_into(h);
-  return h.digest();
 }
 
 }  // namespace tire

@@ -35,7 +35,7 @@ struct Recorder : SessionObserver {
     batches.emplace_back(tick, events.size());
   }
   void on_step(std::uint64_t tick, const tire::TickInput&) override { steps.push_back(tick); }
-  void on_stepped(const tire::World&) override {}
+  void on_stepped(const tire::LevelSession&) override {}
 };
 
 }  // namespace
@@ -231,9 +231,9 @@ TEST_CASE("the 300-tire level is all on one screen at the game's zoom", "[unit][
   const tire::LevelLoad load =
       tire::load_level_file(std::filesystem::path(TIRE_LEVELS_DIR) / "08-three-hundred.json");
   REQUIRE(load.level);
-  tire::World world(load.level->solver, load.level->gravity);
-  tire::populate_world(*load.level, world);
-  const tire::Aabb bounds = level_bounds(world);
+  const std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
+  const tire::World& world = session->world();
+  const tire::Aabb bounds = level_bounds(*session);
   const tire::Tire* player = world.player();
   REQUIRE(player);
   // 16:9, 4:3 and a tall window: the walls (x in [-4.5, 4.5]), the floor and the height the pile

@@ -23,7 +23,7 @@
 #include "tire/io/level.h"
 #include "process_memory.h"
 #include "tire/replay/replay.h"
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace {
 
@@ -92,7 +92,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const tire::Level& level = *load.level;
-  std::unique_ptr<tire::World> world = tire::make_world(level);
+  std::unique_ptr<tire::LevelSession> session = tire::make_session(level);
+  tire::World* const world = &session->world();  // the same object after a restart (assigned in place)
   const Region region = region_of(level);
   const double dt = level.solver.dt;
   const auto ticks_per_minute = static_cast<std::uint64_t>(std::llround(60.0 / dt));
@@ -156,7 +157,7 @@ int main(int argc, char** argv) {
     }
     if (any) {
       const std::size_t before = world->tires().size();
-      tire::apply_input(in, *world, level, held_steer, jump);
+      tire::apply_input(in, *session, level, held_steer, jump);
       if (world->tires().size() > before) {
         ++spawns;
         spawned.push_back(world->tires().back().id);
@@ -166,7 +167,7 @@ int main(int argc, char** argv) {
         }
       }
     }
-    world->step({held_steer, jump});
+    session->step({held_steer, jump});
     // Tires thrown over the level's walls fall for ever: like the game, remove spawned ones once
     // they are well below the level (they count as lost).
     for (auto it = spawned.begin(); it != spawned.end();) {
@@ -216,7 +217,7 @@ int main(int argc, char** argv) {
                   static_cast<unsigned long long>(minute), static_cast<unsigned long long>(tick + 1),
                   world->tires().size(), static_cast<unsigned long long>(spawns),
                   static_cast<unsigned long long>(removals), static_cast<unsigned long long>(lost),
-                  static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside, tire::to_string(world->status()),
+                  static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside, tire::to_string(session->status()),
                   static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(warnings), rss, heap, wall);
       std::fflush(stdout);
     }

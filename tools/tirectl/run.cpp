@@ -18,7 +18,8 @@ namespace {
 
 nlohmann::ordered_json vec(tire::Vec2 v) { return nlohmann::ordered_json::array({v.x, v.y}); }
 
-nlohmann::ordered_json summary(const tire::World& world) {
+nlohmann::ordered_json summary(const tire::LevelSession& session) {
+  const tire::World& world = session.world();
   nlohmann::ordered_json tires = nlohmann::ordered_json::array();
   for (const tire::Tire& t : world.tires())
     tires.push_back({{"id", t.id},
@@ -36,10 +37,10 @@ nlohmann::ordered_json summary(const tire::World& world) {
   }
   return {{"ticks", world.tick()},
           {"time", world.time()},
-          {"status", tire::to_string(world.status())},
+          {"status", tire::to_string(session.status())},
           {"tires", tires},
           {"props", props},
-          {"hash", tire::to_hex(world.state_hash())}};
+          {"hash", tire::to_hex(session.state_hash())}};
 }
 
 void trace(const tire::World& world) {
@@ -94,29 +95,30 @@ int run(const RunOptions& options) {
     recorder.emplace(std::filesystem::relative(level, out.parent_path()).generic_string(), tire::sha256_hex(*bytes));
   }
 
-  std::unique_ptr<tire::World> world = tire::make_world(*load.level);
+  std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
   double steer = 0.0;
   std::size_t next = 0;
   for (long long tick = 0; tick < options.ticks; ++tick) {
     bool jump = false;
     while (next < inputs.size() && inputs[next].tick == static_cast<std::uint64_t>(tick)) {
       if (recorder) recorder->input(inputs[next]);
-      tire::apply_input(inputs[next++], *world, *load.level, steer, jump);
+      tire::apply_input(inputs[next++], *session, *load.level, steer, jump);
     }
-    world->step({steer, jump});
-    if (recorder) recorder->after_step(*world);
-    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(*world);
-    for (const std::string& w : world->warnings()) std::cerr << "tirectl: warning: " << w << "\n";
-    world->warnings().clear();
+    session->step({steer, jump});
+    if (recorder) recorder->after_step(*session);
+    tire::World& world = session->world();
+    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world);
+    for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
+    world.warnings().clear();
   }
   if (recorder) {
     std::string error;
-    if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*world)), error)) {
+    if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*session)), error)) {
       std::cerr << "tirectl: " << error << "\n";
       return 2;
     }
   }
-  std::cout << summary(*world).dump(2) << "\n";
+  std::cout << summary(*session).dump(2) << "\n";
   return 0;
 }
 

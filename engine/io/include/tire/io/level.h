@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 
 namespace tire {
 
+class LevelSession;
 class World;
 
 struct Level {
@@ -62,8 +64,11 @@ LevelLoad load_level_file(const std::filesystem::path& file,
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});
 
-// Adds the level's obstacles, props, tires and script to an empty world built with its solver and
-// gravity.
+// Adds the level's obstacles, props and tires to an empty world built with its solver and
+// gravity: its physics, without the script.
 void populate_world(const Level& level, World& world);
+
+// The level ready to play: its world populated and its script installed (tick-0 actions done).
+std::unique_ptr<LevelSession> make_session(const Level& level);
 
 }  // namespace tire

@@ -16,7 +16,7 @@
 #include "tire/io/json_reader.h"
 #include "tire/io/level.h"
 #include "tire/math/vec2.h"
-#include "tire/world/world.h"
+#include "tire/session/level_session.h"
 
 namespace tire {
 
@@ -88,12 +88,9 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file);
 
 std::string replay_to_json(const Replay& replay);
 
-// Plays inputs into a world. `held_steer` carries the steer between ticks. A restart rebuilds the
-// world from `level`.
-void apply_input(const ReplayInput& input, World& world, const Level& level, double& held_steer, bool& jump);
-
-// Builds a fresh world for a level.
-std::unique_ptr<World> make_world(const Level& level);
+// Plays inputs into a level session. `held_steer` carries the steer between ticks. A restart
+// rebuilds the session from `level`.
+void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, double& held_steer, bool& jump);
 
 // What a replay run came to.
 struct ReplayOutcome {
@@ -116,8 +113,8 @@ class ReplayRecorder {
  public:
   ReplayRecorder(std::string level_path, std::string level_sha256, std::uint64_t checkpoint_every = 30);
   void input(const ReplayInput& in) { replay_.inputs.push_back(in); }
-  void after_step(const World& world);
-  Replay finish(const World& world) const;
+  void after_step(const LevelSession& session);
+  Replay finish(const LevelSession& session) const;
   std::uint64_t ticks() const { return replay_.ticks; }
 
  private:

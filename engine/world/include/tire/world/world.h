@@ -1,6 +1,6 @@
-// The simulated world: tires, static obstacles and the fixed tick that advances them. Knows
-// nothing of windows, files or input devices: the game, tirectl and the tests all drive it
-// through step().
+// The simulated world: tires, obstacles and props, and the fixed tick that advances them. Physics
+// only: it knows nothing of windows, files, input devices or level scripts (a LevelSession,
+// session/, adds those around it). The game, tirectl and the tests all drive it through step().
 #pragma once
 
 #include <cstdint>
@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tire/math/state_hash.h"
 #include "tire/rigid/rigid_world.h"
-#include "tire/script/script_runner.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/math/worker_pool.h"
 #include "tire/tire/solver_config.h"
@@ -23,15 +23,6 @@ namespace tire {
 struct TickInput {
   double steer = 0.0;  // [-1, 1]
   bool jump = false;
-};
-
-// How near a tread particle a mouse press must be to grab its tire (m).
-inline constexpr double kGrabRadius = 0.3;
-
-// A message a level script put on screen.
-struct ScriptMessage {
-  std::string text;
-  std::uint64_t until_tick;  // shown while tick() < until_tick
 };
 
 class World {
@@ -47,15 +38,6 @@ class World {
   void add_obstacle(const Obstacle& obstacle) { rigid_.add_obstacle(obstacle); }
   std::uint32_t add_prop(const PropSpec& spec) { return rigid_.add_prop(spec); }
 
-  // Installs the level's script and runs its tick-0 update at once, so that level-start actions
-  // apply before any physics. An empty spec leaves the world unscripted.
-  void set_script(const ScriptSpec& spec);
-  ScriptStatus status() const { return script_ ? script_->status() : ScriptStatus::running; }
-  const ScriptRunner* script() const { return script_.get(); }
-  const std::vector<ScriptMessage>& messages() const { return messages_; }
-  std::optional<Vec2> checkpoint() const { return checkpoint_; }
-  bool next_level_requested() const { return next_level_requested_; }
-
   // What scripts (and the game's tuning panel) can do between ticks.
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
   // "solver.substeps|iterations|damping", "player.<key>" or "tires.<key>" for the tire keys
@@ -64,19 +46,15 @@ class World {
   // compliance.outer|inner|spoke|pressure. False, changing nothing, for an unknown key or a value
   // that is not finite.
   bool set_parameter(std::string_view key, double value);
-  void show_message(std::string_view text, double seconds);
-  void set_checkpoint(Vec2 position) { checkpoint_ = position; }
-  void request_next_level() { next_level_requested_ = true; }
-  // Puts the player back at the checkpoint (or its spawn point), at rest.
-  void respawn_player();
+  // Puts a tire back at rest in its spawn shape, at `position` from now on if given.
+  void reset_tire(TireId id, std::optional<Vec2> position = std::nullopt);
 
-  // Mouse grab: the tire under `point` (within `radius` of its tread) is pulled by its nearest
-  // tread particle towards the target, until released. Returns the tire grabbed.
-  std::optional<TireId> grab(Vec2 point, double radius);
-  void move_grab(Vec2 target);
-  void release_grab();
+  // A grabbed particle is pulled towards its target every substep (tire_solver), until released.
+  void grab_particle(TireId id, std::uint32_t particle, Vec2 target);
+  void move_grabbed_particle(TireId id, Vec2 target);
+  void release_particle(TireId id);
 
-  // Advances one fixed tick of config().dt: `input` drives the player; then the script runs.
+  // Advances one fixed tick of config().dt, `input` driving the player.
   void step(const TickInput& input);
 
   // Threads used for scenes of many tires (default: the hardware's). Results are identical for
@@ -104,9 +82,10 @@ class World {
   double time() const { return static_cast<double>(tick_) * config_.dt; }
 
   // Digest of the exact state: tick, every tire's id, particle positions, velocities and grounded
-  // flags, every prop's transform, velocity and path state, and the script's state. Same binary
-  // and same inputs give the same hash.
+  // flags, every prop's transform, velocity and path state. Same binary and same inputs give the
+  // same hash. hash_into adds the same to a digest a caller goes on with (LevelSession: the script).
   std::uint64_t state_hash() const;
+  void hash_into(StateHash& h) const;
 
   // Warnings raised while stepping (a diverged tire that was reset, ...); the caller drains them.
   std::vector<std::string>& warnings() { return warnings_; }
@@ -139,11 +118,6 @@ class World {
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;
   std::vector<std::string> warnings_;
-  std::unique_ptr<ScriptRunner> script_;
-  std::vector<ScriptMessage> messages_;
-  std::optional<Vec2> checkpoint_;
-  bool next_level_requested_ = false;
-  std::optional<TireId> grabbed_;
 };
 
 }  // namespace tire

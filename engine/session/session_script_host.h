@@ -1,15 +1,16 @@
-// The World as a level script sees it (ScriptHost), by index over its tires and props.
+// A level session as its script sees it (ScriptHost), by index over its tires and props.
 #pragma once
 
 #include "tire/script/script_host.h"
 
 namespace tire {
 
+class LevelSession;
 class World;
 
-class WorldScriptHost final : public ScriptHost {
+class SessionScriptHost final : public ScriptHost {
  public:
-  explicit WorldScriptHost(World& world) : world_(world) {}
+  explicit SessionScriptHost(LevelSession& session);
 
   std::uint64_t tick() const override;
   double dt() const override;
@@ -34,6 +35,7 @@ class WorldScriptHost final : public ScriptHost {
   void next_level() override;
 
  private:
+  LevelSession& session_;
   World& world_;
 };
 

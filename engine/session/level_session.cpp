@@ -1,0 +1,86 @@
+#include "tire/session/level_session.h"
+
+#include <cmath>
+
+#include "session_script_host.h"
+#include "tire/math/state_hash.h"
+
+namespace tire {
+
+LevelSession::LevelSession(const SolverConfig& config, Vec2 gravity) : world_(config, gravity) {}
+LevelSession::~LevelSession() = default;
+LevelSession::LevelSession(LevelSession&&) noexcept = default;
+LevelSession& LevelSession::operator=(LevelSession&&) noexcept = default;
+
+void LevelSession::set_script(const ScriptSpec& spec) {
+  const bool empty = spec.regions.empty() && spec.triggers.empty() && spec.counters.empty() && !spec.goal &&
+                     !spec.time_limit;
+  script_ = empty ? nullptr : std::make_unique<ScriptRunner>(spec);
+  if (script_) {
+    SessionScriptHost host(*this);
+    script_->update(host);
+  }
+}
+
+void LevelSession::step(const TickInput& input) {
+  world_.step(input);
+  const std::uint64_t now = world_.tick();
+  std::erase_if(messages_, [now](const ScriptMessage& m) { return m.until_tick <= now; });
+  if (script_) {
+    SessionScriptHost host(*this);
+    script_->update(host);
+  }
+}
+
+void LevelSession::show_message(std::string_view text, double seconds) {
+  const auto ticks = static_cast<std::uint64_t>(std::ceil(seconds / world_.config().dt));
+  messages_.push_back({std::string(text), world_.tick() + ticks});
+}
+
+void LevelSession::respawn_player() {
+  if (const Tire* p = world_.player()) world_.reset_tire(p->id, checkpoint_);
+}
+
+std::optional<TireId> LevelSession::grab(Vec2 point, double radius) {
+  release_grab();
+  // The nearest tread particle within `radius`; failing that, the tire whose hub is under the
+  // point, by its nearest tread particle.
+  const Tire* chosen = nullptr;
+  std::uint32_t particle = 0;
+  double best = radius * radius;
+  for (const Tire& t : world_.tires())
+    for (std::uint32_t i = 0; i < t.n; ++i)
+      if (const double d2 = length_squared(t.particles.x[i] - point); d2 < best) best = d2, chosen = &t, particle = i;
+  if (!chosen) {
+    for (const Tire& t : world_.tires()) {
+      if (length(t.centroid() - point) >= t.spec.outer_radius) continue;
+      chosen = &t;
+      double nearest = 1e300;
+      for (std::uint32_t i = 0; i < t.n; ++i)
+        if (const double d2 = length_squared(t.particles.x[i] - point); d2 < nearest) nearest = d2, particle = i;
+      break;
+    }
+  }
+  if (!chosen) return std::nullopt;
+  grabbed_ = chosen->id;
+  world_.grab_particle(*grabbed_, particle, point);
+  return grabbed_;
+}
+
+void LevelSession::move_grab(Vec2 target) {
+  if (grabbed_) world_.move_grabbed_particle(*grabbed_, target);
+}
+
+void LevelSession::release_grab() {
+  if (grabbed_) world_.release_particle(*grabbed_);
+  grabbed_.reset();
+}
+
+std::uint64_t LevelSession::state_hash() const {
+  StateHash h;
+  world_.hash_into(h);
+  if (script_) script_->hash_into(h);
+  return h.digest();
+}
+
+}  // namespace tire
