@@ -31,10 +31,10 @@ struct MoveGrabEvent {
 };
 // Button released: LevelSession::release_grab().
 struct ReleaseGrabEvent {};
-// A tuning change, key = value. Keys are World::set_parameter's ("tires.compliance.outer",
-// "tires.pressure", "tires.mass_scale", "solver.substeps", ...) plus the game's own
-// "tires.friction" (static and kinetic together) and "gravity.x" / "gravity.y"
-// (World::set_gravity). See tuning.h.
+// A tuning change, key = value. Keys are the parameter table's rows the panel may set
+// ("tires.compliance.outer", "tires.pressure", "tires.mass_scale", "solver.substeps", "gravity.x",
+// ...; tire/parameters.h), applied through World::set_parameter; "tires.friction" sets the static
+// and the kinetic friction together. See tuning.h.
 struct TuneEvent {
   std::string key;
   double value = 0.0;

@@ -61,21 +61,25 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
             in.release = true;
             input(in);
           } else if constexpr (std::is_same_v<T, TuneEvent>) {
-            // The game's own keys become what they do to the World (tuning.cpp, apply_tuning).
-            if (e.key == "gravity.x" || e.key == "gravity.y") {
-              (e.key == "gravity.x" ? gravity_.x : gravity_.y) = e.value;
+            // A panel change becomes what apply_tuning (tuning.cpp) does to the World; one the
+            // table refuses changed nothing there, so it is not recorded either.
+            const tire::Parameter* p = tire::find_parameter(e.key);
+            if (!p || !p->may(tire::by_panel) || e.key != p->key) return;
+            const double value = p->integer ? std::round(e.value) : e.value;
+            if (!p->accepts(value)) return;
+            if (p->id == tire::ParamId::gravity_x || p->id == tire::ParamId::gravity_y) {
+              (p->id == tire::ParamId::gravity_x ? gravity_.x : gravity_.y) = value;
               in.gravity = gravity_;
               input(in);
-            } else if (e.key == "tires.friction") {
+            } else if (p->id == tire::ParamId::tire_friction) {
               for (const char* key : {"tires.friction", "tires.kinetic_friction"}) {
                 in.set_key = key;
-                in.set_value = e.value;
+                in.set_value = value;
                 input(in);
               }
-            } else if (tire::is_tunable_key(e.key)) {
+            } else if (p->may(tire::by_replay)) {
               in.set_key = e.key;
-              const bool integral = e.key == "solver.substeps" || e.key == "solver.iterations";
-              in.set_value = integral ? std::round(e.value) : e.value;
+              in.set_value = value;
               input(in);
             }
           }

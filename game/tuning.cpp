@@ -1,99 +1,122 @@
 #include "tuning.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace game {
 
 namespace {
 
-struct Field {
-  const char* key;
-  double Tuning::*member;
+constexpr const char* kCompliance = "Compliance (inverse stiffness)";
+constexpr const char* kTire = "Tire";
+constexpr const char* kWorld = "World and solver";
+
+// The panel's presentation of each key it tunes. Which keys those are is the table's business.
+constexpr SliderSpec kSliders[] = {
+    {"tires.compliance.outer", kCompliance, "outer ring", 1e-9, 1e-1, SliderScale::exponent, "",
+     "tread segments (m/N): larger is softer"},
+    {"tires.compliance.inner", kCompliance, "inner ring", 1e-9, 1e-1, SliderScale::exponent, "", "rim segments (m/N)"},
+    {"tires.compliance.spoke", kCompliance, "spokes", 1e-9, 1e-1, SliderScale::exponent, "", "sidewall spokes (m/N)"},
+    {"tires.compliance.pressure", kCompliance, "pressure##c", 1e-8, 1e0, SliderScale::exponent, "",
+     "the air (m^4/J): larger lets the area change more"},
+    {"tires.pressure", kTire, "pressure", 0.1, 4.0, SliderScale::linear, "%.2f", "target area / rest area: above 1 inflates"},
+    {"tires.mass_scale", kTire, "mass scale", 0.1, 10.0, SliderScale::logarithmic, "%.2f x", "each tire's mass times this"},
+    {"tires.friction", kTire, "friction", 0.0, 3.0, SliderScale::linear, "%.2f", "static and kinetic friction coefficient"},
+    {"tires.material_damping", kTire, "material damping", 1e-5, 1.0, SliderScale::exponent, "",
+     "Kelvin-Voigt damping time (s)"},
+    {"gravity.x", kWorld, "gravity x", -30.0, 30.0, SliderScale::linear, "%.2f m/s2", "horizontal gravity"},
+    {"gravity.y", kWorld, "gravity y", -30.0, 30.0, SliderScale::linear, "%.2f m/s2", "vertical gravity (-9.81 is Earth)"},
+    {"solver.damping", kWorld, "damping", 0.0, 100.0, SliderScale::logarithmic, "%.2f 1/s",
+     "solver.damping: decay rate of non-rigid motion"},
+    {"solver.substeps", kWorld, "substeps", 1, 256, SliderScale::integer, "", "solver.substeps: the most effective accuracy knob"},
+    {"solver.iterations", kWorld, "iterations", 1, 64, SliderScale::integer, "",
+     "solver.iterations: constraint sweeps per substep"},
 };
 
-constexpr Field kFields[] = {
-    {"tires.compliance.outer", &Tuning::compliance_outer},
-    {"tires.compliance.inner", &Tuning::compliance_inner},
-    {"tires.compliance.spoke", &Tuning::compliance_spoke},
-    {"tires.compliance.pressure", &Tuning::compliance_pressure},
-    {"tires.pressure", &Tuning::pressure},
-    {"tires.mass_scale", &Tuning::mass_scale},
-    {"tires.friction", &Tuning::friction},
-    {"gravity.x", &Tuning::gravity_x},
-    {"gravity.y", &Tuning::gravity_y},
-    {"solver.damping", &Tuning::solver_damping},
-    {"tires.material_damping", &Tuning::material_damping},
-    {"solver.substeps", &Tuning::substeps},
-    {"solver.iterations", &Tuning::iterations},
-};
+std::size_t index_of(std::string_view key) {
+  const auto& keys = tuning_keys();
+  return static_cast<std::size_t>(std::find(keys.begin(), keys.end(), key) - keys.begin());
+}
 
 }  // namespace
 
-Tuning Tuning::from_world(const tire::World& world) {
-  Tuning t;
-  tire::TireSpec spec;
-  if (const tire::Tire* p = world.player()) spec = p->spec;
-  else if (!world.tires().empty()) spec = world.tires().front().spec;
-  t.compliance_outer = spec.compliance.outer;
-  t.compliance_inner = spec.compliance.inner;
-  t.compliance_spoke = spec.compliance.spoke;
-  t.compliance_pressure = spec.compliance.pressure;
-  t.pressure = spec.pressure;
-  t.mass_scale = 1.0;
-  t.friction = spec.friction;
-  t.gravity_x = world.gravity().x;
-  t.gravity_y = world.gravity().y;
-  t.solver_damping = world.config().damping;
-  t.material_damping = spec.material_damping;
-  t.substeps = world.config().substeps;
-  t.iterations = world.config().iterations;
-  return t;
-}
-
-bool Tuning::set(std::string_view key, double value) {
-  for (const Field& f : kFields)
-    if (key == f.key) {
-      this->*f.member = value;
-      return true;
-    }
-  return false;
+const std::vector<const tire::Parameter*>& tuning_parameters() {
+  static const std::vector<const tire::Parameter*> rows = [] {
+    std::vector<const tire::Parameter*> out;
+    for (const tire::Parameter& p : tire::parameters())
+      if (p.may(tire::by_panel)) out.push_back(&p);
+    return out;
+  }();
+  return rows;
 }
 
 const std::vector<std::string>& tuning_keys() {
   static const std::vector<std::string> keys = [] {
-    std::vector<std::string> k;
-    for (const Field& f : kFields) k.emplace_back(f.key);
-    return k;
+    std::vector<std::string> out;
+    for (const tire::Parameter* p : tuning_parameters()) out.emplace_back(p->key);
+    return out;
   }();
   return keys;
 }
 
+Tuning::Tuning() {
+  for (const tire::Parameter* p : tuning_parameters()) values.push_back(p->default_value);
+}
+
+Tuning Tuning::from_world(const tire::World& world) {
+  Tuning t;
+  for (std::size_t i = 0; i < t.values.size(); ++i)
+    t.values[i] = world.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
+  return t;
+}
+
+bool Tuning::set(std::string_view key, double value) {
+  const std::size_t i = index_of(key);
+  if (i == values.size()) return false;
+  values[i] = value;
+  return true;
+}
+
 double tuning_value(const Tuning& t, std::string_view key) {
-  for (const Field& f : kFields)
-    if (key == f.key) return t.*f.member;
-  return 0.0;
+  const std::size_t i = index_of(key);
+  return i < t.values.size() ? t.values[i] : 0.0;
 }
 
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to) {
   std::vector<TuneEvent> out;
-  for (const Field& f : kFields)
-    if (from.*f.member != to.*f.member) out.push_back({f.key, to.*f.member});
+  const auto& keys = tuning_keys();
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (from.values.at(i) != to.values.at(i)) out.push_back({keys[i], to.values[i]});
   return out;
 }
 
 bool apply_tuning(tire::World& world, std::string_view key, double value) {
-  if (key == "gravity.x") {
-    world.set_gravity({value, world.gravity().y});
-    return true;
-  }
-  if (key == "gravity.y") {
-    world.set_gravity({world.gravity().x, value});
-    return true;
-  }
-  if (key == "tires.friction")
+  const tire::Parameter* p = tire::find_parameter(key);
+  if (!p || !p->may(tire::by_panel) || key != p->key) return false;
+  if (p->integer) value = std::round(value);
+  if (p->id == tire::ParamId::tire_friction)
     return world.set_parameter("tires.friction", value) && world.set_parameter("tires.kinetic_friction", value);
-  if (key == "solver.substeps" || key == "solver.iterations") value = std::round(value);
   return world.set_parameter(key, value);
+}
+
+const std::vector<const char*>& slider_sections() {
+  static const std::vector<const char*> sections{kCompliance, kTire, kWorld};
+  return sections;
+}
+
+const SliderSpec* slider_spec(std::string_view key) {
+  for (const SliderSpec& s : kSliders)
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
+SliderRange slider_range(const tire::Parameter& p) {
+  const double inset = (p.range.max - p.range.min) * 1e-6;
+  const double lo = p.range.min + (p.range.min_open ? inset : 0.0);
+  const double hi = p.range.max - (p.range.max_open ? inset : 0.0);
+  const SliderSpec* s = slider_spec(p.key);
+  if (!s) return {lo, hi};
+  return {std::clamp(s->min, lo, hi), std::clamp(s->max, lo, hi)};
 }
 
 }  // namespace game

@@ -1,51 +1,71 @@
-// The live-tunable numbers of the tuning panel, in one struct, and how a change reaches the World.
-// A change is always a key = value pair (a TuneEvent), so a replay can log and re-apply it.
+// The live-tunable numbers of the tuning panel and how a change reaches the World. The keys are
+// the parameter table's rows that the panel may set (tire/parameters.h), in the table's order;
+// each slider's range lies inside its row's range. A change is always a key = value pair (a
+// TuneEvent), so a replay can log and re-apply it.
 #pragma once
 
-#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "session_input.h"
+#include "tire/tire/parameters.h"
 #include "tire/world/world.h"
 
 namespace game {
 
-struct Tuning {
-  // XPBD compliances of every tire (m/N; the pressure one m⁴/J).
-  double compliance_outer = 1e-6;
-  double compliance_inner = 1e-7;
-  double compliance_spoke = 1e-6;
-  double compliance_pressure = 1e-5;
-  double pressure = 1.0;          // target area / rest area
-  double mass_scale = 1.0;        // each tire's mass = its spawn mass × this
-  double friction = 0.9;          // static and kinetic
-  double gravity_x = 0.0;         // m/s²
-  double gravity_y = -9.81;       // m/s²
-  double solver_damping = 0.0;    // 1/s
-  double material_damping = 5e-3; // s
-  double substeps = 8;            // integral
-  double iterations = 1;          // integral
+// The parameter table's rows the panel may set, in the table's order.
+const std::vector<const tire::Parameter*>& tuning_parameters();
+// Their keys, in the same order: the order changes are emitted in.
+const std::vector<std::string>& tuning_keys();
 
-  // The values in force in a freshly loaded world: the player's tire (or a default one) and the
-  // solver's settings.
+struct Tuning {
+  std::vector<double> values;  // one per tuning_keys(), in that order
+
+  // The table's defaults.
+  Tuning();
+  // The values in force in a freshly loaded world: the player's tire (or the first one; the
+  // table's defaults without tires), the solver's settings and the gravity.
   static Tuning from_world(const tire::World& world);
 
-  // Sets the field a key names; false for an unknown key.
+  // Sets the value a key names; false for a key the panel does not tune.
   bool set(std::string_view key, double value);
+  bool operator==(const Tuning&) const = default;
 };
 
-// The keys, in the order changes are emitted.
-const std::vector<std::string>& tuning_keys();
+// The value of `key` in `t`; 0 for a key the panel does not tune.
 double tuning_value(const Tuning& t, std::string_view key);
 
 // The key = value changes that turn `from` into `to`.
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 
-// Applies one change to the world: World::set_parameter for the engine's keys ("tires.mass_scale"
-// scales each tire's spawn mass), both frictions for "tires.friction", World::set_gravity for
-// "gravity.x" and "gravity.y". False for an unknown key.
+// Applies one change to the world through World::set_parameter (an integer key's value rounded
+// first; "tires.friction" sets the kinetic friction too: the panel has one friction slider).
+// False for a key the panel does not tune or a value outside its range.
 bool apply_tuning(tire::World& world, std::string_view key, double value);
+
+// How the panel shows a key: its slider. The slider's range may be narrower than the table's
+// range, for usability, never wider (slider_range() clips it, and a test checks it).
+enum class SliderScale { linear, logarithmic, exponent, integer };
+struct SliderSpec {
+  std::string_view key;
+  const char* section;  // the panel's collapsing header
+  const char* label;
+  double min, max;
+  SliderScale scale;
+  const char* format;  // linear and logarithmic sliders
+  const char* tip;
+};
+// The panel's sections, in the order it shows them.
+const std::vector<const char*>& slider_sections();
+// The slider of a tuned key; nullptr when the panel has no spec for it (it then shows a plain
+// slider over the table's range, in the last section).
+const SliderSpec* slider_spec(std::string_view key);
+// What the slider of `p` offers: its spec's range clipped to the table's (an open end of the
+// table's range moves in by a millionth of the span).
+struct SliderRange {
+  double min, max;
+};
+SliderRange slider_range(const tire::Parameter& p);
 
 }  // namespace game

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 namespace game {
 
@@ -59,25 +60,32 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
   if (ImGui::Begin("Tuning (F2)", open, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::PushItemWidth(230);
     ImGui::TextDisabled("Applies live to every tire in the world.");
-    if (ImGui::CollapsingHeader("Compliance (inverse stiffness)", ImGuiTreeNodeFlags_DefaultOpen)) {
-      log_slider("outer ring", t.compliance_outer, 1e-9, 1e-1, "tread segments (m/N): larger is softer");
-      log_slider("inner ring", t.compliance_inner, 1e-9, 1e-1, "rim segments (m/N)");
-      log_slider("spokes", t.compliance_spoke, 1e-9, 1e-1, "sidewall spokes (m/N)");
-      log_slider("pressure##c", t.compliance_pressure, 1e-8, 1e0, "the air (m^4/J): larger lets the area change more");
-    }
-    if (ImGui::CollapsingHeader("Tire", ImGuiTreeNodeFlags_DefaultOpen)) {
-      slider("pressure", t.pressure, 0.1, 4.0, "%.2f", "target area / rest area: above 1 inflates");
-      slider("mass scale", t.mass_scale, 0.1, 10.0, "%.2f x", "each tire's mass times this", ImGuiSliderFlags_Logarithmic);
-      slider("friction", t.friction, 0.0, 3.0, "%.2f", "static and kinetic friction coefficient");
-      log_slider("material damping", t.material_damping, 1e-5, 1.0, "Kelvin-Voigt damping time (s)");
-    }
-    if (ImGui::CollapsingHeader("World and solver", ImGuiTreeNodeFlags_DefaultOpen)) {
-      slider("gravity x", t.gravity_x, -30.0, 30.0, "%.2f m/s2", "horizontal gravity");
-      slider("gravity y", t.gravity_y, -30.0, 30.0, "%.2f m/s2", "vertical gravity (-9.81 is Earth)");
-      slider("damping", t.solver_damping, 0.0, 100.0, "%.2f 1/s", "solver.damping: decay rate of non-rigid motion",
-             ImGuiSliderFlags_Logarithmic);
-      int_slider("substeps", t.substeps, 1, 256, "solver.substeps: the most effective accuracy knob");
-      int_slider("iterations", t.iterations, 1, 64, "solver.iterations: constraint sweeps per substep");
+    // The keys are the parameter table's (tuning_keys()); each is shown in its slider's section,
+    // in the table's order, within the table's range.
+    const auto& rows = tuning_parameters();
+    const auto& sections = slider_sections();
+    for (std::size_t section = 0; section < sections.size(); ++section) {
+      if (!ImGui::CollapsingHeader(sections[section], ImGuiTreeNodeFlags_DefaultOpen)) continue;
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        const tire::Parameter& p = *rows[i];
+        const SliderSpec* spec = slider_spec(p.key);
+        // A key the panel has no spec for goes, as a plain slider, into the last section.
+        if (spec ? std::string_view(spec->section) != sections[section] : section + 1 != sections.size()) continue;
+        const SliderRange range = slider_range(p);
+        double& value = t.values[i];
+        const char* label = spec ? spec->label : p.key;
+        const char* tip = spec ? spec->tip : p.description;
+        switch (spec ? spec->scale : p.integer ? SliderScale::integer : SliderScale::linear) {
+          case SliderScale::exponent: log_slider(label, value, range.min, range.max, tip); break;
+          case SliderScale::integer:
+            int_slider(label, value, static_cast<int>(std::ceil(range.min)), static_cast<int>(std::floor(range.max)), tip);
+            break;
+          case SliderScale::linear: slider(label, value, range.min, range.max, spec ? spec->format : "%.3g", tip); break;
+          case SliderScale::logarithmic:
+            slider(label, value, range.min, range.max, spec->format, tip, ImGuiSliderFlags_Logarithmic);
+            break;
+        }
+      }
     }
     if (ImGui::Button("Reset to the level's values")) t = level_defaults;
     ImGui::PopItemWidth();

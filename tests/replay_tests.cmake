@@ -19,6 +19,9 @@ tirectl_test("replay refuses inputs out of order" 2 ARGS replay ${BAD_REPLAYS}/o
   STDERR "/inputs/1/tick: inputs must be in tick order: 10 comes after 50")
 tirectl_test("replay refuses ticks past the end" 2 ARGS replay ${BAD_REPLAYS}/past-the-end.json
   STDERR "/inputs/1/tick: must be at most 99 .*/expect/checkpoints/0/tick: must be at most 100")
+# A mass scale of 0 made each particle's inverse mass infinite: the tire diverged every tick (issue 12).
+tirectl_test("replay refuses a mass scale of 0" 2 ARGS replay ${BAD_REPLAYS}/mass-scale-zero.json
+  STDERR "mass-scale-zero.json: /inputs/0/set/value: must be a number in \\[0.01, 10\\] \\(times the tire's spawn mass\\), got 0")
 tirectl_test("replay refuses an unknown format" 2 ARGS replay ${BAD_REPLAYS}/wrong-format.json
   STDERR "/format: must be \"tire-replay/1\", got \"tire-replay/9\"")
 tirectl_test("replay refuses a level whose content changed" 1 ARGS replay ${BAD_REPLAYS}/level-changed.json

@@ -1,5 +1,7 @@
 // levels/schema.json gives editors completion and hover docs on level files. The level reader
-// (engine/level_reader.cpp) stays the authority; these tests keep the schema in step with it: the
+// (engine/io/level_reader.cpp, with the parameter table engine/tire/include/tire/tire/parameters.h
+// from which the schema's numeric solver and tire keys and the `set` action's keys are generated)
+// stays the authority; these tests keep the schema in step with it: the
 // same keys (script keys of levels/SCRIPTING.md included), defaults, ranges, choices, string lengths
 // and prop shape rules. No schema validator is involved: the schema is read as plain JSON and each
 // of its claims is checked against what the loader does.

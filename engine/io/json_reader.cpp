@@ -5,7 +5,6 @@
 #include <iterator>
 #include <map>
 #include <optional>
-#include <sstream>
 
 namespace tire {
 
@@ -13,13 +12,6 @@ namespace {
 
 // Issues recorded per document; past it, one line says more follow.
 constexpr std::size_t kMaxIssues = 200;
-
-std::string format_number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 
 std::string quoted_list(std::initializer_list<std::string_view> items) {
   std::string out;
@@ -55,15 +47,6 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     }
   }
   return row[b.size()];
-}
-
-bool Range::contains(double v) const {
-  return (min_open ? v > min : v >= min) && (max_open ? v < max : v <= max);
-}
-
-std::string Range::text() const {
-  return std::string(min_open ? "(" : "[") + format_number(min) + ", " + format_number(max) +
-         (max_open ? ")" : "]");
 }
 
 std::string join_path(const std::string& path, std::string_view key) {

@@ -17,32 +17,50 @@ using json = nlohmann::json;
 const Range kCoordinate{-LevelLimits::max_coordinate, LevelLimits::max_coordinate};
 const Range kVelocity{-1000.0, 1000.0};
 const Range kFriction{0.0, 10.0};
-const Range kCompliance{0.0, 1.0};
 
 SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) {
   SolverConfig s;
   if (!r.object(j, path, {"dt", "substeps", "iterations", "damping", "tunnel_clamp", "ground_normal_y"}))
     return s;
-  s.dt = r.number(j, path, "dt", s.dt, {1e-4, 0.1}, "s");
-  s.substeps = r.integer(j, path, "substeps", s.substeps, {1, 256});
-  s.iterations = r.integer(j, path, "iterations", s.iterations, {1, 64});
-  s.damping = r.number(j, path, "damping", s.damping, {0.0, 1000.0}, "1/s");
-  s.tunnel_clamp = r.number(j, path, "tunnel_clamp", s.tunnel_clamp, {0.1, 10.0}, "segments per substep");
-  s.ground_normal_y = r.number(j, path, "ground_normal_y", s.ground_normal_y, {0.0, 1.0}, "");
+  s.dt = read_parameter(r, j, path, ParamId::solver_dt, s.dt);
+  s.substeps = read_integer_parameter(r, j, path, ParamId::solver_substeps, s.substeps);
+  s.iterations = read_integer_parameter(r, j, path, ParamId::solver_iterations, s.iterations);
+  s.damping = read_parameter(r, j, path, ParamId::solver_damping, s.damping);
+  s.tunnel_clamp = read_parameter(r, j, path, ParamId::solver_tunnel_clamp, s.tunnel_clamp);
+  s.ground_normal_y = read_parameter(r, j, path, ParamId::solver_ground_normal_y, s.ground_normal_y);
   return s;
 }
 
 TireCompliance read_compliance(JsonReader& r, const json& j, const std::string& path) {
   TireCompliance c;
   if (!r.object(j, path, {"outer", "inner", "spoke", "pressure"})) return c;
-  c.outer = r.number(j, path, "outer", c.outer, kCompliance, "m/N");
-  c.inner = r.number(j, path, "inner", c.inner, kCompliance, "m/N");
-  c.spoke = r.number(j, path, "spoke", c.spoke, kCompliance, "m/N");
-  c.pressure = r.number(j, path, "pressure", c.pressure, kCompliance, "m^4/J");
+  c.outer = read_parameter(r, j, path, ParamId::tire_compliance_outer, c.outer);
+  c.inner = read_parameter(r, j, path, ParamId::tire_compliance_inner, c.inner);
+  c.spoke = read_parameter(r, j, path, ParamId::tire_compliance_spoke, c.spoke);
+  c.pressure = read_parameter(r, j, path, ParamId::tire_compliance_pressure, c.pressure);
   return c;
 }
 
 }  // namespace
+
+double read_parameter(JsonReader& r, const json& j, const std::string& path, ParamId id, double fallback,
+                      bool required) {
+  const Parameter& p = parameter(id);
+  if (p.integer) return read_integer_parameter(r, j, path, id, static_cast<int>(fallback), required);
+  return r.number(j, path, p.field(), fallback, p.range, p.unit, required);
+}
+
+int read_integer_parameter(JsonReader& r, const json& j, const std::string& path, ParamId id, int fallback,
+                           bool required) {
+  const Parameter& p = parameter(id);
+  return r.integer(j, path, p.field(), fallback, p.range, required);
+}
+
+Vec2 read_gravity(JsonReader& r, const json& j, const std::string& path, const char* key, Vec2 fallback,
+                  bool required) {
+  const Parameter& x = parameter(ParamId::gravity_x);  // gravity.y has the same range (parameters.h)
+  return r.vec2(j, path, key, fallback, x.range, x.unit, required);
+}
 
 TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   TireSpec t;
@@ -53,32 +71,32 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
     return t;
   t.position = r.vec2(j, path, "position", t.position, kCoordinate, "m", true);
   t.velocity = r.vec2(j, path, "velocity", t.velocity, kVelocity, "m/s");
-  t.angle = r.number(j, path, "angle", t.angle, {-100.0, 100.0}, "rad");
-  t.angular_velocity = r.number(j, path, "angular_velocity", t.angular_velocity, {-1000.0, 1000.0}, "rad/s");
-  t.outer_radius = r.number(j, path, "outer_radius", t.outer_radius, {0.01, 100.0}, "m");
-  t.inner_radius = r.number(j, path, "inner_radius", t.inner_radius, {0.005, 100.0}, "m");
+  t.angle = read_parameter(r, j, path, ParamId::tire_angle, t.angle);
+  t.angular_velocity = read_parameter(r, j, path, ParamId::tire_angular_velocity, t.angular_velocity);
+  t.outer_radius = read_parameter(r, j, path, ParamId::tire_outer_radius, t.outer_radius);
+  t.inner_radius = read_parameter(r, j, path, ParamId::tire_inner_radius, t.inner_radius);
   if (j.contains("outer_radius") || j.contains("inner_radius")) {
     if (t.inner_radius >= t.outer_radius)
       r.fail(join_path(path, "inner_radius"), "must be less than outer_radius (" +
                                                   JsonReader::describe(t.outer_radius) + "), got " +
                                                   JsonReader::describe(t.inner_radius));
   }
-  t.segments = r.integer(j, path, "segments", t.segments, {6, 256});
-  t.mass = r.number(j, path, "mass", t.mass, {0.0, 1e6, true}, "kg");
-  t.friction = r.number(j, path, "friction", t.friction, kFriction, "");
-  // Kinetic friction defaults to the static coefficient.
-  t.kinetic_friction = r.number(j, path, "kinetic_friction", t.friction, kFriction, "");
-  t.pressure = r.number(j, path, "pressure", t.pressure, {0.1, 4.0}, "(fraction of the rest area)");
+  t.segments = read_integer_parameter(r, j, path, ParamId::tire_segments, t.segments);
+  t.mass = read_parameter(r, j, path, ParamId::tire_mass, t.mass);
+  t.friction = read_parameter(r, j, path, ParamId::tire_friction, t.friction);
+  // Kinetic friction defaults to the static coefficient (the row's default_follows).
+  t.kinetic_friction = read_parameter(r, j, path, ParamId::tire_kinetic_friction, t.friction);
+  t.pressure = read_parameter(r, j, path, ParamId::tire_pressure, t.pressure);
   if (const auto it = j.find("compliance"); it != j.end())
     t.compliance = read_compliance(r, *it, join_path(path, "compliance"));
   t.spokes = r.choice(j, path, "spokes", "cross", {"radial", "cross"}) == "radial" ? SpokePattern::radial
                                                                                    : SpokePattern::cross;
-  t.material_damping = r.number(j, path, "material_damping", t.material_damping, {0.0, 1.0}, "s");
-  t.rolling_resistance = r.number(j, path, "rolling_resistance", t.rolling_resistance, {0.0, 1.0}, "");
+  t.material_damping = read_parameter(r, j, path, ParamId::tire_material_damping, t.material_damping);
+  t.rolling_resistance = read_parameter(r, j, path, ParamId::tire_rolling_resistance, t.rolling_resistance);
   t.player = r.boolean(j, path, "player", t.player);
-  t.drive_acceleration = r.number(j, path, "drive_acceleration", t.drive_acceleration, {0.0, 1000.0}, "m/s^2");
-  t.jump_speed = r.number(j, path, "jump_speed", t.jump_speed, {0.0, 100.0}, "m/s");
-  t.max_speed = r.number(j, path, "max_speed", t.max_speed, {0.0, 1000.0, true}, "m/s");
+  t.drive_acceleration = read_parameter(r, j, path, ParamId::tire_drive_acceleration, t.drive_acceleration);
+  t.jump_speed = read_parameter(r, j, path, ParamId::tire_jump_speed, t.jump_speed);
+  t.max_speed = read_parameter(r, j, path, ParamId::tire_max_speed, t.max_speed);
   return t;
 }
 
@@ -306,7 +324,7 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
     return std::nullopt;
   level.name = r.string(doc, "", "name", "", 200, true);
   level.description = r.string(doc, "", "description", "", 2000);
-  level.gravity = r.vec2(doc, "", "gravity", level.gravity, {-1000.0, 1000.0}, "m/s^2");
+  level.gravity = read_gravity(r, doc, "", "gravity", level.gravity);
   if (const auto it = doc.find("solver"); it != doc.end()) level.solver = read_solver(r, *it, "/solver");
 
   if (const auto it = doc.find("tires"); it != doc.end() && r.array(*it, "/tires", LevelLimits::max_tires)) {

@@ -21,7 +21,6 @@ namespace {
 using json = nlohmann::json;
 
 const Range kCoordinate{-LevelLimits::max_coordinate, LevelLimits::max_coordinate};
-const Range kGravity{-1000.0, 1000.0};
 const Range kImpulse{-1.0e6, 1.0e6};
 const Range kSeconds{0.0, ScriptLimits::max_seconds};
 const Range kPositiveSeconds{0.0, ScriptLimits::max_seconds, true};
@@ -29,35 +28,14 @@ const Range kMessageSeconds{0.0, 3600.0, true};
 const Range kCounterValue{-ScriptLimits::max_counter_value, ScriptLimits::max_counter_value};
 const Range kFireCount{1.0, 1.0e9};
 
-// What a `set` action may change, with the range the level reference gives the same key.
-struct SettableKey {
-  std::string_view key;
-  Range range;
-  bool integer;
-  const char* unit;
-};
-
-const std::array<SettableKey, 19> kSettableKeys{{
-    {"solver.substeps", {1, 256}, true, ""},
-    {"solver.iterations", {1, 64}, true, ""},
-    {"solver.damping", {0, 1000}, false, "1/s"},
-    {"player.friction", {0, 10}, false, ""},
-    {"player.kinetic_friction", {0, 10}, false, ""},
-    {"player.pressure", {0.1, 4}, false, "(fraction of the rest area)"},
-    {"player.material_damping", {0, 1}, false, "s"},
-    {"player.rolling_resistance", {0, 1}, false, ""},
-    {"player.drive_acceleration", {0, 1000}, false, "m/s^2"},
-    {"player.jump_speed", {0, 100}, false, "m/s"},
-    {"player.max_speed", {0, 1000, true}, false, "m/s"},
-    {"tires.friction", {0, 10}, false, ""},
-    {"tires.kinetic_friction", {0, 10}, false, ""},
-    {"tires.pressure", {0.1, 4}, false, "(fraction of the rest area)"},
-    {"tires.material_damping", {0, 1}, false, "s"},
-    {"tires.rolling_resistance", {0, 1}, false, ""},
-    {"tires.drive_acceleration", {0, 1000}, false, "m/s^2"},
-    {"tires.jump_speed", {0, 100}, false, "m/s"},
-    {"tires.max_speed", {0, 1000, true}, false, "m/s"},
-}};
+const std::vector<std::string>& settable_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const SettableKey& k : settable_keys()) out.push_back(k.key);
+    return out;
+  }();
+  return names;
+}
 
 constexpr std::array<std::string_view, 7> kTriggerTypes{"start", "time",       "every",  "enter",
                                                         "leave", "prop_enter", "counter"};
@@ -382,7 +360,7 @@ class ScriptReader {
     }
     if (name == "set_gravity") {
       r_.object(j, path, {"action", "gravity"});
-      return SetGravity{r_.vec2(j, path, "gravity", {0.0, -9.81}, kGravity, "m/s^2", true)};
+      return SetGravity{read_gravity(r_, j, path, "gravity", kDefaultGravity, true)};
     }
     if (name == "impulse") {
       r_.object(j, path, {"action", "target", "impulse"});
@@ -446,14 +424,14 @@ class ScriptReader {
 
   std::optional<Action> read_set(const json& j, const std::string& path) {
     SetParameter s;
-    const SettableKey* key = nullptr;
+    const Parameter* key = nullptr;
     if (const auto it = j.find("key"); it == j.end()) {
       r_.fail(path + "/key", "is required: one of " + quoted_list(settable_names()));
     } else {
       if (it->is_string()) {
         s.key = it->get<std::string>();
-        for (const SettableKey& k : kSettableKeys)
-          if (k.key == s.key) key = &k;
+        for (const SettableKey& k : settable_keys())
+          if (k.key == s.key) key = k.parameter;
       }
       if (!key) {
         std::string message =
@@ -477,15 +455,6 @@ class ScriptReader {
     return std::nullopt;
   }
 
-  static const std::array<std::string_view, kSettableKeys.size()>& settable_names() {
-    static const auto names = [] {
-      std::array<std::string_view, kSettableKeys.size()> out{};
-      for (std::size_t i = 0; i < out.size(); ++i) out[i] = kSettableKeys[i].key;
-      return out;
-    }();
-    return names;
-  }
-
   void check_prop_references() {
     std::set<std::string> names(prop_names_.begin(), prop_names_.end());
     names.insert(spawned_props_.begin(), spawned_props_.end());
@@ -506,6 +475,19 @@ class ScriptReader {
 };
 
 }  // namespace
+
+const std::vector<SettableKey>& settable_keys() {
+  static const std::vector<SettableKey> keys = [] {
+    std::vector<SettableKey> out;
+    for (const Parameter& p : parameters())
+      if (p.may(by_script) && !p.is_tire()) out.push_back({p.key, &p});
+    for (const char* prefix : {"player.", "tires."})
+      for (const Parameter& p : parameters())
+        if (p.may(by_script) && p.is_tire()) out.push_back({prefix + std::string(p.key).substr(6), &p});
+    return out;
+  }();
+  return keys;
+}
 
 ScriptSpec read_script(JsonReader& r, const json& level_doc, const std::vector<std::string>& prop_names) {
   return ScriptReader(r, prop_names).read(level_doc);

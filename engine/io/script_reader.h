@@ -8,6 +8,7 @@
 
 #include "tire/io/json_reader.h"
 #include "tire/script/script_spec.h"
+#include "tire/tire/parameters.h"
 
 namespace tire {
 
@@ -16,5 +17,13 @@ namespace tire {
 // prop must name one of them or one that a spawn_prop action of the script spawns.
 ScriptSpec read_script(JsonReader& r, const nlohmann::json& level_doc,
                        const std::vector<std::string>& prop_names);
+
+// The keys a `set` action may change: the parameter table's rows a script may set, the solver's by
+// their key, then each tire row as "player.<key>", then each as "tires.<key>".
+struct SettableKey {
+  std::string key;
+  const Parameter* parameter;
+};
+const std::vector<SettableKey>& settable_keys();
 
 }  // namespace tire

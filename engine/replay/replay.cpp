@@ -27,41 +27,6 @@ constexpr std::size_t kMaxRestarts = 10'000;
 constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, ReplayLimits::max_json_values, LevelLimits::max_string_bytes,
                                    "a replay"};
 
-// The range of each key a replay may tune: those the level reference gives the same key (a tire's
-// mass up to ten times the largest a level allows: the game's tuning panel scales masses by up to 10).
-struct TunableRange {
-  std::string_view key;  // after "tires." or "player."; or a solver key in full
-  Range range;
-  bool integer;
-  const char* unit;
-};
-constexpr TunableRange kTunableRanges[] = {
-    {"solver.substeps", {1, 256}, true, ""},
-    {"solver.iterations", {1, 64}, true, ""},
-    {"solver.damping", {0, 1000}, false, "1/s"},
-    {"friction", {0, 10}, false, ""},
-    {"kinetic_friction", {0, 10}, false, ""},
-    {"pressure", {0.1, 4}, false, "(fraction of the rest area)"},
-    {"material_damping", {0, 1}, false, "s"},
-    {"rolling_resistance", {0, 1}, false, ""},
-    {"drive_acceleration", {0, 1000}, false, "m/s^2"},
-    {"jump_speed", {0, 100}, false, "m/s"},
-    {"max_speed", {0, 1000, true}, false, "m/s"},
-    {"mass", {0, 1e7, true}, false, "kg"},
-    {"compliance.outer", {0, 1}, false, "m/N"},
-    {"compliance.inner", {0, 1}, false, "m/N"},
-    {"compliance.spoke", {0, 1}, false, "m/N"},
-    {"compliance.pressure", {0, 1}, false, "m^4/J"},
-};
-
-const TunableRange* tunable_range(std::string_view key) {
-  for (const std::string_view prefix : {std::string_view("player."), std::string_view("tires.")})
-    if (key.starts_with(prefix)) key.remove_prefix(prefix.size());
-  for (const TunableRange& t : kTunableRanges)
-    if (t.key == key) return &t;
-  return nullptr;
-}
-
 bool is_hex(const std::string& s, std::size_t length) {
   return s.size() == length && std::all_of(s.begin(), s.end(), [](char c) {
            return std::isdigit(static_cast<unsigned char>(c)) || (c >= 'a' && c <= 'f');
@@ -113,21 +78,25 @@ ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, st
   in.grab_radius = r.number(j, path, "grab_radius", kGrabRadius, {0.0, 100.0}, "m");
   if (j.contains("drag")) in.drag = r.vec2(j, path, "drag", {}, kCoordinate, "m");
   in.release = read_flag(r, j, path, "release");
-  if (j.contains("gravity")) in.gravity = r.vec2(j, path, "gravity", {}, {-1000.0, 1000.0}, "m/s^2");
+  if (j.contains("gravity")) {
+    const Parameter& g = parameter(ParamId::gravity_x);  // gravity.y has the same range
+    in.gravity = r.vec2(j, path, "gravity", {}, g.range, g.unit);
+  }
   in.restart = read_flag(r, j, path, "restart");
   if (const auto it = j.find("set"); it != j.end()) {
     const std::string p = join_path(path, "set");
     if (r.object(*it, p, {"key", "value"})) {
       const std::string key = r.string(*it, p, "key", "", 100, true);
-      if (!key.empty() && !is_tunable_key(key))
+      const Parameter* param = key.empty() ? nullptr : find_parameter(key);
+      if (!key.empty() && !(param && param->may(by_replay)))
         r.fail(join_path(p, "key"), "must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"" +
                                         key + "\"");
       else if (!key.empty()) in.set_key = key;
-      // A value the world can take: 10^9 substeps would never finish a tick, a mass of 0 divides by it.
-      if (const TunableRange* t = in.set_key ? tunable_range(*in.set_key) : nullptr)
-        in.set_value = t->integer ? r.integer(*it, p, "value", 1, t->range, true)
-                                  : r.number(*it, p, "value", t->range.min_open ? t->range.max : t->range.min,
-                                             t->range, t->unit, true);
+      // A value the world can take (the parameter table's range): 10^9 substeps would never finish
+      // a tick, a mass or mass scale of 0 divides by it.
+      if (in.set_key)
+        in.set_value = param->integer ? r.integer(*it, p, "value", static_cast<int>(param->default_value), param->range, true)
+                                      : r.number(*it, p, "value", param->default_value, param->range, param->unit, true);
       else
         in.set_value = r.number(*it, p, "value", 0.0, {-1e9, 1e9}, "", true);
     }
@@ -183,15 +152,8 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
 }  // namespace
 
 bool is_tunable_key(std::string_view key) {
-  static constexpr std::string_view kTireKeys[] = {
-      "friction", "kinetic_friction", "pressure", "material_damping", "rolling_resistance", "drive_acceleration",
-      "jump_speed", "max_speed", "mass", "mass_scale", "compliance.outer", "compliance.inner", "compliance.spoke",
-      "compliance.pressure"};
-  if (key == "solver.substeps" || key == "solver.iterations" || key == "solver.damping") return true;
-  for (const std::string_view prefix : {std::string_view("player."), std::string_view("tires.")})
-    if (key.starts_with(prefix))
-      return std::find(std::begin(kTireKeys), std::end(kTireKeys), key.substr(prefix.size())) != std::end(kTireKeys);
-  return false;
+  const Parameter* p = find_parameter(key);
+  return p && p->may(by_replay);
 }
 
 std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issues) {

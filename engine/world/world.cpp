@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "tire/math/state_hash.h"
+#include "tire/tire/parameters.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/tire_solver.h"
 
@@ -27,48 +28,109 @@ void World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
 }
 
 namespace {
-// The tire keys a script or the tuning panel may change, and where each lives.
-bool set_tire_key(Tire& t, std::string_view key, double value) {
+// Sets a tire parameter on one tire; false for a parameter that only a level file sets (a tire's
+// shape is fixed once it is built).
+bool set_tire_parameter(Tire& t, ParamId id, double value) {
   TireSpec& s = t.spec;
-  if (key == "friction") s.friction = value;
-  else if (key == "kinetic_friction") s.kinetic_friction = value;
-  else if (key == "pressure") s.pressure = t.area_constraint.pressure = value;
-  else if (key == "material_damping") s.material_damping = value;
-  else if (key == "rolling_resistance") s.rolling_resistance = value;
-  else if (key == "drive_acceleration") s.drive_acceleration = value;
-  else if (key == "jump_speed") s.jump_speed = value;
-  else if (key == "max_speed") s.max_speed = value;
-  else if (key == "mass") t.set_mass(value);
-  else if (key == "mass_scale") t.set_mass(t.spawn_mass * value);
-  else if (key.starts_with("compliance.")) {
-    TireCompliance c = s.compliance;
-    const std::string_view part = key.substr(11);
-    if (part == "outer") c.outer = value;
-    else if (part == "inner") c.inner = value;
-    else if (part == "spoke") c.spoke = value;
-    else if (part == "pressure") c.pressure = value;
-    else return false;
-    t.set_compliance(c);
-  } else return false;
+  TireCompliance c = s.compliance;
+  switch (id) {
+    case ParamId::tire_friction: s.friction = value; return true;
+    case ParamId::tire_kinetic_friction: s.kinetic_friction = value; return true;
+    case ParamId::tire_pressure: s.pressure = t.area_constraint.pressure = value; return true;
+    case ParamId::tire_material_damping: s.material_damping = value; return true;
+    case ParamId::tire_rolling_resistance: s.rolling_resistance = value; return true;
+    case ParamId::tire_drive_acceleration: s.drive_acceleration = value; return true;
+    case ParamId::tire_jump_speed: s.jump_speed = value; return true;
+    case ParamId::tire_max_speed: s.max_speed = value; return true;
+    case ParamId::tire_mass: t.set_mass(value); return true;
+    case ParamId::tire_mass_scale: t.set_mass(t.spawn_mass * value); return true;
+    case ParamId::tire_compliance_outer: c.outer = value; break;
+    case ParamId::tire_compliance_inner: c.inner = value; break;
+    case ParamId::tire_compliance_spoke: c.spoke = value; break;
+    case ParamId::tire_compliance_pressure: c.pressure = value; break;
+    case ParamId::tire_angle:
+    case ParamId::tire_angular_velocity:
+    case ParamId::tire_outer_radius:
+    case ParamId::tire_inner_radius:
+    case ParamId::tire_segments:
+    case ParamId::solver_dt:
+    case ParamId::solver_substeps:
+    case ParamId::solver_iterations:
+    case ParamId::solver_damping:
+    case ParamId::solver_tunnel_clamp:
+    case ParamId::solver_ground_normal_y:
+    case ParamId::gravity_x:
+    case ParamId::gravity_y: return false;
+  }
+  t.set_compliance(c);
   return true;
+}
+
+std::optional<double> tire_parameter(const Tire& t, ParamId id) {
+  const TireSpec& s = t.spec;
+  switch (id) {
+    case ParamId::tire_angle: return s.angle;
+    case ParamId::tire_angular_velocity: return s.angular_velocity;
+    case ParamId::tire_outer_radius: return s.outer_radius;
+    case ParamId::tire_inner_radius: return s.inner_radius;
+    case ParamId::tire_segments: return s.segments;
+    case ParamId::tire_mass: return s.mass;
+    case ParamId::tire_mass_scale: return s.mass / t.spawn_mass;
+    case ParamId::tire_friction: return s.friction;
+    case ParamId::tire_kinetic_friction: return s.kinetic_friction;
+    case ParamId::tire_pressure: return s.pressure;
+    case ParamId::tire_compliance_outer: return s.compliance.outer;
+    case ParamId::tire_compliance_inner: return s.compliance.inner;
+    case ParamId::tire_compliance_spoke: return s.compliance.spoke;
+    case ParamId::tire_compliance_pressure: return s.compliance.pressure;
+    case ParamId::tire_material_damping: return s.material_damping;
+    case ParamId::tire_rolling_resistance: return s.rolling_resistance;
+    case ParamId::tire_drive_acceleration: return s.drive_acceleration;
+    case ParamId::tire_jump_speed: return s.jump_speed;
+    case ParamId::tire_max_speed: return s.max_speed;
+    default: return std::nullopt;
+  }
 }
 }  // namespace
 
 bool World::set_parameter(std::string_view key, double value) {
-  if (!std::isfinite(value)) return false;
-  if (key == "solver.substeps") return config_.substeps = static_cast<int>(value), true;
-  if (key == "solver.iterations") return config_.iterations = static_cast<int>(value), true;
-  if (key == "solver.damping") return config_.damping = value, true;
+  const Parameter* p = find_parameter(key);
+  if (!p || !p->runtime() || !p->accepts(value)) return false;
+  switch (p->id) {
+    case ParamId::solver_substeps: config_.substeps = static_cast<int>(value); return true;
+    case ParamId::solver_iterations: config_.iterations = static_cast<int>(value); return true;
+    case ParamId::solver_damping: config_.damping = value; return true;
+    case ParamId::gravity_x: set_gravity({value, gravity_.y}); return true;
+    case ParamId::gravity_y: set_gravity({gravity_.x, value}); return true;
+    default: break;
+  }
+  if (!p->is_tire()) return false;
   if (key.starts_with("player.")) {
-    const Tire* p = player();
-    return p && set_tire_key(*find_tire(p->id), key.substr(7), value);
+    const Tire* player_tire = player();
+    return player_tire && set_tire_parameter(*find_tire(player_tire->id), p->id, value);
   }
-  if (key.starts_with("tires.")) {
-    bool known = true;
-    for (Tire& t : tires_) known = set_tire_key(t, key.substr(6), value) && known;
-    return known;
+  bool known = true;
+  for (Tire& t : tires_) known = set_tire_parameter(t, p->id, value) && known;
+  return known;
+}
+
+std::optional<double> World::parameter(std::string_view key) const {
+  const Parameter* p = find_parameter(key);
+  if (!p) return std::nullopt;
+  switch (p->id) {
+    case ParamId::solver_dt: return config_.dt;
+    case ParamId::solver_substeps: return config_.substeps;
+    case ParamId::solver_iterations: return config_.iterations;
+    case ParamId::solver_damping: return config_.damping;
+    case ParamId::solver_tunnel_clamp: return config_.tunnel_clamp;
+    case ParamId::solver_ground_normal_y: return config_.ground_normal_y;
+    case ParamId::gravity_x: return gravity_.x;
+    case ParamId::gravity_y: return gravity_.y;
+    default: break;
   }
-  return false;
+  const Tire* t = player();
+  if (!t && !key.starts_with("player.") && !tires_.empty()) t = &tires_.front();
+  return t ? tire_parameter(*t, p->id) : std::nullopt;
 }
 
 void World::reset_tire(TireId id, std::optional<Vec2> position) {

@@ -2,6 +2,7 @@
 // routing and interpolation, hot reload, the level list, the camera, the frame-time statistics and
 // the picture small tires are drawn with.
 #define CATCH_CONFIG_MAIN
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <fstream>
@@ -93,12 +94,12 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   REQUIRE(session.world().tires().size() == 2);
 
   Tuning wanted = session.tuning();
-  wanted.pressure = 1.5;
-  wanted.mass_scale = 2.0;
-  wanted.friction = 0.3;
-  wanted.gravity_y = -3.0;
-  wanted.substeps = 12;
-  wanted.compliance_spoke = 1e-4;
+  REQUIRE(wanted.set("tires.pressure", 1.5));
+  REQUIRE(wanted.set("tires.mass_scale", 2.0));
+  REQUIRE(wanted.set("tires.friction", 0.3));
+  REQUIRE(wanted.set("gravity.y", -3.0));
+  REQUIRE(wanted.set("solver.substeps", 12));
+  REQUIRE(wanted.set("tires.compliance.spoke", 1e-4));
   const std::vector<TuneEvent> changes = tuning_changes(session.tuning(), wanted);
   CHECK(changes.size() == 6);
   for (const TuneEvent& e : changes) session.queue(e);
@@ -113,7 +114,7 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   }
   CHECK(session.world().gravity().y == -3.0);
   CHECK(session.world().config().substeps == 12);
-  CHECK(session.tuning().mass_scale == 2.0);
+  CHECK(tuning_value(session.tuning(), "tires.mass_scale") == 2.0);
 
   // Scaling again multiplies the spawn mass, not the current one.
   session.queue(TuneEvent{"tires.mass_scale", 0.5});
@@ -122,7 +123,47 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   // An unknown key changes nothing.
   session.queue(TuneEvent{"tires.nonsense", 1.0});
   session.flush();
-  CHECK(session.tuning().mass_scale == 0.5);
+  CHECK(tuning_value(session.tuning(), "tires.mass_scale") == 0.5);
+  // Nor does a value outside the parameter table's range (a mass scale of 0 would divide by it).
+  session.queue(TuneEvent{"tires.mass_scale", 0.0});
+  session.flush();
+  CHECK(tuning_value(session.tuning(), "tires.mass_scale") == 0.5);
+  CHECK(session.world().tires()[0].spec.mass == Approx(5.0));
+}
+
+TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside the table's ranges", "[unit][game]") {
+  // Every key is a row of the table that the panel may set, and every such row is a key.
+  std::vector<std::string> expected;
+  for (const tire::Parameter& p : tire::parameters())
+    if (p.may(tire::by_panel)) expected.emplace_back(p.key);
+  CHECK(tuning_keys() == expected);
+  // A fresh Tuning holds the table's defaults.
+  const Tuning defaults;
+  for (const tire::Parameter* p : tuning_parameters()) CHECK(tuning_value(defaults, p->key) == p->default_value);
+  for (const tire::Parameter* p : tuning_parameters()) {
+    INFO(p->key);
+    // Each has a slider of its own, in one of the panel's sections, that never leaves the range.
+    const SliderSpec* spec = slider_spec(p->key);
+    REQUIRE(spec != nullptr);
+    CHECK(std::find_if(slider_sections().begin(), slider_sections().end(), [&](const char* s) {
+            return std::string_view(s) == spec->section;
+          }) != slider_sections().end());
+    CHECK(p->range.contains(spec->min));
+    CHECK(p->range.contains(spec->max));
+    const SliderRange range = slider_range(*p);
+    CHECK(range.min == spec->min);
+    CHECK(range.max == spec->max);
+    CHECK(spec->min < spec->max);
+    CHECK(spec->scale == (p->integer ? SliderScale::integer : spec->scale));
+    if (spec->scale == SliderScale::exponent) CHECK(spec->min > 0.0);
+  }
+  // The table's range, not the slider's, is what a change must keep to.
+  GameSession session;
+  session.start("flat.json", flat_level());
+  for (const tire::Parameter* p : tuning_parameters()) {
+    INFO(p->key);
+    CHECK_FALSE(apply_tuning(session.world(), p->key, p->range.max + 1.0));
+  }
 }
 
 TEST_CASE("every input reaches the world through the session, between ticks", "[unit][game]") {

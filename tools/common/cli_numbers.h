@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-#include "tire/io/json_reader.h"  // tire::Range: ranges print as the reference pages write them
+#include "tire/math/range.h"  // tire::Range: ranges print as the reference pages write them
 
 namespace tire_tools {
 

@@ -28,6 +28,15 @@ int replay(const ReplayOptions& options);
 
 int validate(const std::vector<std::string>& files);
 
+// levels/schema.json from the parameter table: printed (default), checked (exit 1 when the file
+// differs) or rewritten in place.
+struct SchemaOptions {
+  std::string file = "levels/schema.json";
+  bool check = false;
+  bool write = false;
+};
+int schema(const SchemaOptions& options);
+
 struct BenchOptions {
   std::vector<std::string> scenes;  // empty: all
   int threads = 0;        // 0: the world's default (the hardware's)

@@ -38,6 +38,15 @@ int main(int argc, char** argv) {
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check level files; one line per problem");
   validate_cmd->add_option("files", validate_files, "Level files (JSON)")->required();
 
+  tirectl::SchemaOptions schema;
+  CLI::App* schema_cmd = app.add_subcommand(
+      "schema", "Print levels/schema.json as the parameter table generates it; --check or --write the file");
+  schema_cmd->add_option("file", schema.file, "The committed schema, whose hand-written parts are kept")
+      ->capture_default_str();
+  CLI::Option* check_flag =
+      schema_cmd->add_flag("--check", schema.check, "Exit 1, saying where, when the file differs from the generated schema");
+  schema_cmd->add_flag("--write", schema.write, "Rewrite the file from the parameter table")->excludes(check_flag);
+
   tirectl::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Time the performance scenes; CSV on stdout");
   bench_cmd->add_option("--scene", bench.scenes, "Only these scenes (repeatable; default all)");
@@ -65,6 +74,7 @@ int main(int argc, char** argv) {
     if (*run_cmd) return tirectl::run(run);
     if (*validate_cmd) return tirectl::validate(validate_files);
     if (*replay_cmd) return tirectl::replay(replay);
+    if (*schema_cmd) return tirectl::schema(schema);
     if (*bench_cmd) return tirectl::bench(bench);
     if (*tradeoff_cmd) return tirectl::tradeoff(tradeoff);
   } catch (const std::exception& e) {

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tire/math/range.h"
 #include "tire/math/vec2.h"
 
 namespace tire {
@@ -17,16 +18,6 @@ namespace tire {
 struct JsonIssue {
   std::string path;     // JSON pointer, "" for the document itself
   std::string message;  // what was expected, got what
-};
-
-// An inclusive or exclusive numeric interval, printed as in the reference page: [6, 256], (0, 0.1].
-struct Range {
-  double min;
-  double max;
-  bool min_open = false;
-  bool max_open = false;
-  bool contains(double v) const;
-  std::string text() const;
 };
 
 class JsonReader {

@@ -13,6 +13,7 @@
 #include "tire/rigid/obstacle.h"
 #include "tire/rigid/prop_spec.h"
 #include "tire/script/script_spec.h"
+#include "tire/tire/parameters.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
 
@@ -24,7 +25,7 @@ class World;
 struct Level {
   std::string name;
   std::string description;
-  Vec2 gravity{0.0, -9.81};
+  Vec2 gravity = kDefaultGravity;
   SolverConfig solver;
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;

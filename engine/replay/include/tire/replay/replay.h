@@ -73,7 +73,8 @@ struct ReplayLimits {
   static constexpr std::size_t max_json_values = 2'500'000;
 };
 
-// Keys a replay (or a script) may tune: the ones World::set_parameter knows.
+// Keys a replay's `set` input may tune: the rows of the parameter table (tire/parameters.h) that a
+// replay may set, a tire row also as "player.<key>".
 bool is_tunable_key(std::string_view key);
 
 std::optional<Replay> read_replay(const nlohmann::json& doc, std::vector<JsonIssue>& issues);

@@ -40,12 +40,14 @@ class World {
 
   // What scripts (and the game's tuning panel) can do between ticks.
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
-  // "solver.substeps|iterations|damping", "player.<key>" or "tires.<key>" for the tire keys
-  // friction, kinetic_friction, pressure, material_damping, rolling_resistance,
-  // drive_acceleration, jump_speed, max_speed, mass, mass_scale (times the tire's spawn mass),
-  // compliance.outer|inner|spoke|pressure. False, changing nothing, for an unknown key or a value
-  // that is not finite.
+  // Sets a parameter of the table (tire/parameters.h) that may change while the world runs (a
+  // script, replay or panel key): "tires.<key>" on every tire, "player.<key>" on the player's.
+  // False, changing nothing, for a key not in the table, one only a level file sets, or a value
+  // the table's row does not accept (outside its range, not finite, a fraction for an integer).
   bool set_parameter(std::string_view key, double value);
+  // The value in force: "tires.<key>" reads the player's tire (or the first tire); nullopt for
+  // an unknown key or when there is no such tire.
+  std::optional<double> parameter(std::string_view key) const;
   // Puts a tire back at rest in its spawn shape, at `position` from now on if given.
   void reset_tire(TireId id, std::optional<Vec2> position = std::nullopt);
 

@@ -1,0 +1,202 @@
+// The parameter table: every scalar number of the solver and of a tire that a level, a script's
+// `set` action, a replay's `set` input or the game's tuning panel may give, in one place: its key,
+// unit, range, whether it is an integer, its default and who may set it.
+//
+// Everything that reads or sets such a number takes it from here: the level reader (ranges of the
+// solver's and the tires' keys), the script reader (the keys and ranges of `set`), the replay reader
+// (`set` inputs), World::set_parameter (refuses a value outside the range), the game's tuning panel
+// (its keys; its sliders stay inside these ranges) and levels/schema.json (generated from this
+// table: `tirectl schema --write levels/schema.json`; a test fails while they differ).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "tire/math/range.h"
+#include "tire/math/vec2.h"
+#include "tire/tire/solver_config.h"
+#include "tire/tire/tire_spec.h"
+
+namespace tire {
+
+// A new world's gravity (m/s²) when the level gives none.
+inline constexpr Vec2 kDefaultGravity{0.0, -9.81};
+
+// Who may set a parameter (bit flags).
+enum Setter : unsigned {
+  by_level = 1u << 0,   // a level file: "solver.X" at /solver/X, "tires.X" in every tire object
+  by_script = 1u << 1,  // a level script's `set` action
+  by_replay = 1u << 2,  // a replay's `set` input
+  by_panel = 1u << 3,   // the game's tuning panel
+};
+// Set while the world runs, through World::set_parameter.
+inline constexpr unsigned kRuntimeSetters = by_script | by_replay | by_panel;
+
+// One per row of the table, in its order.
+enum class ParamId : std::uint8_t {
+  solver_dt,
+  solver_substeps,
+  solver_iterations,
+  solver_damping,
+  solver_tunnel_clamp,
+  solver_ground_normal_y,
+  gravity_x,
+  gravity_y,
+  tire_angle,
+  tire_angular_velocity,
+  tire_outer_radius,
+  tire_inner_radius,
+  tire_segments,
+  tire_mass,
+  tire_mass_scale,
+  tire_friction,
+  tire_kinetic_friction,
+  tire_pressure,
+  tire_compliance_outer,
+  tire_compliance_inner,
+  tire_compliance_spoke,
+  tire_compliance_pressure,
+  tire_material_damping,
+  tire_rolling_resistance,
+  tire_drive_acceleration,
+  tire_jump_speed,
+  tire_max_speed,
+};
+
+struct Parameter {
+  ParamId id;
+  // As written in scripts, replays and the panel: "solver.substeps", "tires.compliance.outer",
+  // "gravity.x". A "tires." key sets every tire; "player." + the rest sets the player's tire only.
+  const char* key;
+  const char* unit;  // as messages print it after the range: "m/s^2", "(fraction of the rest area)"; "" for none
+  Range range;
+  bool integer;
+  double default_value;  // taken from TireSpec{} / SolverConfig{}: those structs are the one place
+  unsigned setters;      // Setter bits
+  // For the schema and the docs; "{range}" stands where the range goes.
+  const char* description;
+  // The key whose value is the default instead of default_value ("tires.kinetic_friction": the
+  // tire's friction); nullptr for a fixed default.
+  const char* default_follows = nullptr;
+
+  constexpr bool may(Setter s) const { return (setters & s) != 0; }
+  constexpr bool runtime() const { return (setters & kRuntimeSetters) != 0; }
+  constexpr bool is_tire() const { return std::string_view(key).starts_with("tires."); }
+  // The key within its level object: "substeps", "outer" (of tires.compliance.outer), "x". The
+  // tail of `key`, so it ends where `key` does.
+  constexpr const char* field() const { return key + std::string_view(key).rfind('.') + 1; }
+  // The value is finite, in the range, and whole when the parameter is an integer.
+  constexpr bool accepts(double v) const {
+    return range.contains(v) && (!integer || static_cast<double>(static_cast<long long>(v)) == v);
+  }
+};
+
+namespace parameter_table {
+inline constexpr TireSpec kTire{};
+inline constexpr SolverConfig kSolver{};
+inline constexpr Range kFriction{0.0, 10.0};
+inline constexpr Range kCompliance{0.0, 1.0};
+inline constexpr Range kGravity{-1000.0, 1000.0};
+inline constexpr unsigned kLevelOnly = by_level;
+inline constexpr unsigned kEverywhere = by_level | by_script | by_replay | by_panel;
+inline constexpr unsigned kNotPanel = by_level | by_script | by_replay;
+inline constexpr unsigned kNotScript = by_level | by_replay | by_panel;
+}  // namespace parameter_table
+
+// The table. Ranges keep every value the world can step: no zero mass or scale (inverse masses),
+// no more substeps than a tick can afford, finite everything.
+inline constexpr std::array kParameters = [] {
+  using namespace parameter_table;
+  using P = ParamId;
+  return std::array<Parameter, 27>{{
+      {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
+       "The fixed tick (s), in {range}; default 1/60."},
+      {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
+       "Substeps per tick, in {range}: each is solved with h = dt/substeps; more makes stiff tires accurate."},
+      {P::solver_iterations, "solver.iterations", "", {1, 64}, true, kSolver.iterations, kEverywhere,
+       "Constraint sweeps per substep, in {range}."},
+      {P::solver_damping, "solver.damping", "1/s", {0, 1000}, false, kSolver.damping, kEverywhere,
+       "Decay rate of each tire's non-rigid motion (1/s), in {range}; 0 is none."},
+      {P::solver_tunnel_clamp, "solver.tunnel_clamp", "segments per substep", {0.1, 10}, false, kSolver.tunnel_clamp,
+       kLevelOnly, "Anti-tunneling clamp (rest tread-segment lengths per substep), in {range}."},
+      {P::solver_ground_normal_y, "solver.ground_normal_y", "", {0, 1}, false, kSolver.ground_normal_y, kLevelOnly,
+       "A contact is ground (for jumping) when its normal's y is at least this, in {range}; 0.5 accepts up to 60°."},
+      // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
+      // each component in this range too.
+      {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,
+       "Horizontal gravity (m/s²), in {range}."},
+      {P::gravity_y, "gravity.y", "m/s^2", kGravity, false, kDefaultGravity.y, by_panel,
+       "Vertical gravity (m/s²), in {range}; -9.81 is Earth's."},
+      {P::tire_angle, "tires.angle", "rad", {-100, 100}, false, kTire.angle, kLevelOnly,
+       "Rotation (rad) from the pose with a tread segment flat at the bottom, in {range}."},
+      {P::tire_angular_velocity, "tires.angular_velocity", "rad/s", {-1000, 1000}, false, kTire.angular_velocity,
+       kLevelOnly, "Initial spin (rad/s, counter-clockwise positive), in {range}."},
+      {P::tire_outer_radius, "tires.outer_radius", "m", {0.01, 100}, false, kTire.outer_radius, kLevelOnly,
+       "Radius of the tread (m), in {range}."},
+      {P::tire_inner_radius, "tires.inner_radius", "m", {0.005, 100}, false, kTire.inner_radius, kLevelOnly,
+       "Radius of the rim (m), in {range} and less than outer_radius."},
+      {P::tire_segments, "tires.segments", "", {6, 256}, true, kTire.segments, kLevelOnly,
+       "Particles per ring, in {range}."},
+      {P::tire_mass, "tires.mass", "kg", {0, 1e6, true}, false, kTire.mass, by_level | by_replay,
+       "Mass of the whole tire (kg), in {range}, shared equally by its 2·segments particles."},
+      // Bounded away from 0: each particle's inverse mass is 2·segments / (spawn mass · scale), and
+      // any scale below about 1e-300 makes it infinite as surely as 0 does. 0.01 is ten times below
+      // the panel's smallest; 10, the panel's largest, keeps a level's heaviest tire (10⁶ kg) within 10⁷ kg.
+      {P::tire_mass_scale, "tires.mass_scale", "(times the tire's spawn mass)", {0.01, 10}, false, 1.0,
+       by_replay | by_panel, "Each tire's mass as a multiple of the mass it was built with, in {range}."},
+      {P::tire_friction, "tires.friction", "", kFriction, false, kTire.friction, kEverywhere,
+       "Static friction coefficient, in {range}; mixed with a surface's as √(μ₁μ₂)."},
+      {P::tire_kinetic_friction, "tires.kinetic_friction", "", kFriction, false, kTire.kinetic_friction, kNotPanel,
+       "Kinetic friction coefficient once sliding, in {range}; defaults to this tire's friction.", "tires.friction"},
+      {P::tire_pressure, "tires.pressure", "(fraction of the rest area)", {0.1, 4}, false, kTire.pressure, kEverywhere,
+       "Target area of the air as a fraction of the rest area, in {range}; above 1 inflates."},
+      {P::tire_compliance_outer, "tires.compliance.outer", "m/N", kCompliance, false, kTire.compliance.outer,
+       kNotScript, "Compliance of the tread segments (m/N), in {range}."},
+      {P::tire_compliance_inner, "tires.compliance.inner", "m/N", kCompliance, false, kTire.compliance.inner,
+       kNotScript, "Compliance of the rim segments (m/N), in {range}."},
+      {P::tire_compliance_spoke, "tires.compliance.spoke", "m/N", kCompliance, false, kTire.compliance.spoke,
+       kNotScript, "Compliance of the spokes, the sidewall (m/N), in {range}."},
+      {P::tire_compliance_pressure, "tires.compliance.pressure", "m^4/J", kCompliance, false,
+       kTire.compliance.pressure, kNotScript,
+       "Compliance of the air (m⁴/J), in {range}: an area change ΔA takes a 2D pressure ΔA/α."},
+      {P::tire_material_damping, "tires.material_damping", "s", {0, 1}, false, kTire.material_damping, kEverywhere,
+       "Kelvin–Voigt damping time τ (s), in {range}; takes energy out of bounces, 0 is elastic."},
+      {P::tire_rolling_resistance, "tires.rolling_resistance", "", {0, 1}, false, kTire.rolling_resistance, kNotPanel,
+       "Rolling resistance coefficient C_rr, in {range}: a moment C_rr·N·R against rolling (cars ≈ 0.01)."},
+      {P::tire_drive_acceleration, "tires.drive_acceleration", "m/s^2", {0, 1000}, false, kTire.drive_acceleration,
+       kNotPanel, "Tangential acceleration of the tread at full steer (m/s²), in {range}."},
+      {P::tire_jump_speed, "tires.jump_speed", "m/s", {0, 100}, false, kTire.jump_speed, kNotPanel,
+       "Upward speed a jump adds when grounded (m/s), in {range}."},
+      {P::tire_max_speed, "tires.max_speed", "m/s", {0, 1000, true}, false, kTire.max_speed, kNotPanel,
+       "Cap on the hub's horizontal speed and on the steered tread speed (m/s), in {range}."},
+  }};
+}();
+
+// The whole table, in order.
+constexpr std::span<const Parameter> parameters() { return kParameters; }
+constexpr const Parameter& parameter(ParamId id) { return kParameters[static_cast<std::size_t>(id)]; }
+
+// The row a key names, or nullptr: "player.X" names the tire row "tires.X".
+const Parameter* find_parameter(std::string_view key);
+
+// The table's own consistency, checked when it compiles.
+namespace parameter_table {
+constexpr bool consistent() {
+  for (std::size_t i = 0; i < kParameters.size(); ++i) {
+    const Parameter& p = kParameters[i];
+    if (static_cast<std::size_t>(p.id) != i) return false;               // ids in table order
+    if (p.default_follows == nullptr && !p.accepts(p.default_value)) return false;  // defaults in range
+    if (std::string_view(p.description).find("{range}") == std::string_view::npos) return false;
+    if (p.integer && (p.range.min_open || p.range.max_open)) return false;  // integer ranges are closed
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::string_view(kParameters[j].key) == p.key) return false;  // keys unique
+  }
+  return parameter(ParamId::gravity_x).range == parameter(ParamId::gravity_y).range;  // one component range
+}
+static_assert(consistent(), "the parameter table: ids in order, defaults in range, unique keys");
+}  // namespace parameter_table
+
+}  // namespace tire
