@@ -5,6 +5,7 @@
 #include <thread>
 #include <cmath>
 
+#include "tire/math/check.h"
 #include "tire/math/state_hash.h"
 #include "world_script_host.h"
 #include "tire/tire/soft_contact.h"
@@ -168,6 +169,8 @@ const Tire* World::player() const {
 }
 
 void World::step(const TickInput& input) {
+  TIRE_ASSERT(config_.substeps >= 1 && config_.iterations >= 1, "fewer than one substep or iteration a tick");
+  TIRE_ASSERT(config_.dt > 0.0 && std::isfinite(config_.dt), "the tick is not a positive length of time");
   if (player_) {
     if (Tire* p = find_tire(*player_)) {
       p->control.steer = input.steer;
@@ -294,6 +297,7 @@ void World::color_pairs() {
   // The scatter moved each start to the next colour's start: shift back.
   for (std::uint32_t c = color_count; c > 0; --c) color_begin_[c] = color_begin_[c - 1];
   color_begin_[0] = 0;
+  TIRE_ASSERT(color_begin_.back() == tire_pairs_.size(), "the colours do not hold every tire pair");
 }
 
 void World::guard_divergence(Tire& t) {
