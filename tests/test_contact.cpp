@@ -1,6 +1,8 @@
-// Box contacts: the minimal-overlap normal and depth, the inequality constraint's gradient, and
+// Box contacts: the minimal-overlap normal and depth, the gradient the contact projection uses, and
 // Coulomb friction's physical meaning.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <functional>
 
 #include "tire/xpbd/contact.h"
 #include "tire/xpbd/particles.h"
@@ -29,23 +31,62 @@ TEST_CASE("box contact pushes out through the face of least overlap", "[unit][co
   CHECK(box_contact({0.5, 1.5}, box)->normal == Vec2{0, 1});
 }
 
-TEST_CASE("the contact constraint's gradient is its normal", "[unit][contact]") {
-  // C(x) = −depth(x) ≥ 0 is the inequality; its gradient must be the normal it pushes along.
-  const Aabb box{{-1, -1}, {1, 0}};
+namespace {
+
+// ∂f/∂x by central differences.
+template <typename F>
+Vec2 central_difference(F&& f, Vec2 x) {
   const double eps = 1e-7;
-  for (const Vec2 p : {Vec2{0.2, -0.1}, Vec2{-0.95, -0.4}, Vec2{0.97, -0.5}, Vec2{0.1, -0.98}}) {
-    const auto c = box_contact(p, box);
-    REQUIRE(c);
-    const auto C = [&](Vec2 q) { return -box_contact(q, box)->depth; };
-    const Vec2 fd{(C(p + Vec2{eps, 0}) - C(p - Vec2{eps, 0})) / (2 * eps),
-                  (C(p + Vec2{0, eps}) - C(p - Vec2{0, eps})) / (2 * eps)};
-    CHECK(fd.x == Approx(c->normal.x).margin(1e-6));
-    CHECK(fd.y == Approx(c->normal.y).margin(1e-6));
-    // Resolving it lands exactly on the surface.
-    Vec2 x = p;
+  return {(f(x + Vec2{eps, 0}) - f(x - Vec2{eps, 0})) / (2 * eps), (f(x + Vec2{0, eps}) - f(x - Vec2{0, eps})) / (2 * eps)};
+}
+
+}  // namespace
+
+TEST_CASE("the contact projection the solver runs moves along the finite-difference gradient", "[unit][contact]") {
+  // solve_contacts runs swept_box_contact, then resolve_contact. Its constraint is C(x) ≥ 0 with C
+  // the signed distance to the surface: to the nearest face for a particle that started inside, to
+  // the face it came in through for one that entered this substep. Each C is written here from the
+  // box's bounds, not taken from the engine. One projection (α = 0, the surface of infinite mass,
+  // so w cancels) moves the particle by Δx = −C ∇C/|∇C|², times its share for a body of finite mass.
+  const Aabb box{{-1, -1}, {1, 0}};
+  const auto inside = [&](Vec2 q) {  // −(distance to the nearest face): negative inside
+    return -std::min({q.x - box.min.x, box.max.x - q.x, q.y - box.min.y, box.max.y - q.y});
+  };
+  const auto through_top = [&](Vec2 q) { return q.y - box.max.y; };
+  const auto through_left = [&](Vec2 q) { return box.min.x - q.x; };
+  const auto through_bottom = [&](Vec2 q) { return box.min.y - q.y; };
+  struct Case {
+    Vec2 from, to;
+    double share;
+    std::function<double(Vec2)> C;
+  };
+  const Case cases[] = {
+      {{0.2, -0.1}, {0.2, -0.1}, 1.0, inside},          // started inside: nearest face (top)
+      {{-0.95, -0.4}, {-0.95, -0.4}, 1.0, inside},      // left
+      {{0.97, -0.5}, {0.97, -0.5}, 0.4, inside},        // right, a body's share
+      {{0.1, -0.98}, {0.1, -0.98}, 1.0, inside},        // bottom
+      {{0.3, 0.2}, {0.35, -0.05}, 1.0, through_top},    // landed from above
+      {{-1.2, -0.5}, {-0.5, -0.3}, 1.0, through_left},  // came in through the left face, nearer the top
+      {{-1.5, 0.1}, {-0.8, -0.5}, 0.7, through_left},   // over the corner (slab test): left face last
+      {{-1.3, 0.4}, {-0.9, -0.02}, 1.0, through_top},   // over the corner: the top face last
+      {{0.5, -1.3}, {0.6, -0.9}, 1.0, through_bottom},  // from below
+  };
+  for (const Case& k : cases) {
+    INFO("from (" << k.from.x << ", " << k.from.y << ") to (" << k.to.x << ", " << k.to.y << ")");
+    const auto contact = swept_box_contact(k.from, k.to, box);
+    REQUIRE(contact);
+    const double C = k.C(k.to);
+    REQUIRE(C < 0.0);
+    const Vec2 grad = central_difference(k.C, k.to);
+    Vec2 x = k.to;
     ContactRecord rec;
-    resolve_contact(x, x, *c, 0.0, 0.0, rec);
-    CHECK_FALSE(box_contact(x, box));
+    resolve_contact(x, k.from, *contact, 0.0, 0.0, rec, {}, k.share);
+    const Vec2 expected = grad * (-C / length_squared(grad) * k.share);
+    CHECK((x - k.to).x == Approx(expected.x).margin(1e-8));
+    CHECK((x - k.to).y == Approx(expected.y).margin(1e-8));
+    CHECK(rec.lambda_n == Approx(-C * k.share).margin(1e-12));  // the correction, as a distance
+    // All of it lands exactly on the surface.
+    if (k.share == 1.0) CHECK(k.C(x) == Approx(0.0).margin(1e-12));
   }
 }
 

@@ -1,5 +1,7 @@
-// The distance constraint: its gradient, and what compliance means physically.
+// The distance constraint: the gradient the real solver uses (both kernels), and what compliance
+// means physically.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <vector>
 
 #include "tire/xpbd/distance_constraint.h"
@@ -7,23 +9,114 @@
 
 using namespace tire;
 
-TEST_CASE("distance constraint gradient matches finite differences", "[unit][distance]") {
-  const Vec2 xa{0.3, -0.2};
-  const Vec2 xb{1.1, 0.45};
-  const double rest = 0.7;
-  const DistanceEval e = evaluate_distance(xa, xb, rest);
-  const double eps = 1e-7;
-  const auto C = [&](Vec2 a, Vec2 b) { return evaluate_distance(a, b, rest).C; };
-  // ∂C/∂x_b by central differences, and ∂C/∂x_a = −∂C/∂x_b
-  const Vec2 fd_b{(C(xa, xb + Vec2{eps, 0}) - C(xa, xb - Vec2{eps, 0})) / (2 * eps),
-                  (C(xa, xb + Vec2{0, eps}) - C(xa, xb - Vec2{0, eps})) / (2 * eps)};
-  const Vec2 fd_a{(C(xa + Vec2{eps, 0}, xb) - C(xa - Vec2{eps, 0}, xb)) / (2 * eps),
-                  (C(xa + Vec2{0, eps}, xb) - C(xa - Vec2{0, eps}, xb)) / (2 * eps)};
-  CHECK(e.grad_b.x == Approx(fd_b.x).margin(1e-8));
-  CHECK(e.grad_b.y == Approx(fd_b.y).margin(1e-8));
-  CHECK(-e.grad_b.x == Approx(fd_a.x).margin(1e-8));
-  CHECK(-e.grad_b.y == Approx(fd_a.y).margin(1e-8));
-  CHECK(e.C == Approx(length(xb - xa) - rest));
+namespace {
+
+// The constraint from its definition, C(x) = |x_b − x_a| − L0, written here rather than taken from
+// the engine: the solver's gradient is checked against this function's finite differences.
+double stretch(Vec2 a, Vec2 b, double rest) { return std::hypot(b.x - a.x, b.y - a.y) - rest; }
+
+// ∂f/∂x by central differences, f a function of one particle's position.
+template <typename F>
+Vec2 central_difference(F&& f, Vec2 x) {
+  const double eps = 1e-6;
+  return {(f(x + Vec2{eps, 0}) - f(x - Vec2{eps, 0})) / (2 * eps), (f(x + Vec2{0, eps}) - f(x - Vec2{0, eps})) / (2 * eps)};
+}
+
+// 13 constraints that share no particle: 10 rigid ones (batches of 4, 4 and 2 lanes: full batches
+// and a short one, whose unused lanes repeat its first), then 3 compliant ones (a batch of 3).
+// Ends a weigh w = 0.7, ends b w = 1.9: the lanes of a batch share their inverse masses.
+struct Independent {
+  std::vector<DistanceConstraint> list;
+  Particles p;
+};
+Independent independent_constraints(double alpha) {
+  Independent s;
+  s.p.resize(26);
+  for (std::uint32_t k = 0; k < 13; ++k) {
+    const std::uint32_t a = 2 * k, b = 2 * k + 1;
+    const double angle = 0.7 * k, len = 0.8 + 0.05 * k;
+    s.p.x[a] = {0.3 * k - 1.0, 0.5 - 0.1 * k};
+    s.p.x[b] = s.p.x[a] + Vec2{std::cos(angle), std::sin(angle)} * len;
+    s.p.v[a] = {0.2 * (k % 3), -0.4 + 0.1 * k};
+    s.p.v[b] = {-0.3 + 0.05 * k, 0.25 * (k % 4)};
+    s.p.w[a] = 0.7;
+    s.p.w[b] = 1.9;
+    // Stretched or compressed by 15-20 %.
+    s.list.push_back({a, b, len * (k % 2 == 0 ? 0.85 : 1.2), k < 10 ? 0.0 : alpha});
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("one projection of the real solver moves along the finite-difference gradient, both kernels",
+          "[unit][distance]") {
+  // XPBD (Macklin et al. 2016) eq. 17-18 with λ = 0 at the start of the substep: the projection
+  // moves end j by Δx_j = w_j ∇_j C Δλ with Δλ = −C / (Σ_j w_j |∇_j C|² + α̃). So the gradient the
+  // solver used can be read off what it did, ∇_j C = Δx_j / (w_j Δλ), with Δλ the multiplier it
+  // accumulated, and both are compared with finite differences of C.
+  const auto kernel = GENERATE(DistanceConstraintSet::Kernel::automatic, DistanceConstraintSet::Kernel::scalar);
+  CAPTURE(kernel == DistanceConstraintSet::Kernel::scalar);
+  const double h = 1e-3, alpha = 1e-6, alpha_tilde = alpha / (h * h);  // α̃ = 1: as much as w_a + w_b
+  const Independent s = independent_constraints(alpha);
+  DistanceConstraintSet set(s.list);
+  set.set_kernel(kernel);
+  set.prepare(s.p.w.data(), h);
+  REQUIRE(set.batch_count() == 4);
+  std::vector<Vec2> x = s.p.x;
+  set.solve(x.data());
+  for (std::size_t k = 0; k < s.list.size(); ++k) {
+    const DistanceConstraint& c = s.list[k];
+    INFO("constraint " << k);
+    const Vec2 xa = s.p.x[c.a], xb = s.p.x[c.b];
+    const double C = stretch(xa, xb, c.rest_length);
+    const Vec2 fd_a = central_difference([&](Vec2 q) { return stretch(q, xb, c.rest_length); }, xa);
+    const Vec2 fd_b = central_difference([&](Vec2 q) { return stretch(xa, q, c.rest_length); }, xb);
+    const double delta_lambda = set.lambda(k);
+    const double expected_lambda =
+        -C / (s.p.w[c.a] * length_squared(fd_a) + s.p.w[c.b] * length_squared(fd_b) + (c.compliance > 0 ? alpha_tilde : 0.0));
+    CHECK(delta_lambda == Approx(expected_lambda).epsilon(1e-8));
+    const Vec2 grad_a = (x[c.a] - xa) / (s.p.w[c.a] * delta_lambda);
+    const Vec2 grad_b = (x[c.b] - xb) / (s.p.w[c.b] * delta_lambda);
+    CHECK(grad_a.x == Approx(fd_a.x).margin(1e-8));
+    CHECK(grad_a.y == Approx(fd_a.y).margin(1e-8));
+    CHECK(grad_b.x == Approx(fd_b.x).margin(1e-8));
+    CHECK(grad_b.y == Approx(fd_b.y).margin(1e-8));
+  }
+}
+
+TEST_CASE("the real dashpot removes rate along the finite-difference gradient, both kernels", "[unit][distance]") {
+  // damp(): the rate dC/dt = Σ_j ∇_j C · v_j, and the impulse p = rate·τh/(α + τh Σ_j w_j|∇_j C|²)
+  // changes each velocity by Δv_j = −w_j ∇_j C p (the implicit Kelvin-Voigt dashpot). Predicted
+  // from finite-difference gradients, compared with what the solver did.
+  const auto kernel = GENERATE(DistanceConstraintSet::Kernel::automatic, DistanceConstraintSet::Kernel::scalar);
+  CAPTURE(kernel == DistanceConstraintSet::Kernel::scalar);
+  const double h = 1e-3, tau = 5e-3, alpha = 1e-4;
+  const Independent s = independent_constraints(alpha);
+  DistanceConstraintSet set(s.list);
+  set.set_kernel(kernel);
+  set.prepare(s.p.w.data(), h, tau);
+  std::vector<Vec2> v = s.p.v;
+  set.damp(s.p.x.data(), v.data());
+  for (const DistanceConstraint& c : s.list) {
+    INFO("constraint " << c.a / 2);
+    const Vec2 xa = s.p.x[c.a], xb = s.p.x[c.b];
+    const Vec2 fd_a = central_difference([&](Vec2 q) { return stretch(q, xb, c.rest_length); }, xa);
+    const Vec2 fd_b = central_difference([&](Vec2 q) { return stretch(xa, q, c.rest_length); }, xb);
+    const double rate = dot(fd_a, s.p.v[c.a]) + dot(fd_b, s.p.v[c.b]);
+    const double tau_h = tau * h;
+    const double impulse =
+        rate * tau_h / (c.compliance + tau_h * (s.p.w[c.a] * length_squared(fd_a) + s.p.w[c.b] * length_squared(fd_b)));
+    const Vec2 dv_a = v[c.a] - s.p.v[c.a], dv_b = v[c.b] - s.p.v[c.b];
+    CHECK(dv_a.x == Approx(-s.p.w[c.a] * fd_a.x * impulse).margin(1e-8));
+    CHECK(dv_a.y == Approx(-s.p.w[c.a] * fd_a.y * impulse).margin(1e-8));
+    CHECK(dv_b.x == Approx(-s.p.w[c.b] * fd_b.x * impulse).margin(1e-8));
+    CHECK(dv_b.y == Approx(-s.p.w[c.b] * fd_b.y * impulse).margin(1e-8));
+    // A rigid constraint loses all of its rate, a compliant one part of it.
+    const double rate_after = dot(fd_a, v[c.a]) + dot(fd_b, v[c.b]);
+    if (c.compliance == 0.0) CHECK(rate_after == Approx(0.0).margin(1e-8));
+    else CHECK(std::abs(rate_after) < std::abs(rate));
+  }
 }
 
 TEST_CASE("a rigid distance constraint is met exactly in one projection", "[unit][distance]") {

@@ -120,8 +120,9 @@ TEST_CASE("a pile of tires in a box settles without overlaps or NaN", "[unit][so
 
 TEST_CASE("a tread particle inside another tire is projected along the particle-edge gradient", "[unit][soft]") {
   // C = n·(p − (1−t) b0 − t b1) ≥ 0 with ∇_p C = n, ∇_b0 C = −(1−t) n, ∇_b1 C = −t n: one
-  // projection moves each of the three by w ∇C Δλ with Δλ = −C / Σ w|∇C|² (XPBD eq. 17–18, α = 0),
-  // which puts p on the edge and, the gradients summing to zero, keeps momentum.
+  // projection of the real solve_tire_contact moves each of the three by w ∇C Δλ with
+  // Δλ = −C / Σ w|∇C|² (XPBD eq. 17–18, α = 0), the gradients taken by finite differences; that
+  // puts p on the edge and, the gradients summing to zero, keeps momentum.
   TireSpec spec = tire_at({0.0, 0.0});
   spec.friction = 0.0;  // the normal projection alone
   Tire b(0, spec);
@@ -151,17 +152,37 @@ TEST_CASE("a tread particle inside another tire is projected along the particle-
   const double C = dot(normal, p - b0 - e * t);
   REQUIRE(C == Approx(-0.01));
 
+  // The gradients, by central differences of C written from its definition: the signed distance of
+  // p from the line of the edge (b0, b1), positive outside.
+  const auto line_C = [](Vec2 q, Vec2 e0, Vec2 e1) {
+    const Vec2 d = e1 - e0;
+    return (d.y * (q.x - e0.x) - d.x * (q.y - e0.y)) / std::hypot(d.x, d.y);
+  };
+  const double eps = 1e-7;
+  const auto fd = [&](int which) {
+    const auto at = [&](Vec2 dq) {
+      return line_C(p + (which == 0 ? dq : Vec2{}), b0 + (which == 1 ? dq : Vec2{}), b1 + (which == 2 ? dq : Vec2{}));
+    };
+    return Vec2{(at({eps, 0}) - at({-eps, 0})) / (2 * eps), (at({0, eps}) - at({0, -eps})) / (2 * eps)};
+  };
+  const Vec2 grad_p = fd(0), grad_b0 = fd(1), grad_b1 = fd(2);
+  CHECK(line_C(p, b0, b1) == Approx(C).margin(1e-12));
+  CHECK(length(grad_p - normal) < 1e-7);            // ∇_p C = n
+  CHECK(length(grad_b0 + normal * (1 - t)) < 1e-7);  // ∇_b0 C = −(1−t) n
+  CHECK(length(grad_b1 + normal * t) < 1e-7);        // ∇_b1 C = −t n
+
   solve_tire_contact(a, b, 0.7);
 
   const double wp = a.particles.w[i], w0 = b.particles.w[k], w1 = b.particles.w[k1];
-  const double delta_lambda = -C / (wp + (1 - t) * (1 - t) * w0 + t * t * w1);
+  const double delta_lambda =
+      -C / (wp * length_squared(grad_p) + w0 * length_squared(grad_b0) + w1 * length_squared(grad_b1));
   const Vec2 dp = a.particles.x[i] - p, db0 = b.particles.x[k] - b0, db1 = b.particles.x[k1] - b1;
-  CHECK(dp.x == Approx(wp * delta_lambda * normal.x).margin(1e-12));
-  CHECK(dp.y == Approx(wp * delta_lambda * normal.y).margin(1e-12));
-  CHECK(db0.x == Approx(-w0 * (1 - t) * delta_lambda * normal.x).margin(1e-12));
-  CHECK(db0.y == Approx(-w0 * (1 - t) * delta_lambda * normal.y).margin(1e-12));
-  CHECK(db1.x == Approx(-w1 * t * delta_lambda * normal.x).margin(1e-12));
-  CHECK(db1.y == Approx(-w1 * t * delta_lambda * normal.y).margin(1e-12));
+  CHECK(dp.x == Approx(wp * delta_lambda * grad_p.x).margin(1e-10));
+  CHECK(dp.y == Approx(wp * delta_lambda * grad_p.y).margin(1e-10));
+  CHECK(db0.x == Approx(w0 * delta_lambda * grad_b0.x).margin(1e-10));
+  CHECK(db0.y == Approx(w0 * delta_lambda * grad_b0.y).margin(1e-10));
+  CHECK(db1.x == Approx(w1 * delta_lambda * grad_b1.x).margin(1e-10));
+  CHECK(db1.y == Approx(w1 * delta_lambda * grad_b1.y).margin(1e-10));
   // Equal particle masses: Σ m Δx = 0 means the displacements cancel.
   const Vec2 momentum = dp + db0 + db1;
   CHECK(length(momentum) < 1e-15);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "tire/math/check.h"
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -56,7 +58,9 @@ void WorkerPool::run_chunks(std::uint32_t generation) {
     call(fn, n * chunk / chunks, n * (chunk + 1) / chunks);
     // Sequentially consistent with the load of caller_waiting_, as the caller's store of it is with
     // its load of chunks_done_: either the caller sees this chunk done, or this sees it waiting.
-    chunks_done_.fetch_add(1);
+    [[maybe_unused]] const std::uint32_t done_before = chunks_done_.fetch_add(1);
+    // More chunks done than the job has is a chunk run twice (the caller would wait forever).
+    TIRE_ASSERT(done_before < chunks, "a chunk of a job was run twice");
     if (caller_waiting_.load()) chunks_done_.notify_one();
     ticket = ticket_.load(std::memory_order_acquire);
   }
@@ -65,6 +69,11 @@ void WorkerPool::run_chunks(std::uint32_t generation) {
 void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
   const auto chunks = static_cast<std::uint32_t>(std::min(n, threads() * kChunksPerThread));
   const std::uint32_t generation = generation_.load(std::memory_order_relaxed) + 1;
+  TIRE_ASSERT(chunks >= 1 && chunks <= n && chunks < 0xFFFFFFFFu, "a job cut into no chunk, or more chunks than items");
+  // The last job's ticket is closed (its generation, no chunk left to claim), or this is the first.
+  TIRE_ASSERT(generation_of(ticket_.load()) == generation - 1 &&
+                  (static_cast<std::uint32_t>(ticket_.load()) == 0xFFFFFFFFu || generation == 1),
+              "a job published while the last one's ticket is still open");
   n_.store(n, std::memory_order_relaxed);
   chunks_.store(chunks, std::memory_order_relaxed);
   call_.store(call, std::memory_order_relaxed);
@@ -90,6 +99,8 @@ void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
     if (done != chunks) chunks_done_.wait(done);
     caller_waiting_.store(false, std::memory_order_relaxed);
   }
+  TIRE_ASSERT(static_cast<std::uint32_t>(ticket_.load()) == chunks && generation_of(ticket_.load()) == generation,
+              "a job finished with a chunk unclaimed, or with another job's ticket");
   // Closes the job before the next one's fields are written: a thread still on its way into this
   // job may read those fields, and must then find no chunk left to claim under this generation
   // (with the ticket left at `chunks`, a next job with more chunks would let it claim one).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "tire/math/check.h"
+
 namespace tire {
 
 namespace {
@@ -22,6 +24,9 @@ void add_ring(std::vector<DistanceConstraint>& out, std::uint32_t first, std::ui
 Tire::Tire(TireId id_, const TireSpec& spec_)
     : id(id_), spec(spec_), spawn_mass(spec_.mass), n(static_cast<std::uint32_t>(spec_.segments)),
       segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
+  TIRE_ASSERT(spec.segments >= 3, "a tire ring of fewer than three segments");
+  TIRE_ASSERT(spec.mass > 0.0 && std::isfinite(spec.mass), "a tire's mass is not positive and finite");
+  TIRE_ASSERT(spec.inner_radius > 0.0 && spec.inner_radius < spec.outer_radius, "a tire's rim is not inside its tread");
   particles.resize(2 * n);
   contacts.resize(2 * n);
   contact_mask.resize((2 * n + 63) / 64);
@@ -52,6 +57,9 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   distance = DistanceConstraintSet(std::move(list));
   area_constraint.rest_area = polygon_area(particles.x.data(), n);
   rim_area_constraint.rest_area = polygon_area(particles.x.data() + n, n);
+  TIRE_ASSERT(distance.size() == (spec.spokes == SpokePattern::cross ? 5u : 3u) * n, "a ring or a spoke is missing");
+  TIRE_ASSERT(sizes_consistent(), "a tire built with arrays of the wrong size");
+  TIRE_ASSERT(area_constraint.rest_area > 0.0 && rim_area_constraint.rest_area > 0.0, "a tire built clockwise");
 }
 
 void Tire::reset() {
@@ -88,6 +96,7 @@ Vec2 mean(const std::vector<Vec2>& values) {
 }  // namespace
 
 void Tire::set_compliance(const TireCompliance& c) {
+  TIRE_ASSERT(c.outer >= 0.0 && c.inner >= 0.0 && c.spoke >= 0.0 && c.pressure >= 0.0, "a negative compliance");
   spec.compliance = c;
   distance.set_compliance(outer_ring_first(), n, c.outer);
   distance.set_compliance(inner_ring_first(), n, c.inner);
@@ -97,6 +106,7 @@ void Tire::set_compliance(const TireCompliance& c) {
 }
 
 void Tire::set_mass(double mass) {
+  TIRE_ASSERT(mass > 0.0 && std::isfinite(mass), "a tire's mass is not positive and finite");
   spec.mass = mass;
   std::fill(particles.w.begin(), particles.w.end(), 2.0 * n / mass);
 }
@@ -147,6 +157,18 @@ std::size_t Tire::touching_particles() const {
   for (std::uint32_t i = 0; i < particle_count(); ++i)
     count += contacts[i].active || on_tire[i] != 0 || (i < n && soft_lambda[i] > 0.0);
   return count;
+}
+
+bool Tire::sizes_consistent() const {
+  const std::size_t count = particle_count();
+  if (particles.x.size() != count || particles.x_prev.size() != count || particles.v.size() != count ||
+      particles.w.size() != count || contacts.size() != count || contact_mask.size() != (count + 63) / 64 ||
+      grounded_flags.size() != count || on_tire.size() != count || soft_lambda.size() != n)
+    return false;
+  for (const DistanceConstraint& c : distance.constraints())
+    if (c.a >= count || c.b >= count) return false;
+  return area_constraint.first + area_constraint.count <= count && rim_area_constraint.first + rim_area_constraint.count <= count &&
+         grab_particle < count;
 }
 
 bool Tire::is_finite() const {

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tire/math/check.h"
+
 namespace tire {
 
 namespace {
@@ -218,6 +220,9 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
 }  // namespace
 
 void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
+  TIRE_ASSERT(config.substeps >= 1 && config.iterations >= 1, "fewer than one substep or iteration a tick");
+  TIRE_ASSERT(config.dt > 0.0 && std::isfinite(config.dt), "the tick is not a positive length of time");
+  TIRE_ASSERT(t.sizes_consistent(), "a tire's arrays no longer match its particle count");
   const double h = config.dt / config.substeps;
   t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
@@ -289,7 +294,13 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
   if (ctx.tire_pairs) bounds_of(0, t.tread_hub, t.tread_reach);
 }
 
-void end_substep(Tire& t, const SubstepContext& ctx) { update_velocities(t, ctx); }
+void end_substep(Tire& t, const SubstepContext& ctx) {
+  update_velocities(t, ctx);
+  // A tire that started the substep finite ends it finite. (One that did not, say a NaN put in
+  // from outside, is the world's divergence guard's to reset after the tick.)
+  TIRE_ASSERT(t.is_finite() || !std::all_of(t.particles.x_prev.begin(), t.particles.x_prev.end(), [](Vec2 x) { return is_finite(x); }),
+              "a substep turned finite positions into NaN or Inf");
+}
 
 void apply_prop_impulses(Tire& t, RigidWorld& rigid) {
   for (const PropImpulse& p : t.prop_impulses) rigid.add_impulse(p.prop, p.impulse, p.point, p.time);

@@ -5,12 +5,18 @@
 #include <thread>
 #include <cmath>
 
+#include "tire/math/check.h"
 #include "tire/math/state_hash.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/tire_solver.h"
 
 namespace tire {
+
+namespace {
+// Colours of tire pairs that are solved in parallel; pairs beyond go to colour kColors, solved in order.
+constexpr std::uint32_t kColors = 64;
+}  // namespace
 
 World::World(const SolverConfig& config, Vec2 gravity)
     : config_(config), gravity_(gravity), rigid_(gravity), threads_(std::max(1u, std::thread::hardware_concurrency())) {
@@ -191,6 +197,8 @@ const Tire* World::player() const {
 }
 
 void World::step(const TickInput& input) {
+  TIRE_ASSERT(config_.substeps >= 1 && config_.iterations >= 1, "fewer than one substep or iteration a tick");
+  TIRE_ASSERT(config_.dt > 0.0 && std::isfinite(config_.dt), "the tick is not a positive length of time");
   if (player_) {
     if (Tire* p = find_tire(*player_)) {
       p->control.steer = input.steer;
@@ -211,10 +219,13 @@ void World::step(const TickInput& input) {
   const auto solve_tire_pairs = [&] {
     for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
       const TirePair* first = colored_pairs_.data() + color_begin_[c];
-      for_tires(color_begin_[c + 1] - color_begin_[c], [&](std::size_t b, std::size_t e) {
+      auto solve = [&](std::size_t b, std::size_t e) {
         for (std::size_t k = b; k < e; ++k)
           solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
-      });
+      };
+      const std::size_t count = color_begin_[c + 1] - color_begin_[c];
+      if (c < kColors) for_tires(count, solve);
+      else solve(0, count);  // the overflow colour: its pairs may share a tire
     }
   };
   // Each tire's velocity pass of one substep runs in the same sweep over the tires as its prediction
@@ -288,7 +299,6 @@ void World::for_tires(std::size_t n, F&& fn) {
 void World::color_pairs() {
   // Greedy colouring in pair order: each pair takes the lowest colour neither tire uses yet. A tire
   // with 64 neighbours or more sends its extra pairs to a last colour of their own.
-  constexpr std::uint32_t kColors = 64;
   tire_colors_.assign(tires_.size(), 0);
   pair_color_.resize(tire_pairs_.size());
   std::uint32_t color_count = 0;
@@ -312,6 +322,22 @@ void World::color_pairs() {
   // The scatter moved each start to the next colour's start: shift back.
   for (std::uint32_t c = color_count; c > 0; --c) color_begin_[c] = color_begin_[c - 1];
   color_begin_[0] = 0;
+  TIRE_ASSERT(color_begin_.back() == tire_pairs_.size(), "the colours do not hold every tire pair");
+  TIRE_ASSERT(colors_share_no_tire(), "two pairs of one parallel colour share a tire: solving them would race");
+}
+
+bool World::colors_share_no_tire() {
+  std::fill(tire_colors_.begin(), tire_colors_.end(), std::uint64_t{0});
+  for (std::uint32_t c = 0; c + 1 < color_begin_.size() && c < kColors; ++c) {
+    const std::uint64_t bit = std::uint64_t{1} << c;
+    for (std::uint32_t k = color_begin_[c]; k < color_begin_[c + 1]; ++k) {
+      const TirePair p = colored_pairs_[k];
+      if (p.a == p.b || ((tire_colors_[p.a] | tire_colors_[p.b]) & bit) != 0) return false;
+      tire_colors_[p.a] |= bit;
+      tire_colors_[p.b] |= bit;
+    }
+  }
+  return true;
 }
 
 void World::guard_divergence(Tire& t) {

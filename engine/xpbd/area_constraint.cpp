@@ -1,5 +1,9 @@
 #include "tire/xpbd/area_constraint.h"
 
+#include <cmath>
+
+#include "tire/math/check.h"
+
 namespace tire {
 
 double polygon_area(const Vec2* x, std::uint32_t count) {
@@ -20,6 +24,9 @@ void polygon_area_gradient(const Vec2* x, std::uint32_t count, Vec2* grad) {
 }
 
 void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const double* w, double inv_h2) {
+  TIRE_ASSERT(c.count >= 3, "an area constraint on fewer than three vertices");
+  TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance), "an area compliance is negative, NaN or infinite");
+  TIRE_ASSERT(inv_h2 > 0.0 && std::isfinite(inv_h2), "1/h² is not positive and finite");
   Vec2* p = x + c.first;
   const double* wp = w + c.first;
   const std::uint32_t n = c.count;
@@ -39,6 +46,8 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
   if (denominator <= 0.0) return;
   const double delta_lambda = (-C - alpha_tilde * lambda) / denominator;  // XPBD eq. 18
   lambda += delta_lambda;
+  TIRE_ASSERT(std::isfinite(lambda) || !std::isfinite(C) || !std::isfinite(denominator),
+              "an area solve from finite positions left its multiplier NaN or infinite");
   // Second pass: Δx_i = w_i ∇_i C Δλ  (XPBD eq. 17), every ∇_i C at the positions before the
   // pass: the previous vertex's and the first one's old positions are carried along.
   const Vec2 first = p[0];
@@ -52,6 +61,8 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
 }
 
 void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h) {
+  TIRE_ASSERT(c.count >= 3, "an area constraint on fewer than three vertices");
+  TIRE_ASSERT(h > 0.0 && tau >= 0.0, "a negative damping time or a substep that is not positive");
   const Vec2* p = x + c.first;
   Vec2* vp = v + c.first;
   const double* wp = w + c.first;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tire/math/check.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define TIRE_HAVE_AVX_PATH 1
@@ -12,8 +14,12 @@ namespace tire {
 
 DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> constraints)
     : constraints_(std::move(constraints)) {
-  for (const DistanceConstraint& c : constraints_)
+  for (const DistanceConstraint& c : constraints_) {
+    TIRE_ASSERT(c.a != c.b, "a distance constraint joins a particle to itself");
+    TIRE_ASSERT(c.rest_length >= 0.0 && std::isfinite(c.rest_length), "a rest length is negative, NaN or infinite");
+    TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance), "a compliance is negative, NaN or infinite");
     particle_count_ = std::max<std::size_t>(particle_count_, std::max(c.a, c.b) + std::size_t{1});
+  }
   build_batches(nullptr);
 }
 
@@ -37,6 +43,13 @@ void DistanceConstraintSet::build_batches(const double* w) {
   std::uint32_t count = 0;
   const auto close = [&] {
     if (count == 0) return;
+    TIRE_ASSERT(count <= kLanes, "a batch has more lanes than the vector");
+    // The lanes are independent (what makes the batch one Gauss-Seidel sweep), which also keeps a
+    // real lane from looking like a copy of lane 0 to the scalar path (is_copy).
+    for (std::uint32_t l = 1; l < count; ++l)
+      for (std::uint32_t m = 0; m < l; ++m)
+        TIRE_ASSERT(open.a[l] != open.a[m] && open.a[l] != open.b[m] && open.b[l] != open.a[m] && open.b[l] != open.b[m],
+                    "two lanes of a batch share a particle");
     // A batch that is not full repeats its first lane: the copy computes and writes exactly what
     // lane 0 does, so the vector path needs no lane count (the scalar path skips copies).
     for (std::uint32_t l = count; l < kLanes; ++l) {
@@ -68,11 +81,16 @@ void DistanceConstraintSet::build_batches(const double* w) {
 }
 
 void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count, double compliance) {
+  TIRE_ASSERT(compliance >= 0.0 && std::isfinite(compliance), "a compliance is negative, NaN or infinite");
   for (std::size_t k = first; k < first + count && k < constraints_.size(); ++k) constraints_[k].compliance = compliance;
   rebuild_ = true;
 }
 
 void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
+  TIRE_ASSERT(h > 0.0 && std::isfinite(h), "the substep is not a positive length of time");
+  TIRE_ASSERT(tau >= 0.0 && std::isfinite(tau), "the damping time is negative, NaN or infinite");
+  TIRE_ASSERT(std::all_of(w, w + particle_count_, [](double wi) { return wi >= 0.0 && std::isfinite(wi); }),
+              "an inverse mass is negative, NaN or infinite");
   // The batches follow the inverse masses: built again only when one changed (a new tire mass).
   if (rebuild_ || w_built_.size() != particle_count_ || !std::equal(w_built_.begin(), w_built_.end(), w)) {
     build_batches(w);
@@ -230,14 +248,26 @@ const bool kCpuHasAvx = __builtin_cpu_supports("avx");
 }  // namespace
 
 void DistanceConstraintSet::solve(Vec2* x) {
+  TIRE_ASSERT(!rebuild_ && w_built_.size() == particle_count_, "solve() before prepare(), or after a change it has not seen");
+#ifndef NDEBUG
+  const bool finite_before = std::all_of(x, x + particle_count_, [](Vec2 p) { return is_finite(p); });
+#endif
 #ifdef TIRE_HAVE_AVX_PATH
   if (kCpuHasAvx && kernel_ == Kernel::automatic)
-    return solve_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x);
+    solve_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x);
+  else
 #endif
-  for (std::size_t k = 0; k < batches_.size(); ++k) solve_scalar(batches_[k], params_[params_of_[k]], x);
+    for (std::size_t k = 0; k < batches_.size(); ++k) solve_scalar(batches_[k], params_[params_of_[k]], x);
+#ifndef NDEBUG
+  TIRE_ASSERT(!finite_before || std::all_of(batches_.begin(), batches_.end(),
+                                            [](const Batch& b) { return std::all_of(std::begin(b.lambda), std::end(b.lambda),
+                                                                                    [](double l) { return std::isfinite(l); }); }),
+              "a sweep from finite positions left a multiplier NaN or infinite");
+#endif
 }
 
 void DistanceConstraintSet::damp(const Vec2* x, Vec2* v) {
+  TIRE_ASSERT(!rebuild_ && w_built_.size() == particle_count_, "damp() before prepare(), or after a change it has not seen");
 #ifdef TIRE_HAVE_AVX_PATH
   if (kCpuHasAvx && kernel_ == Kernel::automatic)
     return damp_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x, v);

@@ -93,6 +93,10 @@ struct Tire {
   // carrying it).
   std::size_t touching_particles() const;
   bool is_finite() const;            // no NaN/Inf in positions or velocities
+  // Every per-particle array holds 2N entries (soft_lambda N, contact_mask one bit each) and every
+  // constraint names particles of this tire: what the solver indexes by without checking
+  // (TIRE_ASSERT in debug builds).
+  bool sizes_consistent() const;
   double max_abs_coordinate() const;
   // The contact record of particle i, marked as written this substep.
   ContactRecord& touch_contact(std::uint32_t i) {

@@ -95,6 +95,9 @@ class World {
  private:
   void guard_divergence(Tire& t);
   void color_pairs();
+  // Whether no two pairs of one parallel colour share a tire (a check for TIRE_ASSERT: it rebuilds
+  // tire_colors_ from colored_pairs_, which leaves that scratch as color_pairs() left it).
+  bool colors_share_no_tire();
   // fn(begin, end) over tire indices [0, n): in parallel when the scene is big enough.
   template <typename F>
   void for_tires(std::size_t n, F&& fn);
@@ -109,7 +112,9 @@ class World {
   TirePairFinder pair_finder_;
   std::vector<TirePair> tire_pairs_;     // this tick's candidate pairs
   // The pairs sorted into colours: no two pairs of a colour share a tire, so a colour's pairs are
-  // solved in parallel; colours always go in the same order, whatever the thread count.
+  // solved in parallel; colours always go in the same order, whatever the thread count. The last
+  // colour, kColors, takes the pairs of a tire with more neighbours than there are colours: its
+  // pairs may share a tire, so it is solved in pair order on the calling thread.
   std::vector<TirePair> colored_pairs_;
   std::vector<std::uint32_t> color_begin_;  // colour c is colored_pairs_[color_begin_[c], color_begin_[c+1])
   std::vector<std::uint64_t> tire_colors_;  // per tire: colours its pairs use (scratch)

@@ -1,6 +1,9 @@
 // Distance constraint C(x) = |x_b − x_a| − L0 (Macklin et al. 2016, "XPBD", Sec. 5; Müller et al.
 // 2007, "Position Based Dynamics", Sec. 3.3), solved with XPBD compliance and accumulated λ, plus a
-// dashpot in parallel (Kelvin–Voigt) applied to velocities.
+// dashpot in parallel (Kelvin–Voigt) applied to velocities. Its gradient is ∇_{x_b}C = n =
+// (x_b − x_a)/|x_b − x_a| = −∇_{x_a}C; when the two particles coincide it is undefined, taken as
+// zero: λ still accumulates, nothing moves. (tests/test_distance_constraint.cpp reads the gradient
+// the solver used off one projection and compares it with finite differences of C.)
 #pragma once
 
 #include <array>
@@ -19,20 +22,6 @@ struct DistanceConstraint {
   double rest_length = 0.0;  // L0 (m)
   double compliance = 0.0;   // α (m/N): inverse stiffness; 0 is rigid
 };
-
-// C and ∇_{x_b}C = (x_b − x_a)/|x_b − x_a|; ∇_{x_a}C = −∇_{x_b}C. When the two particles coincide
-// the gradient is undefined: it is returned as zero and the projection leaves them be.
-struct DistanceEval {
-  double C = 0.0;
-  Vec2 grad_b;
-};
-
-inline DistanceEval evaluate_distance(Vec2 xa, Vec2 xb, double rest_length) {
-  const Vec2 d = xb - xa;
-  const double len = length(d);
-  if (len <= 0.0) return {-rest_length, {}};
-  return {len - rest_length, d * (1.0 / len)};
-}
 
 // A set of distance constraints laid out for the solver: in their Gauss–Seidel order, cut into
 // batches of up to four that share no particle, stored lane by lane. Constraints in a batch are
