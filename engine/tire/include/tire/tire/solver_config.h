@@ -13,6 +13,10 @@ namespace tire {
 //    at any substep count.
 enum class SolverMethod { gauss_seidel, global };
 
+// As levels, the command line and reports write it: "gauss-seidel", "global".
+constexpr const char* method_name(SolverMethod m) { return m == SolverMethod::global ? "global" : "gauss-seidel"; }
+constexpr SolverMethod kSolverMethods[] = {SolverMethod::gauss_seidel, SolverMethod::global};
+
 struct SolverConfig {
   double dt = 1.0 / 60.0;  // fixed tick (s)
   int substeps = 8;        // n: the tick is split into substeps of h = dt/n (Macklin et al. 2019)
