@@ -7,6 +7,7 @@
 #include <cstring>
 #include <numbers>
 
+#include "debug_draw_sdl.h"
 #include "tire/world/world.h"
 
 namespace game {
@@ -49,28 +50,6 @@ SDL_Color prop_color(const tire::Prop& p) {
 
 ScreenPoint lerp(ScreenPoint a, ScreenPoint b, float t) {
   return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
-}
-
-void arrow(Draw& d, ScreenPoint a, ScreenPoint b, float width, SDL_Color c) {
-  d.line(a, b, width, c);
-  const float dx = b.x - a.x, dy = b.y - a.y;
-  const float len = std::sqrt(dx * dx + dy * dy);
-  if (len < 4.0f) return;
-  const float ux = dx / len, uy = dy / len, head = std::min(10.0f, len * 0.4f);
-  d.triangle(b, {b.x - ux * head - uy * head * 0.5f, b.y - uy * head + ux * head * 0.5f},
-             {b.x - ux * head + uy * head * 0.5f, b.y - uy * head - ux * head * 0.5f}, c);
-}
-
-tire::Aabb prop_bounds(const tire::Prop& p, const tire::Pose& pose) {
-  const tire::Aabb local = p.geometry.local_bounds();
-  tire::Aabb box{pose.to_world(local.min), pose.to_world(local.min)};
-  for (const tire::Vec2 c :
-       {local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}}) {
-    const tire::Vec2 w = pose.to_world(c);
-    box.min = {std::min(box.min.x, w.x), std::min(box.min.y, w.y)};
-    box.max = {std::max(box.max.x, w.x), std::max(box.max.y, w.y)};
-  }
-  return box;
 }
 
 }  // namespace
@@ -411,8 +390,6 @@ void WorldRenderer::draw_grab(Draw& d, const Camera& camera, const GameSession& 
 void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                                const DebugOptions& debug) {
   const tire::World& world = session.world();
-  const auto& props = world.rigid().props();
-  const auto& obstacles = world.rigid().obstacles();
   ImDrawList* labels = ImGui::GetBackgroundDrawList();
 
   if (debug.regions)
@@ -423,73 +400,10 @@ void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession&
         labels->AddText({a.x + 4, a.y + 2}, IM_COL32(30, 50, 200, 255), r.name.c_str());
       }
 
-  for (const tire::Tire& t : world.tires()) {
-    session.interpolated_positions(t, alpha, positions_);
-    const std::uint32_t n = t.n;
-    if (debug.structure) {
-      const auto& constraints = t.distance.constraints();
-      for (std::size_t k = t.spokes_first(); k < constraints.size(); ++k)
-        d.line(camera.to_screen(positions_[constraints[k].a]), camera.to_screen(positions_[constraints[k].b]),
-               1.0f, rgba(120, 220, 255, 200));
-      inner_.resize(n);
-      outer_.resize(n);
-      for (std::uint32_t i = 0; i < n; ++i) {
-        outer_[i] = camera.to_screen(positions_[i]);
-        inner_[i] = camera.to_screen(positions_[n + i]);
-      }
-      d.polyline(inner_, true, 1.5f, rgba(0, 200, 255));
-      d.polyline(outer_, true, 1.5f, rgba(255, 255, 255, 220));
-      for (const ScreenPoint& p : outer_) d.circle(p, 2.0f, rgba(255, 255, 255), 6);
-      for (const ScreenPoint& p : inner_) d.circle(p, 2.0f, rgba(0, 200, 255), 6);
-    }
-    if (debug.contacts)
-      for (std::uint32_t i = 0; i < 2 * n; ++i) {
-        if (!t.contacts[i].active) continue;
-        const ScreenPoint p = camera.to_screen(t.particles.x[i]);
-        d.circle(p, 3.5f, rgba(255, 40, 40), 8);
-        arrow(d, p, camera.to_screen(t.particles.x[i] + t.contacts[i].normal * 0.25), 2.0f,
-              rgba(255, 40, 40));
-      }
-    if (debug.velocities) {
-      const tire::Vec2 c = session.interpolated_centroid(t, alpha);
-      arrow(d, camera.to_screen(c), camera.to_screen(c + t.velocity() * 0.25), 3.0f, rgba(255, 220, 0));
-    }
-    if (debug.aabbs) {
-      tire::Aabb box{positions_[0], positions_[0]};
-      for (const tire::Vec2& p : positions_) {
-        box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-        box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
-      }
-      d.rect_outline(camera.to_screen(box.min), camera.to_screen(box.max), 1.5f, rgba(60, 230, 90));
-    }
-    if (debug.broadphase) {
-      const ScreenPoint hub = camera.to_screen(t.centroid());
-      for (const std::uint32_t o : t.candidates) {
-        if (o >= obstacles.size()) continue;
-        const tire::Aabb& b = obstacles[o].box;
-        d.rect_outline(camera.to_screen(b.min), camera.to_screen(b.max), 3.0f, rgba(255, 140, 0));
-        d.line(hub, camera.to_screen((b.min + b.max) * 0.5), 1.0f, rgba(255, 140, 0));
-      }
-      for (const std::uint32_t p : t.prop_candidates) {
-        if (p >= props.size() || !props[p].alive) continue;
-        const tire::Aabb b = prop_bounds(props[p], world.rigid().current_pose(p));
-        d.rect_outline(camera.to_screen(b.min), camera.to_screen(b.max), 3.0f, rgba(230, 0, 230));
-        d.line(hub, camera.to_screen((b.min + b.max) * 0.5), 1.0f, rgba(230, 0, 230));
-      }
-      for (const tire::ContactPair& pair : t.pairs)
-        if (pair.particle < t.particles.x.size())
-          d.circle(camera.to_screen(t.particles.x[pair.particle]), 3.0f, rgba(230, 0, 230), 6);
-    }
-  }
-  if (debug.aabbs) {
-    for (std::uint32_t i = 0; i < props.size(); ++i) {
-      if (!props[i].alive) continue;
-      const tire::Aabb b = prop_bounds(props[i], session.interpolated_pose(i, alpha));
-      d.rect_outline(camera.to_screen(b.min), camera.to_screen(b.max), 1.5f, rgba(60, 230, 90));
-    }
-    for (const tire::Obstacle& o : obstacles)
-      d.rect_outline(camera.to_screen(o.box.min), camera.to_screen(o.box.max), 1.5f, rgba(60, 230, 90));
-  }
+  // What the engine shows of its own state (debug_draw_sdl.h).
+  SdlDebugDraw shapes(d, camera, session, alpha, positions_, shape_);
+  shapes.set_flags(debug_flags(debug));
+  world.debug_draw(shapes);
 }
 
 }  // namespace game

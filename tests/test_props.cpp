@@ -314,7 +314,7 @@ TEST_CASE("a kinematic path loops, ping-pongs, stops and reverses", "[unit][prop
   world.add_prop(p);
   const auto x = [&] {
     world.step({});
-    return world.rigid().props().front().body ? world.rigid().props().front().start_pose.position.x : 0.0;
+    return world.rigid().props().front().alive ? world.rigid().props().front().start_pose.position.x : 0.0;
   };
   double max_x = 0.0, min_x_after = 1.0;
   for (int i = 0; i < 60; ++i) max_x = std::max(max_x, x());

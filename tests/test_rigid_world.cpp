@@ -1,4 +1,5 @@
-// The broad phase: Box2D's tree answers which obstacles are near, in a stable order.
+// The broad phase: Box2D's tree answers which obstacles are near, in a stable order. A prop's state
+// as Box2D holds it, read without Box2D.
 #include <catch2/catch.hpp>
 #include <random>
 
@@ -28,4 +29,36 @@ TEST_CASE("the broad phase finds every overlapping obstacle and few others, sort
     }
     CHECK(found.size() <= overlapping + 4);  // only fattened-AABB near misses on top
   }
+}
+
+TEST_CASE("a prop's state is its Box2D body's, in the engine's types", "[unit][props]") {
+  RigidWorld rigid({0, -10});
+  PropSpec crate;
+  crate.name = "crate";
+  crate.type = PropType::dynamic_body;
+  crate.position = {1.0, 2.0};
+  crate.angle = 0.5;
+  crate.size = {0.4, 0.2};
+  crate.density = 50.0;
+  crate.velocity = {3.0, 0.0};
+  crate.angular_velocity = 2.0;
+  const std::uint32_t i = rigid.add_prop(crate);
+  PropSpec wall;
+  wall.type = PropType::static_body;
+  const std::uint32_t j = rigid.add_prop(wall);
+
+  const PropState s = rigid.prop_state(i);
+  CHECK(s.pose.position.x == Approx(1.0));
+  CHECK(s.pose.position.y == Approx(2.0));
+  CHECK(s.pose.angle == Approx(0.5));
+  CHECK(s.center.x == Approx(1.0));  // a box's centre of mass is its origin
+  CHECK(s.velocity.x == Approx(3.0));
+  CHECK(s.angular_velocity == Approx(2.0));
+  const double mass = 50.0 * 0.4 * 0.2;
+  CHECK(s.mass == Approx(mass));
+  CHECK(s.inertia == Approx(mass * (0.4 * 0.4 + 0.2 * 0.2) / 12.0));  // about the centre
+  CHECK(s.awake);
+  const PropState fixed = rigid.prop_state(j);
+  CHECK(fixed.mass == 0.0);
+  CHECK(fixed.inertia == 0.0);
 }

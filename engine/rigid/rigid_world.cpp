@@ -89,7 +89,7 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
   def.angle = static_cast<float>(spec.angle);
   def.linearVelocity = to_b2(spec.velocity);
   def.angularVelocity = static_cast<float>(spec.angular_velocity);
-  prop.body = world_->CreateBody(&def);
+  b2Body* body = world_->CreateBody(&def);
 
   b2FixtureDef fixture;
   fixture.density = static_cast<float>(spec.density);
@@ -121,19 +121,34 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
       fixture.shape = &chain;
       break;
   }
-  prop.body->CreateFixture(&fixture);
+  body->CreateFixture(&fixture);
   if (spec.type != PropType::static_body) ++moving_props_;
   if (spec.type == PropType::dynamic_body) ++dynamic_props_;
   props_.push_back(std::move(prop));
+  bodies_.push_back(body);
   return index;
 }
 
 Pose RigidWorld::current_pose(std::uint32_t i) const {
-  const b2Body& b = *props_[i].body;
+  const b2Body& b = *bodies_[i];
   return Pose::make(from_b2(b.GetPosition()), b.GetAngle());
 }
 
-Vec2 RigidWorld::current_velocity(std::uint32_t i) const { return from_b2(props_[i].body->GetLinearVelocity()); }
+Vec2 RigidWorld::current_velocity(std::uint32_t i) const { return from_b2(bodies_[i]->GetLinearVelocity()); }
+
+PropState RigidWorld::prop_state(std::uint32_t i) const {
+  const b2Body& b = *bodies_[i];
+  PropState s;
+  s.pose = Pose::make(from_b2(b.GetPosition()), b.GetAngle());
+  s.center = from_b2(b.GetWorldCenter());
+  s.velocity = from_b2(b.GetLinearVelocity());
+  s.angular_velocity = b.GetAngularVelocity();
+  s.mass = b.GetMass();
+  // GetInertia is about the body origin; the parallel-axis theorem gives it about the centre.
+  s.inertia = static_cast<double>(b.GetInertia()) - s.mass * length_squared(from_b2(b.GetLocalCenter()));
+  s.awake = b.IsAwake();
+  return s;
+}
 
 std::optional<std::uint32_t> RigidWorld::find_prop(std::string_view name) const {
   for (std::uint32_t i = 0; i < props_.size(); ++i)
@@ -145,8 +160,8 @@ bool RigidWorld::remove_prop(std::string_view name) {
   const auto i = find_prop(name);
   if (!i) return false;
   Prop& p = props_[*i];
-  world_->DestroyBody(p.body);
-  p.body = nullptr;
+  world_->DestroyBody(bodies_[*i]);
+  bodies_[*i] = nullptr;
   p.alive = false;
   if (p.spec.type != PropType::static_body) --moving_props_;
   if (p.spec.type == PropType::dynamic_body) --dynamic_props_;
@@ -201,7 +216,7 @@ void RigidWorld::set_gravity(Vec2 gravity) { world_->SetGravity(to_b2(gravity));
 void RigidWorld::apply_impulse_now(std::string_view name, Vec2 impulse) {
   const auto i = find_prop(name);
   if (!i || props_[*i].spec.type != PropType::dynamic_body) return;
-  props_[*i].body->ApplyLinearImpulseToCenter(to_b2(impulse), true);
+  bodies_[*i]->ApplyLinearImpulseToCenter(to_b2(impulse), true);
 }
 
 void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles,
@@ -221,13 +236,14 @@ void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles
   std::sort(props.begin(), props.end());
 }
 
-void RigidWorld::steer_along_path(Prop& p, double dt) {
+void RigidWorld::steer_along_path(std::uint32_t i, double dt) {
+  Prop& p = props_[i];
   const KinematicPath& path = p.spec.path;
   if (path.waypoints.empty()) return;
   Vec2 velocity;
   if (path.running) {
     // Head for the next waypoint at the path's speed, arriving exactly rather than overshooting.
-    const Vec2 to_target = path.waypoints[p.next_waypoint] - from_b2(p.body->GetPosition());
+    const Vec2 to_target = path.waypoints[p.next_waypoint] - from_b2(bodies_[i]->GetPosition());
     const double distance = length(to_target);
     if (distance <= path.speed * dt) {
       velocity = to_target / dt;
@@ -236,17 +252,18 @@ void RigidWorld::steer_along_path(Prop& p, double dt) {
       velocity = to_target * (path.speed / distance);
     }
   }
-  p.body->SetLinearVelocity(to_b2(velocity));
+  bodies_[i]->SetLinearVelocity(to_b2(velocity));
 }
 
 void RigidWorld::begin_tick(double dt) {
-  for (Prop& p : props_) {
+  for (std::uint32_t i = 0; i < props_.size(); ++i) {
+    Prop& p = props_[i];
     if (!p.alive) continue;
     if (p.spec.type == PropType::kinematic_body) {
-      steer_along_path(p, dt);
-      p.body->SetAngularVelocity(static_cast<float>(p.spec.angular_velocity));
+      steer_along_path(i, dt);
+      bodies_[i]->SetAngularVelocity(static_cast<float>(p.spec.angular_velocity));
     }
-    const b2Body& b = *p.body;
+    const b2Body& b = *bodies_[i];
     p.start_pose = Pose::make(from_b2(b.GetPosition()), b.GetAngle());
     p.local_center = from_b2(b.GetLocalCenter());
     p.start_center = from_b2(b.GetWorldCenter());
@@ -289,19 +306,21 @@ void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t
 }
 
 void RigidWorld::end_tick(double dt) {
-  for (Prop& p : props_) {
+  for (std::uint32_t i = 0; i < props_.size(); ++i) {
+    const Prop& p = props_[i];
     if (!p.alive || !p.is_dynamic() || (p.impulse == Vec2{} && p.angular_impulse == 0.0)) continue;
-    p.body->ApplyLinearImpulseToCenter(to_b2(p.impulse), true);
-    p.body->ApplyAngularImpulse(static_cast<float>(p.angular_impulse), true);
+    bodies_[i]->ApplyLinearImpulseToCenter(to_b2(p.impulse), true);
+    bodies_[i]->ApplyAngularImpulse(static_cast<float>(p.angular_impulse), true);
   }
   if (needs_stepping()) world_->Step(static_cast<float>(dt), kBox2dVelocityIterations, kBox2dPositionIterations);
 }
 
 void RigidWorld::hash_into(StateHash& h) const {
-  for (const Prop& p : props_) {
+  for (std::uint32_t i = 0; i < props_.size(); ++i) {
+    const Prop& p = props_[i];
     h.add(p.alive);
     if (!p.alive) continue;
-    const b2Body& b = *p.body;
+    const b2Body& b = *bodies_[i];
     h.add(b.GetPosition());
     h.add(b.GetAngle());
     h.add(b.GetLinearVelocity());

@@ -22,8 +22,6 @@
 // around its worst moments.
 #pragma once
 
-#include <box2d/box2d.h>
-
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -61,24 +59,22 @@ inline double tire_energy(const Tire& t, Vec2 gravity, double ground_y = kGround
   return e;
 }
 
-// A live dynamic prop's kinetic and potential energy, read from Box2D (between ticks).
-inline double prop_energy(const Prop& p, Vec2 gravity, double ground_y = kGround) {
-  if (!p.alive || p.body == nullptr || p.spec.type != PropType::dynamic_body) return 0.0;
-  const b2Body& b = *p.body;
-  const double mass = b.GetMass();
-  if (mass <= 0.0) return 0.0;
-  const Vec2 c{b.GetWorldCenter().x, b.GetWorldCenter().y};
-  const Vec2 local{b.GetLocalCenter().x, b.GetLocalCenter().y};
-  const double inertia = static_cast<double>(b.GetInertia()) - mass * length_squared(local);  // about the centre
-  const Vec2 v{b.GetLinearVelocity().x, b.GetLinearVelocity().y};
-  const double w = b.GetAngularVelocity();
-  return 0.5 * mass * length_squared(v) + 0.5 * inertia * w * w - mass * dot(gravity, c - Vec2{0.0, ground_y});
+// Live dynamic prop i's kinetic and potential energy, as Box2D holds it (between ticks).
+inline double prop_energy(const RigidWorld& rigid, std::uint32_t i, Vec2 gravity, double ground_y = kGround) {
+  const Prop& p = rigid.props()[i];
+  if (!p.alive || p.spec.type != PropType::dynamic_body) return 0.0;
+  const PropState s = rigid.prop_state(i);
+  if (s.mass <= 0.0) return 0.0;
+  const double w = s.angular_velocity;
+  return 0.5 * s.mass * length_squared(s.velocity) + 0.5 * s.inertia * w * w -
+         s.mass * dot(gravity, s.center - Vec2{0.0, ground_y});
 }
 
 inline double world_energy(const World& world, double ground_y = kGround) {
   double e = 0.0;
   for (const Tire& t : world.tires()) e += tire_energy(t, world.gravity(), ground_y);
-  for (const Prop& p : world.rigid().props()) e += prop_energy(p, world.gravity(), ground_y);
+  for (std::uint32_t i = 0; i < world.rigid().props().size(); ++i)
+    e += prop_energy(world.rigid(), i, world.gravity(), ground_y);
   return e;
 }
 
@@ -108,11 +104,12 @@ inline double max_strain(const Tire& t, double max_compliance = kInf) {
 }
 
 inline bool props_finite(const World& world) {
-  for (const Prop& p : world.rigid().props()) {
-    if (!p.alive || p.body == nullptr) continue;
-    const b2Vec2 x = p.body->GetPosition(), v = p.body->GetLinearVelocity();
+  for (std::uint32_t i = 0; i < world.rigid().props().size(); ++i) {
+    if (!world.rigid().props()[i].alive) continue;
+    const PropState s = world.rigid().prop_state(i);
+    const Vec2 x = s.pose.position, v = s.velocity;
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(v.x) || !std::isfinite(v.y) ||
-        !std::isfinite(p.body->GetAngle()) || !std::isfinite(p.body->GetAngularVelocity()))
+        !std::isfinite(s.pose.angle) || !std::isfinite(s.angular_velocity))
       return false;
   }
   return true;
@@ -195,7 +192,7 @@ class Probe {
     Sample s{world_.tick(), world_.time(), world_energy(world_), kInf, -kInf, 0.0, 0.0, props_finite(world_)};
     for (std::uint32_t i = 0; i < world_.rigid().props().size(); ++i) {
       const Prop& p = world_.rigid().props()[i];
-      if (p.alive && p.body != nullptr && p.spec.type == PropType::dynamic_body)
+      if (p.alive && p.spec.type == PropType::dynamic_body)
         s.prop_speed = std::max(s.prop_speed, length(world_.rigid().current_velocity(i)));
     }
     for (const Tire& t : world_.tires()) {

@@ -48,7 +48,7 @@ void crush_and_release(const std::string& name, const TireSpec& tire) {
   crush.judge();
 
   // What the tire may have once the box is gone: the crush budget less the box's own energy now.
-  const double carried = crush.budget() - prop_energy(world.rigid().props()[0], world.gravity());
+  const double carried = crush.budget() - prop_energy(world.rigid(), 0, world.gravity());
   REQUIRE(world.rigid().remove_prop("crusher"));
   Probe recover(name + ": released from the box", world, AreaBounds{0.2, 3.0, world.time() + 1.0}, true);
   recover.cap_budget(carried);

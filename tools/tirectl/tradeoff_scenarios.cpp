@@ -1,7 +1,5 @@
 #include "tradeoff_scenarios.h"
 
-#include <box2d/box2d.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -207,17 +205,14 @@ double mechanical_energy(const tire::World& world, double datum_y) {
     for (std::size_t i = 0; i < t.particles.size(); ++i)
       e += m * (0.5 * tire::length_squared(t.particles.v[i]) + g * (t.particles.x[i].y - datum_y));
   }
-  for (const tire::Prop& p : world.rigid().props()) {
+  const tire::RigidWorld& rigid = world.rigid();
+  for (std::uint32_t i = 0; i < rigid.props().size(); ++i) {
+    const tire::Prop& p = rigid.props()[i];
     if (!p.alive || p.spec.type != tire::PropType::dynamic_body) continue;
-    const b2Body& b = *p.body;
-    const double mass = b.GetMass();
-    const b2Vec2 local = b.GetLocalCenter();
-    const double inertia_center = b.GetInertia() - mass * static_cast<double>(b2Dot(local, local));
-    const b2Vec2 v = b.GetLinearVelocity();
-    const double w = b.GetAngularVelocity();
-    const double vx = v.x, vy = v.y;
-    e += 0.5 * mass * (vx * vx + vy * vy) + 0.5 * inertia_center * w * w +
-         mass * g * (static_cast<double>(b.GetWorldCenter().y) - datum_y);
+    const tire::PropState s = rigid.prop_state(i);
+    const double w = s.angular_velocity;
+    e += 0.5 * s.mass * tire::length_squared(s.velocity) + 0.5 * s.inertia * w * w +
+         s.mass * g * (s.center.y - datum_y);
   }
   return e;
 }

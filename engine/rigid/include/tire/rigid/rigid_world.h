@@ -28,8 +28,7 @@ namespace tire {
 
 struct Prop {
   PropSpec spec;
-  PropGeometry geometry;
-  b2Body* body = nullptr;
+  PropGeometry geometry;  // the shape the tires collide with; its Box2D body is RigidWorld's own
   bool alive = true;
 
   // Tick state (doubles, read from Box2D at the start of the tick).
@@ -71,6 +70,18 @@ struct Prop {
   bool is_dynamic() const { return inverse_mass > 0.0; }
 };
 
+// A live prop as Box2D holds it between ticks (its floats widened to double): what a test or tool
+// measures (energy, finiteness), without reaching into Box2D.
+struct PropState {
+  Pose pose;                      // body origin and angle
+  Vec2 center;                    // centre of mass, world
+  Vec2 velocity;                  // of the centre of mass (m/s)
+  double angular_velocity = 0.0;  // rad/s, counter-clockwise
+  double mass = 0.0;              // kg; 0 for a static or kinematic prop
+  double inertia = 0.0;           // about the centre of mass (kg m²); 0 for a static or kinematic prop
+  bool awake = false;             // Box2D has not put it to sleep
+};
+
 class RigidWorld {
  public:
   explicit RigidWorld(Vec2 gravity);
@@ -92,6 +103,8 @@ class RigidWorld {
   // A live prop's pose and velocity now (Box2D's, between ticks).
   Pose current_pose(std::uint32_t i) const;
   Vec2 current_velocity(std::uint32_t i) const;
+  // All of a live prop's state now (between ticks).
+  PropState prop_state(std::uint32_t i) const;
   bool path_command(std::string_view name, PathCommand command);
 
   void set_gravity(Vec2 gravity);
@@ -119,12 +132,14 @@ class RigidWorld {
   void hash_into(StateHash& h) const;
 
  private:
-  void steer_along_path(Prop& p, double dt);
+  void steer_along_path(std::uint32_t i, double dt);
 
+  // Box2D stays behind this wall (the layer links it privately): its types are only named here.
   std::unique_ptr<b2World> world_;
   b2Body* ground_ = nullptr;  // carries every obstacle fixture
   std::vector<Obstacle> obstacles_;
   std::vector<Prop> props_;
+  std::vector<b2Body*> bodies_;  // props_[i]'s Box2D body; null once the prop is removed
   std::size_t moving_props_ = 0;
   std::size_t dynamic_props_ = 0;
 };

@@ -20,6 +20,8 @@
 
 namespace tire {
 
+class DebugDraw;
+
 // The player's input for one tick.
 struct TickInput {
   double steer = 0.0;  // [-1, 1]
@@ -66,6 +68,10 @@ class World {
   unsigned threads() const { return threads_; }
   // Threads a step of the current scene actually uses: one below kParallelMinTires tires.
   unsigned threads_in_use() const;
+
+  // Walks the tires, props and obstacles and calls `draw` back with what its flags ask for, as
+  // b2World::DebugDraw does (debug_draw.h; defined in debug_draw.cpp). Between ticks.
+  void debug_draw(DebugDraw& draw) const;
 
   const std::vector<Tire>& tires() const { return tires_; }
   std::size_t tire_pair_count() const { return tire_pairs_.size(); }  // broad-phase pairs, last tick
