@@ -10,14 +10,18 @@
 // constraint damping of XPBD eq. 26 for the tire's Kelvin–Voigt time τ (material_damping). K is
 // the mass matrix plus the stiffness of every distance constraint: with the unknowns ordered
 // segment by segment it is block tridiagonal with a cyclic wrap (CyclicBlockCholesky).
-// The other constraints keep their multipliers μ as unknowns (a small dense "capacitance" system,
-// one row each): the two area constraints (their gradients are dense over a ring), the mouse grab,
-// and each contact's normal (α = 0, μ ≥ 0) and static-friction row (α = 0, |μ_t| ≤ μ_s μ_n, as in
-// Müller et al. 2020, Sec. 3.5; kinetic friction stays in the velocity pass, Sec. 3.6):
-//     (G K⁻¹ Gᵀ + α̃_G/(1 + γ) + D) μ = b − G K⁻¹ f,
-// D being what a dynamic prop gives way (its generalised inverse mass, Müller 2020 eq. 2–3).
-// Which contacts are in the system is found by active-set passes. Each iteration solves for the
-// multipliers' totals, not increments, so nothing is carried from one iteration to the next but x.
+// Contacts are rows of one particle each, so they go into K too, as constraints of compliance
+// SolverConfig::rigid_compliance (10 nm under a tire's weight): the normal C = n·x − plane with
+// μ_n ≥ 0, and static friction t·(x − xₙ − surface motion) = 0 while |μ_t| ≤ μ_s μ_n (Müller et al.
+// 2020, Sec. 3.5; kinetic friction stays in the velocity pass, Sec. 3.6). Against a dynamic prop a
+// contact's compliance also holds what the prop gives way, its generalised inverse mass (Müller
+// 2020 eq. 2–3) scaled by its mobility, as the Gauss–Seidel contacts take it. Which contacts are in
+// is found by active-set passes, one factorisation each.
+// The two area constraints (their gradients are dense over a ring) and the mouse grab keep their
+// multipliers μ as unknowns, a dense "capacitance" system of at most three rows:
+//     (G K⁻¹ Gᵀ + α̃_G/(1 + γ)) μ = b − G K⁻¹ f,   then Δx = K⁻¹ (f + Gᵀ μ).
+// Each iteration solves for the multipliers' totals, not increments, so nothing is carried from one
+// iteration to the next but x and which contacts hold.
 #pragma once
 
 #include <atomic>
@@ -35,11 +39,6 @@ struct SubstepContext;
 // Scratch for solving one tire, reused tire after tire: sized by reserve(), never allocated in a step.
 class GlobalSolver {
  public:
-  // Contacts (particles touching an obstacle or a prop) a tire may have in one substep's system;
-  // further penetrating particles wait for the next substep (a crushed tire of 64 segments has all
-  // of its tread down).
-  static constexpr std::uint32_t kMaxContacts = 64;
-
   // Room for tires of up to `segments` segments (allocates).
   void reserve(std::uint32_t segments);
   std::uint32_t capacity() const { return segments_; }
@@ -51,26 +50,22 @@ class GlobalSolver {
 
   // Work done by the last solve(), for tests and the bench.
   struct Counts {
-    std::uint32_t rows = 0;      // dense rows made (areas, grab, contact normals and friction)
-    std::uint32_t passes = 0;    // active-set passes
-    std::uint32_t contacts = 0;  // contacts in the system at the end
+    std::uint32_t factorisations = 0;  // of K: one per active-set pass
+    std::uint32_t contacts = 0;        // contacts in the system at the end
   };
   const Counts& counts() const { return counts_; }
 
  private:
-  enum class RowKind : std::uint8_t { tread_area, rim_area, grab, normal, friction };
+  // A row of the capacitance system: an area constraint or the grab.
   struct Row {
-    explicit Row(RowKind k) : kind(k) {}
-    RowKind kind;
-    bool active = true;
-    std::uint32_t particle = 0;  // grab, normal, friction
-    std::int32_t contact = -1;   // normal, friction: index into contacts_
-    Vec2 direction;              // normal, friction, grab: the gradient at the particle
-    double alpha_tilde = 0.0;    // α̃/(1 + γ)
-    double b = 0.0;              // the row's right-hand side: −C (and its damping term)
-    double yf = 0.0;             // (L⁻¹ g)·(L⁻¹ f)
-    double mu = 0.0;             // its multiplier, from the last pass
+    double alpha_tilde = 0.0;  // α̃/(1 + γ)
+    double b = 0.0;            // the right-hand side: −(C + γ ∇C·(x − xₙ))/(1 + γ)
+    double yf = 0.0;           // (L⁻¹ g)·(L⁻¹ f)
+    double mu = 0.0;           // its multiplier, from the last pass
   };
+  // A particle against an obstacle or a prop. Its normal (and static friction) are rows of
+  // compliance rigid_compliance, plus what a dynamic prop gives way, taken into K itself: each
+  // touches one particle, so K keeps its shape.
   struct Contact {
     std::uint32_t particle = 0;
     Vec2 normal;                // unit, out of the surface
@@ -80,45 +75,48 @@ class GlobalSolver {
     std::int32_t prop = -1;     // the prop, or −1 for an obstacle
     double mu_static = 0.0;
     double mu_kinetic = 0.0;
-    // For a dynamic prop: the arm from its centre of mass and its mobility along ±n and ±t.
-    Vec2 arm;
-    double mobility_n = 0.0;
-    double mobility_t = 0.0;
-    double inverse_mass = 0.0;
-    double inverse_inertia = 0.0;
-    std::int32_t normal_row = -1;
-    std::int32_t friction_row = -1;
+    double stiffness_n = 0.0;   // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
+    double stiffness_t = 0.0;   // the same along the tangent
+    bool normal_active = true;
+    bool friction_active = true;
+    double mu_n = 0.0;          // multipliers from the last pass (kg·m: force × h²)
+    double mu_t = 0.0;
   };
 
   void assemble(const Tire& t, const SubstepContext& ctx, double gamma);
-  std::uint32_t add_row(const Tire& t, const Row& row, const double* gradient);
-  void add_ring_area_row(const Tire& t, const SubstepContext& ctx, RowKind kind, double gamma);
-  void add_contact_rows(const Tire& t, std::int32_t contact, bool friction);
-  // Finds the particles of `t` that penetrate a surface at positions x + dx (dx may be null) and
-  // have no contact yet; adds a contact and its rows for each. True when any was added.
+  void add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma);
+  double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
+  Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal, double plane,
+                       const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity) const;
+  // Finds the particles of `t` that penetrate a surface at x + dx (dx null: at x) and have no
+  // contact yet, and adds a contact for each. True when any was added.
   bool find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx);
-  // Solves the capacitance system on the active rows; sets each row's mu and dx_.
-  void solve_active(const Tire& t);
-  double row_coupling(const Row& a, const Row& b) const;  // D_ab
+  // One active-set pass: K with the active contacts, factored; the capacitance rows solved; Δx and
+  // each contact's multipliers. False when K could not be factored (not finite).
+  bool solve_pass(const Tire& t);
+  // Drops contacts that pull and friction that cannot hold; takes back released contacts that Δx
+  // would push into their surface. True when anything changed.
+  bool update_active_set(const Tire& t, const SubstepContext& ctx);
   void write_back(Tire& t, const SubstepContext& ctx);
 
+  static constexpr std::size_t kMaxRows = 3;  // the two areas and the grab
+
   std::uint32_t segments_ = 0;
-  std::uint32_t max_rows_ = 0;
-  std::size_t stride_ = 0;  // 4 × capacity: the length of one y column
+  std::size_t stride_ = 0;  // 4 × capacity: the length of one column
   CyclicBlockCholesky k_;
-  std::vector<double> f_;   // f, then L⁻¹ f
-  std::vector<double> dx_;  // the last pass's Δx, in block order
-  std::vector<double> work_;
+  std::vector<Block4> base_diagonal_;  // K without the contacts
+  std::vector<Block4> base_coupling_;
+  std::vector<double> base_f_;  // f without the contacts
+  std::vector<double> f_;       // f with them, then L⁻¹ f
+  std::vector<double> dx_;      // the last pass's Δx, in block order
   std::vector<Row> rows_;
-  std::vector<double> y_;     // column r: L⁻¹ g_r
-  std::vector<double> gram_;  // (L⁻¹ g_a)·(L⁻¹ g_b), max_rows_ × max_rows_
-  std::vector<double> s_;     // the active rows' capacitance matrix, then its Cholesky factor
-  std::vector<double> rhs_;
-  std::vector<std::uint32_t> active_;
+  std::vector<double> g_;   // column r: the gradient g_r
+  std::vector<double> y_;   // column r: L⁻¹ g_r
   std::vector<Contact> contacts_;
-  std::vector<double> depth_;             // find_contacts: the depth of each new contact
   std::vector<std::int32_t> contact_of_;  // per particle: its contact, or −1
+  std::vector<double> depth_;             // find_contacts: the depth of each contact found
   std::vector<Vec2> gradient_;            // a ring's area gradient
+  double rigid_alpha_tilde_ = 0.0;        // rigid_compliance / h²
   Counts counts_;
 };
 
