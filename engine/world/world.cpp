@@ -273,14 +273,15 @@ void World::update_velocities(const SubstepContext& ctx) {
 // other run in one sweep over the tires, so that a big scene, memory-bound, reads each tire's data
 // once per substep instead of three times. It gives the plain schedule's bits because:
 // - a sweep runs each tire's phases in the plain order on the same data, and a tire phase touches
-//   only its own tire (props are read only; the impulses owed to them wait in the tire), so when
-//   another tire's phases run in between changes nothing;
+//   only its own tire (props are read only; the impulses owed to them wait in the tire), so whether
+//   other tires' phases run in between makes no difference;
 // - nothing else happens between two phases fused on a tire. Between a prediction and its first
-//   iteration, the plain schedule does nothing. Between a velocity pass and the next prediction it
-//   hands friction's impulses to the props, and a dynamic prop feels them at once (its predicted
-//   pose, which the next narrow phase reads, moves with them): so that pair is fused only when no
-//   prop takes impulses (no live dynamic prop: no contact then owes one, and the hand-over is
-//   empty). Otherwise the velocity pass keeps its own sweep, and its hand-over its place.
+//   iteration, the plain schedule does nothing either. Between a velocity pass and the next
+//   prediction it hands friction's impulses to the props, and a prop free to move feels them at
+//   once (its velocity changes, and with it the predicted pose the next narrow phase reads): so
+//   that pair is fused only when no prop takes impulses (no live dynamic prop: no contact owes one,
+//   and the hand-over is empty). Otherwise the velocity pass keeps its own sweep, and its hand-over
+//   its place. (tests/test_step_schedule.cpp has the case that tells: a crate lying on a tire.)
 void World::fused_substeps(SubstepContext ctx) {
   const bool carry_velocity_pass = !rigid_.takes_impulses();
   SubstepContext previous = ctx;
