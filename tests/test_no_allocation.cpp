@@ -284,8 +284,11 @@ TEST_CASE("the allocation counters see aligned new, nothrow new, arrays and mall
 }
 
 TEST_CASE("stepping a world does not allocate", "[unit][performance]") {
+  const StepSchedule schedule = GENERATE(StepSchedule::fused, StepSchedule::plain);
+  CAPTURE(schedule == StepSchedule::fused);
   SolverConfig config;
   World world(config, {0, -9.81});
+  world.set_schedule(schedule);
   world.add_obstacle({{{-100, -1}, {100, 0}}});
   for (int i = 0; i < 20; ++i) world.add_obstacle({{{3.0 * i, 0}, {3.0 * i + 1, 0.3}}});
   for (int i = 0; i < 4; ++i) world.add_tire(tire_at({1.5 * i, 0.6 + i}));
@@ -298,7 +301,10 @@ TEST_CASE("stepping a world does not allocate", "[unit][performance]") {
 TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][performance]") {
   // The parallel path: tire pairs, their colours, the worker pool, and crates taking impulses
   // (Box2D steps them: its contacts come and go through its own allocators, over malloc).
+  const StepSchedule schedule = GENERATE(StepSchedule::fused, StepSchedule::plain);
+  CAPTURE(schedule == StepSchedule::fused);
   World world(SolverConfig{}, {0, -9.81});
+  world.set_schedule(schedule);
   world.set_threads(2);
   world.add_obstacle({{{-1, -1}, {13, 0}}});
   world.add_obstacle({{{-1, 0}, {0, 50}}});

@@ -67,6 +67,9 @@ tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --steps 50
 tirectl_test("bench counts the contacts and tire pairs of a pile" 0 ARGS bench --scene pile-100 --threads 2 --steps 3 --warmup 10
   STDOUT "\npile-100,100,5600,[1-9][0-9]*,[1-9][0-9]*,2,28,8,1,3,")
 tirectl_test("bench refuses an unknown scene" 2 ARGS bench --scene pile-7 STDERR "unknown scene \"pile-7\"")
+tirectl_test("bench steps with the plain schedule when asked" 0 ARGS bench --scene pile-10 --schedule plain --steps 3 --warmup 2
+  STDOUT "\npile-10,10,560,")
+tirectl_test("bench refuses an unknown schedule" 2 ARGS bench --scene pile-10 --schedule odd STDERR "--schedule: odd not in \\{fused,plain\\}")
 
 # Every shipped level validates, and can be completed: tirectl plays it with fixed inputs until the
 # script says won. (Levels that need steering choreography are completed by replays instead.)

@@ -197,6 +197,11 @@ const Tire* World::player() const {
   return nullptr;
 }
 
+// One tick, as Macklin et al. 2019, "Small Steps in Physics Simulation", Algorithm 1 writes it:
+// collision detection once per tick, then n substeps of h = Δt/n, each of which predicts the
+// positions, solves them and updates the velocities from them. Each tire's share of a phase is in
+// tire/tire_solver.cpp (begin_substep, solve_iteration, end_substep, one tire each); the world adds
+// the props around the substeps and the contacts between tires within them.
 void World::step(const TickInput& input) {
   TIRE_ASSERT(config_.substeps >= 1 && config_.iterations >= 1, "fewer than one substep or iteration a tick");
   TIRE_ASSERT(config_.dt > 0.0 && std::isfinite(config_.dt), "the tick is not a positive length of time");
@@ -206,61 +211,115 @@ void World::step(const TickInput& input) {
       p->control.jump = input.jump;
     }
   }
+
+  // Once per tick, before the substeps (the paper detects collisions once per frame, not per
+  // substep): Box2D's props read and kinematic ones steered; each tire's broad phase against
+  // obstacles and props, and its jump; the broad phase between tires (a lone tire skips it), its
+  // pairs coloured for the parallel solve.
   rigid_.begin_tick(config_.dt);
   sweep_tires([&](Tire& t) { begin_tick(t, config_, rigid_); });
-  // Tire–tire contacts only when there is more than one tire: a lone tire skips the pass.
   tire_pairs_.clear();
   if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
   color_pairs();
+
   const double h = config_.dt / config_.substeps;
   SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty(), &global_};
-  const auto hand_over_impulses = [&] {
-    for (Tire& t : tires_) apply_prop_impulses(t, rigid_);
-  };
-  const auto solve_tire_pairs = [&] {
-    for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
-      const TirePair* first = colored_pairs_.data() + color_begin_[c];
-      auto solve = [&](std::size_t b, std::size_t e) {
-        for (std::size_t k = b; k < e; ++k)
-          solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
-      };
-      const std::size_t count = color_begin_[c + 1] - color_begin_[c];
-      if (c < kColors) for_tires(count, solve);
-      else solve(0, count);  // the overflow colour: its pairs may share a tire
-    }
-  };
-  // Each tire's velocity pass of one substep runs in the same sweep over the tires as its prediction
-  // and first iteration of the next, so its data is read from memory once per substep, not three
-  // times. That is exact when no tire can push a prop: the impulses handed over between the two
-  // (which a free prop feels at once) are then always none. With dynamic props, the velocity pass
-  // and the hand-over keep their own place.
-  const bool fuse_substeps = !rigid_.takes_impulses();
-  const auto end_substeps = [&](const SubstepContext& previous) {
-    sweep_tires([&](Tire& t) { end_substep(t, previous); });
-    hand_over_impulses();
-  };
-  for (int s = 0; s < config_.substeps; ++s) {
-    const SubstepContext previous = ctx;
-    ctx.time = s * h;
-    const bool end_previous_here = s > 0 && fuse_substeps;
-    if (s > 0 && !fuse_substeps) end_substeps(previous);
-    sweep_tires([&](Tire& t) {
-      if (end_previous_here) end_substep(t, previous);
-      begin_substep(t, ctx);
-      solve_iteration(t, ctx, config_.iterations == 1);
-    });
-    hand_over_impulses();
-    solve_tire_pairs();
-    for (int it = 1; it < config_.iterations; ++it) {
-      sweep_tires([&](Tire& t) { solve_iteration(t, ctx, it + 1 == config_.iterations); });
-      hand_over_impulses();
-      solve_tire_pairs();
+  if (schedule_ == StepSchedule::fused) {
+    fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
+  } else {
+    for (int s = 0; s < config_.substeps; ++s) {
+      ctx.time = s * h;
+      // Predict: v ← v + h f_ext/m;  x_prev ← x;  x ← x + h v.
+      predict(ctx);
+      // Solve positions: constraints and contacts (the paper takes one iteration a substep).
+      for (int it = 0; it < config_.iterations; ++it) solve_positions(ctx, it);
+      // Update velocities: v ← (x − x_prev)/h; then the velocity-level pass (friction, damping).
+      update_velocities(ctx);
     }
   }
-  end_substeps(ctx);
+
+  // After the substeps: the impulses the tires gave props go to Box2D, which steps them; a tire
+  // that diverged is reset.
   rigid_.end_tick(config_.dt);
   for (Tire& t : tires_) guard_divergence(t);
   ++tick_;
+}
+
+// Predict (begin_substep): v ← v + h f_ext/m (gravity, and steering's torque about the hub), the
+// anti-tunneling clamp, x_prev ← x, x ← x + h v; then the narrow phase along each particle's path
+// and every λ ← 0.
+void World::predict(const SubstepContext& ctx) {
+  sweep_tires([&](Tire& t) { begin_substep(t, ctx); });
+}
+
+// One iteration of the position solve: each tire's constraints and its contacts with obstacles and
+// props (solve_iteration); the impulses those contacts owe dynamic props handed over, so that a
+// pushed crate gives way in the next; then the contacts between tires.
+void World::solve_positions(const SubstepContext& ctx, int iteration) {
+  const bool last = iteration + 1 == config_.iterations;
+  sweep_tires([&](Tire& t) { solve_iteration(t, ctx, last); });
+  hand_over_impulses();
+  solve_tire_pairs();
+}
+
+// Update velocities (end_substep): v ← (x − x_prev)/h, then the velocity-level pass: kinetic
+// friction, material and deviation damping, rolling resistance, the speed cap. Friction's impulses
+// on dynamic props are handed over.
+void World::update_velocities(const SubstepContext& ctx) {
+  sweep_tires([&](Tire& t) { end_substep(t, ctx); });
+  hand_over_impulses();
+}
+
+// The fused schedule (StepSchedule::fused): step()'s substeps with the tire phases that follow each
+// other run in one sweep over the tires, so that a big scene, memory-bound, reads each tire's data
+// once per substep instead of three times. It gives the plain schedule's bits because:
+// - a sweep runs each tire's phases in the plain order on the same data, and a tire phase touches
+//   only its own tire (props are read only; the impulses owed to them wait in the tire), so whether
+//   other tires' phases run in between makes no difference;
+// - nothing else happens between two phases fused on a tire. Between a prediction and its first
+//   iteration, the plain schedule does nothing either. Between a velocity pass and the next
+//   prediction it hands friction's impulses to the props, and a prop free to move feels them at
+//   once (its velocity changes, and with it the predicted pose the next narrow phase reads): so
+//   that pair is fused only when no prop takes impulses (no live dynamic prop: no contact owes one,
+//   and the hand-over is empty). Otherwise the velocity pass keeps its own sweep, and its hand-over
+//   its place. (tests/test_step_schedule.cpp has the case that tells: a crate lying on a tire.)
+void World::fused_substeps(SubstepContext ctx) {
+  const bool carry_velocity_pass = !rigid_.takes_impulses();
+  SubstepContext previous = ctx;
+  for (int s = 0; s < config_.substeps; ++s) {
+    ctx.time = s * ctx.h;
+    const bool velocity_pass_here = s > 0 && carry_velocity_pass;
+    if (s > 0 && !carry_velocity_pass) update_velocities(previous);
+    sweep_tires([&](Tire& t) {
+      if (velocity_pass_here) end_substep(t, previous);  // the previous substep's update velocities
+      begin_substep(t, ctx);                             // predict
+      solve_iteration(t, ctx, config_.iterations == 1);  // solve positions, first iteration
+    });
+    hand_over_impulses();
+    solve_tire_pairs();
+    for (int it = 1; it < config_.iterations; ++it) solve_positions(ctx, it);
+    previous = ctx;
+  }
+  update_velocities(previous);  // the last substep's
+}
+
+void World::hand_over_impulses() {
+  for (Tire& t : tires_) apply_prop_impulses(t, rigid_);
+}
+
+// The contacts between tires, a colour at a time; a colour's pairs share no tire, so they are solved
+// in parallel. The colours go in the same order whatever the thread count.
+void World::solve_tire_pairs() {
+  for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
+    const TirePair* first = colored_pairs_.data() + color_begin_[c];
+    auto solve = [&](std::size_t b, std::size_t e) {
+      for (std::size_t k = b; k < e; ++k)
+        solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
+    };
+    const std::size_t count = color_begin_[c + 1] - color_begin_[c];
+    if (c < kColors) for_tires(count, solve);
+    else solve(0, count);  // the overflow colour: its pairs may share a tire
+  }
 }
 
 namespace {

@@ -29,6 +29,7 @@ class Steppable {
   virtual const tire::SolverConfig& config() const = 0;
   virtual void set_threads(unsigned threads) = 0;
   virtual unsigned threads() const = 0;
+  virtual void set_schedule(tire::StepSchedule schedule) = 0;
   // Particles in contact after the last step (with a surface or another tire), and candidate
   // tire pairs from the broad phase.
   virtual std::size_t contacts() const = 0;
@@ -43,6 +44,7 @@ class WorldScene final : public Steppable {
   std::size_t tire_count() const override { return world_->tires().size(); }
   const tire::SolverConfig& config() const override { return world_->config(); }
   void set_threads(unsigned threads) override { world_->set_threads(threads); }
+  void set_schedule(tire::StepSchedule schedule) override { world_->set_schedule(schedule); }
   unsigned threads() const override { return world_->threads_in_use(); }
   std::size_t contacts() const override {
     std::size_t count = 0;
@@ -74,6 +76,7 @@ class BareTireScene final : public Steppable {
   std::size_t tire_count() const override { return 1; }
   const tire::SolverConfig& config() const override { return config_; }
   void set_threads(unsigned) override {}
+  void set_schedule(tire::StepSchedule) override {}  // no World: the plain substep() loop already
   unsigned threads() const override { return 1; }
   std::size_t contacts() const override { return tire_.touching_particles(); }
   std::size_t tire_pairs() const override { return 0; }
@@ -215,6 +218,7 @@ int bench(const BenchOptions& options) {
       continue;
     auto world = scene.build();
     if (options.threads > 0) world->set_threads(static_cast<unsigned>(options.threads));
+    world->set_schedule(options.schedule == "plain" ? tire::StepSchedule::plain : tire::StepSchedule::fused);
     for (int i = 0; i < options.warmup; ++i) world->step(scene.input);  // settle and warm the caches
     // Each step timed on its own: the median is the typical step, the p99 the hitches a player sees.
     // Either exactly --steps steps, or at least 30 and until --seconds have passed.

@@ -44,6 +44,7 @@ struct BenchOptions {
   double seconds = 2.0;   // timing budget per scene when `steps` is 0
   int warmup = 120;       // untimed steps first: the pile settles, caches warm
   int report_every = 0;   // >0: every this many steps, a progress line on stderr (time, RSS, heap)
+  std::string schedule = "fused";  // World::step's schedule: fused (the default) or plain
 };
 int bench(const BenchOptions& options);
 

@@ -60,6 +60,12 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--report-every", bench.report_every,
                         "Every N timed steps, print the recent median and p99, RSS and heap in use to stderr")
       ->transform(integer_in({1, 1e7}));
+  bench_cmd
+      ->add_option("--schedule", bench.schedule,
+                   "World::step's phase order: fused (the default) or plain (Small Steps' Algorithm 1 "
+                   "a phase at a time; the same results, for timing what the fusion saves)")
+      ->check(CLI::IsMember({"fused", "plain"}))
+      ->capture_default_str();
 
   tirectl::TradeoffOptions tradeoff;
   CLI::App* tradeoff_cmd = tirectl::add_tradeoff_command(app, tradeoff);

@@ -21,11 +21,25 @@
 namespace tire {
 
 class DebugDraw;
+struct SubstepContext;  // tire/tire/tire_solver.h
 
 // The player's input for one tick.
 struct TickInput {
   double steer = 0.0;  // [-1, 1]
   bool jump = false;
+};
+
+// How World::step orders the phases of a substep over the tires. Both run the same per-tire
+// phases in the same order with the same inputs, so they give the same bits (tests/
+// test_step_schedule.cpp); only the number of sweeps over the tires' memory differs.
+enum class StepSchedule : std::uint8_t {
+  // Small Steps' Algorithm 1 as written: each phase (predict, solve positions, update velocities)
+  // a sweep over every tire of its own.
+  plain,
+  // The default. The same phases, with the ones that follow each other on one tire and owe nothing
+  // to the rest of the world in between run in one sweep: a substep's prediction with its first
+  // iteration, and, when no prop takes impulses, the previous substep's velocity pass with them.
+  fused,
 };
 
 class World {
@@ -61,6 +75,11 @@ class World {
 
   // Advances one fixed tick of config().dt, `input` driving the player.
   void step(const TickInput& input);
+
+  // The order of the step's phases (default fused, the faster; plain for tests and benchmarks).
+  // Results are identical for either.
+  void set_schedule(StepSchedule schedule) { schedule_ = schedule; }
+  StepSchedule schedule() const { return schedule_; }
 
   // Threads used for scenes of many tires (default: the hardware's). Results are identical for
   // any count: tires are solved independently, shared effects are applied in a fixed order.
@@ -100,6 +119,15 @@ class World {
   std::vector<std::string>& warnings() { return warnings_; }
 
  private:
+  // The phases of a substep (world.cpp), each over every tire: the plain schedule, one by one.
+  void predict(const SubstepContext& ctx);
+  void solve_positions(const SubstepContext& ctx, int iteration);
+  void update_velocities(const SubstepContext& ctx);
+  // The same substeps in the fused schedule's sweeps.
+  void fused_substeps(SubstepContext ctx);
+  // Between sweeps: the reaction impulses the tires owe props, and the contacts between tires.
+  void hand_over_impulses();
+  void solve_tire_pairs();
   void guard_divergence(Tire& t);
   void color_pairs();
   // Whether no two pairs of one parallel colour share a tire (a check for TIRE_ASSERT: it rebuilds
@@ -126,6 +154,7 @@ class World {
   std::vector<std::uint32_t> color_begin_;  // colour c is colored_pairs_[color_begin_[c], color_begin_[c+1])
   std::vector<std::uint64_t> tire_colors_;  // per tire: colours its pairs use (scratch)
   std::vector<std::uint8_t> pair_color_;    // per pair (scratch)
+  StepSchedule schedule_ = StepSchedule::fused;
   unsigned threads_ = 1;
   std::unique_ptr<WorkerPool> pool_;  // made on first need
   // The global method's scratch, one solver a thread, sized for the largest tire (add_tire).
