@@ -24,6 +24,16 @@ void subtract_abt(Block4& m, const Block4& a, const Block4& b) {
     }
 }
 
+// m ← m − a aᵀ on the lower triangle only (what cholesky() reads of a symmetric block).
+void subtract_aat_lower(Block4& m, const Block4& a) {
+  for (std::size_t r = 0; r < B; ++r)
+    for (std::size_t c = 0; c <= r; ++c) {
+      double s = 0.0;
+      for (std::size_t k = 0; k < B; ++k) s += at(a, r, k) * at(a, c, k);
+      at(m, r, c) -= s;
+    }
+}
+
 Block4 transpose(const Block4& m) {
   Block4 t{};
   for (std::size_t r = 0; r < B; ++r)
@@ -112,7 +122,7 @@ bool CyclicBlockCholesky::factor() {
   const std::size_t p = blocks_;
   // The chain 1 … P−1, then the border block 0 (see the header).
   for (std::size_t j = 1; j < p; ++j) {
-    if (j > 1) subtract_abt(diag_[j], couple_[j - 1], couple_[j - 1]);  // K_jj − L_{j,j−1} L_{j,j−1}ᵀ
+    if (j > 1) subtract_aat_lower(diag_[j], couple_[j - 1]);  // K_jj − L_{j,j−1} L_{j,j−1}ᵀ
     if (!cholesky(diag_[j])) return false;
     // Block 0's row: K_{0,j} is K_{1,0}ᵀ at j = 1 and the wrap K_{0,P−1} at j = P−1, zero between.
     Block4& b = border_[j];
@@ -122,8 +132,8 @@ bool CyclicBlockCholesky::factor() {
     if (j > 1) subtract_abt(b, border_[j - 1], couple_[j - 1]);  // − L_{0,j−1} L_{j,j−1}ᵀ
     right_solve_transpose(b, diag_[j]);
     if (j + 1 < p) right_solve_transpose(couple_[j], diag_[j]);  // L_{j+1,j} = K_{j+1,j} L_jj⁻ᵀ
+    subtract_aat_lower(diag_[0], b);                               // K_00 − Σ L_{0,j} L_{0,j}ᵀ
   }
-  for (std::size_t j = 1; j < p; ++j) subtract_abt(diag_[0], border_[j], border_[j]);
   return cholesky(diag_[0]);
 }
 
