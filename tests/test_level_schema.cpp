@@ -396,7 +396,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
       {"root", {{"description", l.description}, {"gravity", vec(l.gravity)}}},
       {"solver",
        {{"dt", s.dt}, {"substeps", s.substeps}, {"iterations", s.iterations}, {"damping", s.damping},
-        {"tunnel_clamp", s.tunnel_clamp}, {"ground_normal_y", s.ground_normal_y}}},
+        {"tunnel_clamp", s.tunnel_clamp}, {"ground_normal_y", s.ground_normal_y}, {"method", method_name(s.method)}}},
       {"tire",
        {{"velocity", vec(t.velocity)}, {"angle", t.angle}, {"angular_velocity", t.angular_velocity},
         {"outer_radius", t.outer_radius}, {"inner_radius", t.inner_radius}, {"segments", t.segments},

@@ -201,7 +201,9 @@ TEST_CASE("a tire rests stably on a gentle slope with enough friction", "[unit][
 }
 
 TEST_CASE("momentum is conserved when a tire hits a crate", "[unit][props][physics]") {
-  World world(SolverConfig{}, {0, 0});
+  SolverConfig config;
+  config.method = GENERATE(SolverMethod::gauss_seidel, SolverMethod::global);
+  World world(config, {0, 0});
   TireSpec tire;
   tire.position = {0, 0};
   tire.velocity = {6, 0.3};

@@ -11,9 +11,6 @@ namespace tire {
 
 namespace {
 
-// Friction of two surfaces in contact, mixed as Box2D's b2MixFriction does.
-double mix_friction(double a, double b) { return std::sqrt(a * b); }
-
 Aabb bounds(const std::vector<Vec2>& x) {
   Aabb b{x.front(), x.front()};
   for (const Vec2& p : x) {
@@ -207,7 +204,9 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
       t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
     if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
   });
-  if (const double tau = t.spec.material_damping; tau > 0.0) {
+  // The global method damps inside its solve (XPBD eq. 26); Gauss–Seidel damps here.
+  const bool dashpots = ctx.config->method == SolverMethod::gauss_seidel;
+  if (const double tau = t.spec.material_damping; tau > 0.0 && dashpots) {
     t.distance.damp(p.x.data(), p.v.data());
     damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
   }
@@ -224,7 +223,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   TIRE_ASSERT(config.dt > 0.0 && std::isfinite(config.dt), "the tick is not a positive length of time");
   TIRE_ASSERT(t.sizes_consistent(), "a tire's arrays no longer match its particle count");
   const double h = config.dt / config.substeps;
-  t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
+  if (config.method == SolverMethod::gauss_seidel) t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
@@ -265,15 +264,23 @@ void solve_grab(Tire& t, double inv_h2) {
 
 void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
   Particles& p = t.particles;
-  if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
-  t.distance.solve(p.x.data());
-  const double inv_h2 = 1.0 / (ctx.h * ctx.h);
-  solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
-  // The rim's area, once per substep (in its last iteration): it is there so that a heavy load
-  // cannot fold the rim, and a load builds over substeps, not within one. Its ring's edges, solved
-  // every iteration, keep its shape in between. (With one iteration, the default, that is every
-  // iteration anyway.)
-  if (last) solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
+  const bool global = ctx.config->method == SolverMethod::global;
+  if (global) {
+    // Every constraint and surface contact of the tire at once (global_solver.h).
+    TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");
+    const GlobalSolverPool::Lease solver = ctx.global->lend();
+    solver->solve(t, ctx);
+  } else {
+    if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
+    t.distance.solve(p.x.data());
+    const double inv_h2 = 1.0 / (ctx.h * ctx.h);
+    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
+    // The rim's area, once per substep (in its last iteration): it is there so that a heavy load
+    // cannot fold the rim, and a load builds over substeps, not within one. Its ring's edges, solved
+    // every iteration, keep its shape in between. (With one iteration, the default, that is every
+    // iteration anyway.)
+    if (last) solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
+  }
   // Where each ring is now: for the tread–rim contact, and for the contacts between tires that
   // follow this iteration.
   const auto bounds_of = [&](std::uint32_t first, Vec2& hub, double& reach) {
@@ -290,7 +297,7 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
     bounds_of(t.n, t.rim_hub, t.rim_reach);
     keep_tread_outside_rim(t);
   }
-  solve_contacts(t, ctx);
+  if (!global) solve_contacts(t, ctx);
   if (ctx.tire_pairs) bounds_of(0, t.tread_hub, t.tread_reach);
 }
 

@@ -173,6 +173,7 @@ TireId World::add_tire(const TireSpec& spec) {
   colored_pairs_.reserve(pairs);
   pair_color_.reserve(pairs);
   tire_colors_.reserve(tires_.size());
+  reserve_global_solvers();
   return id;
 }
 
@@ -222,7 +223,7 @@ void World::step(const TickInput& input) {
   color_pairs();
 
   const double h = config_.dt / config_.substeps;
-  SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty()};
+  SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty(), &global_};
   if (schedule_ == StepSchedule::fused) {
     fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
   } else {
@@ -333,6 +334,14 @@ unsigned World::threads_in_use() const { return tires_.size() >= kParallelMinTir
 void World::set_threads(unsigned threads) {
   threads_ = std::max(1u, threads);
   pool_.reset();
+  reserve_global_solvers();
+}
+
+void World::reserve_global_solvers() {
+  if (config_.method != SolverMethod::global || tires_.empty()) return;
+  std::uint32_t segments = 0;
+  for (const Tire& t : tires_) segments = std::max(segments, t.n);
+  global_.reserve(threads_, segments);
 }
 
 template <typename F>

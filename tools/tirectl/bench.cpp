@@ -144,11 +144,13 @@ struct Scene {
 
 // The prototype's scene (../shared/REFERENCE.md): one tire of 28 segments with radial spokes,
 // one step of 22 iterations per 60 Hz frame, on a ground line next to a box.
-std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int substeps, int iterations) {
+std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int substeps, int iterations,
+                                           tire::SolverMethod method = tire::SolverMethod::gauss_seidel) {
   tire::SolverConfig config;
   config.dt = 1.0 / 60.0;
   config.substeps = substeps;
   config.iterations = iterations;
+  config.method = method;
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
   world->add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
   world->add_obstacle({{{3.0, 0.0}, {4.0, 0.6}}});
@@ -166,6 +168,10 @@ const Scene kScenes[] = {
      [] { return prototype_world(tire::SpokePattern::radial, 1, 22); }, {1.0, false}},
     {"default-tire", "1 tire, 28 segments, cross spokes, 8 substeps x 1 iteration (the default level)",
      [] { return prototype_world(tire::SpokePattern::cross, 8, 1); }, {1.0, false}},
+    {"global-tire", "as default-tire, solved by the global method at its default settings (4 substeps x 1 iteration)",
+     [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); }, {1.0, false}},
+    {"global-tire-resting", "as global-tire, resting (no steering)",
+     [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); }, {}},
     {"bare-tire", "1 default tire on a ground box, stepped by the tire solver alone (no World, no level)",
      [] { return std::make_unique<BareTireScene>(); }, {}},
     {"flat-level", "the same tire and ground loaded as a level and stepped by the World",

@@ -4,10 +4,24 @@
 
 namespace tire {
 
+// How a substep solves each tire's constraints.
+//  gauss_seidel: one sweep over the constraints per iteration, each projected on its own
+//    (Macklin et al. 2016, Algorithm 1). Cheap per sweep, but a load travels one constraint a
+//    sweep, so a stiff tire's stiffness depends on the substeps (README, "Speed versus accuracy").
+//  global: all of a tire's constraints and its contacts with obstacles and props as one linear
+//    system per iteration (GlobalSolver, global_solver.h): the tire's stiffness is its compliances'
+//    at any substep count.
+enum class SolverMethod { gauss_seidel, global };
+
+// As levels, the command line and reports write it: "gauss-seidel", "global".
+constexpr const char* method_name(SolverMethod m) { return m == SolverMethod::global ? "global" : "gauss-seidel"; }
+constexpr SolverMethod kSolverMethods[] = {SolverMethod::gauss_seidel, SolverMethod::global};
+
 struct SolverConfig {
   double dt = 1.0 / 60.0;  // fixed tick (s)
   int substeps = 8;        // n: the tick is split into substeps of h = dt/n (Macklin et al. 2019)
-  int iterations = 1;      // constraint sweeps per substep
+  int iterations = 1;      // constraint sweeps per substep (global: Newton iterations per substep)
+  SolverMethod method = SolverMethod::gauss_seidel;
   double damping = 0.0;    // decay rate (1/s) of non-rigid particle motion (0 = none)
 
   // Anti-tunneling clamp: a particle's speed is limited so that it travels at most this many
@@ -18,6 +32,24 @@ struct SolverConfig {
   double ground_normal_y = 0.5;
   // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state.
   double divergence_limit = 1.0e5;
+
+  // The global method's own numbers.
+  // Contact active-set passes per iteration: each solves the system with the contacts found so far,
+  // then drops those that pull (λ_n < 0) or slip (|λ_t| > μ_s λ_n) and adds particles that now
+  // penetrate. A resting tire settles in one or two.
+  int contact_passes = 8;
+  // The compliance of what is rigid in the global solve (m/N): contacts, and distance constraints
+  // of compliance 0 (its primal form divides by α, so every α is at least this). It is an XPBD
+  // compliance, not a penalty: a tire's whole weight (100 N) sinks a contact by 0.1 nm at any
+  // substep count. Static friction holds a particle to where the substep began, so a contact
+  // under a tangential force F creeps by α·F a substep: 1e-12 keeps that below 0.01 mm over a
+  // minute at 32 substeps (1e-10 let a resting tire's sag creep by 5 % in 4 s at 32 substeps).
+  // Far below that, K's condition (h²/α against a particle's mass, 10⁹ at one substep) would cost
+  // digits.
+  double rigid_compliance = 1e-12;
+  // A particle starts a contact in the global solve only when it is deeper than this (m): below it,
+  // the rounding of a resting contact could add and drop it pass after pass.
+  double contact_slop = 1e-9;
 };
 
 }  // namespace tire

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tire/rigid/rigid_world.h"
+#include "tire/tire/global_solver.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
 
@@ -15,6 +16,7 @@ struct SubstepContext {
   const SolverConfig* config = nullptr;
   const RigidWorld* rigid = nullptr;  // obstacles and props, read only while tires are solved
   bool tire_pairs = false;            // contacts between tires follow each iteration: keep tread bounds
+  GlobalSolverPool* global = nullptr; // the global method's solvers (SolverMethod::global only)
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and

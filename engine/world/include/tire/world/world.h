@@ -14,6 +14,7 @@
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/math/worker_pool.h"
+#include "tire/tire/global_solver.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
 
@@ -156,6 +157,9 @@ class World {
   StepSchedule schedule_ = StepSchedule::fused;
   unsigned threads_ = 1;
   std::unique_ptr<WorkerPool> pool_;  // made on first need
+  // The global method's scratch, one solver a thread, sized for the largest tire (add_tire).
+  GlobalSolverPool global_;
+  void reserve_global_solvers();
   std::optional<TireId> player_;
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;

@@ -93,7 +93,15 @@ struct ContactRecord {
   std::int32_t prop = -1;      // the prop touched, or −1 for an obstacle
   bool active = false;         // touched a surface this substep
   bool stuck = false;          // static friction held at the last projection
+  // The global method's (GlobalSolver): the surface as a plane, C(x) = normal·x − plane, kept from
+  // one iteration of the substep to the next, and the tangential multiplier as a distance (as
+  // lambda_n), along perp(normal).
+  double plane = 0.0;
+  double lambda_t = 0.0;
 };
+
+// Friction of two surfaces in contact, mixed as Box2D's b2MixFriction does.
+inline double mix_friction(double a, double b) { return std::sqrt(a * b); }
 
 // Projects a penetrating particle out of a surface, then applies position-level static friction:
 // if the tangential displacement relative to the surface this substep is within the static cone,

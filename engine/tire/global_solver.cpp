@@ -1,0 +1,430 @@
+#include "tire/tire/global_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tire/math/check.h"
+#include "tire/tire/tire_solver.h"
+#include "tire/xpbd/contact.h"
+
+namespace tire {
+
+namespace {
+
+// The unknowns, block by block: block i holds tread particle i (x, y) then rim particle i (x, y),
+// so every constraint of the tire couples a block to itself or to a neighbouring block.
+std::uint32_t block_of(std::uint32_t particle, std::uint32_t n) { return particle < n ? particle : particle - n; }
+std::size_t offset_of(std::uint32_t particle, std::uint32_t n) { return particle < n ? 0 : 2; }
+std::size_t dof_of(std::uint32_t particle, std::uint32_t n) {
+  return CyclicBlockCholesky::kBlock * block_of(particle, n) + offset_of(particle, n);
+}
+
+// m[ro.., co..] += s n nᵀ: a 2×2 outer product into a 4×4 block, at particle offsets ro and co.
+void add_outer(Block4& m, std::size_t ro, std::size_t co, Vec2 n, double s) {
+  constexpr std::size_t B = CyclicBlockCholesky::kBlock;
+  m[ro * B + co] += s * n.x * n.x;
+  m[ro * B + co + 1] += s * n.x * n.y;
+  m[(ro + 1) * B + co] += s * n.y * n.x;
+  m[(ro + 1) * B + co + 1] += s * n.y * n.y;
+}
+
+double dot_n(const double* a, const double* b, std::size_t n) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+Vec2 at(const double* v, std::size_t dof) { return {v[dof], v[dof + 1]}; }
+
+}  // namespace
+
+void GlobalSolver::reserve(std::uint32_t segments) {
+  if (segments <= segments_) return;
+  segments_ = segments;
+  stride_ = CyclicBlockCholesky::kBlock * segments;
+  k_.reserve(segments);
+  base_diagonal_.resize(segments);
+  base_coupling_.resize(segments);
+  base_f_.assign(stride_, 0.0);
+  f_.assign(stride_, 0.0);
+  dx_.assign(stride_, 0.0);
+  rows_.reserve(kMaxRows);
+  g_.assign(kMaxRows * stride_, 0.0);
+  y_.assign(kMaxRows * stride_, 0.0);
+  contacts_.reserve(2 * std::size_t{segments});
+  contact_of_.assign(2 * std::size_t{segments}, -1);
+  depth_.assign(2 * std::size_t{segments}, 0.0);
+  gradient_.assign(segments, Vec2{});
+}
+
+// K = M + (1 + γ) Jᵀ α̃⁻¹ J and f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ J (x − xₙ)) over the distance
+// constraints (XPBD eq. 9–10 and 26 in the primal form, see the header), without the contacts.
+void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gamma) {
+  const std::uint32_t n = t.n;
+  const Particles& p = t.particles;
+  const double h = ctx.h;
+  constexpr std::size_t B = CyclicBlockCholesky::kBlock;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    base_diagonal_[k].fill(0.0);
+    base_coupling_[k].fill(0.0);
+  }
+  for (std::uint32_t i = 0; i < 2 * n; ++i) {
+    TIRE_ASSERT(p.w[i] > 0.0, "the global method needs every particle of a tire to have a finite mass");
+    const double m = 1.0 / p.w[i];
+    const std::size_t o = offset_of(i, n);
+    Block4& d = base_diagonal_[block_of(i, n)];
+    d[o * B + o] += m;
+    d[(o + 1) * B + o + 1] += m;
+    const Vec2 predicted = p.x_prev[i] + p.v[i] * h;  // x̃ (predict_positions made x exactly this)
+    const Vec2 r = (p.x[i] - predicted) * -m;
+    const std::size_t k = dof_of(i, n);
+    base_f_[k] = r.x;
+    base_f_[k + 1] = r.y;
+  }
+  const double min_compliance = ctx.config->rigid_compliance;
+  for (const DistanceConstraint& c : t.distance.constraints()) {
+    const Vec2 d = p.x[c.b] - p.x[c.a];
+    const double len = length(d);
+    if (!(len > 0.0)) continue;  // coincident particles: no gradient (as in the Gauss–Seidel kernel)
+    const Vec2 nrm = d / len;    // ∇_b C = n = −∇_a C
+    const double inv_alpha_tilde = h * h / std::max(c.compliance, min_compliance);
+    const double rate = dot(nrm, (p.x[c.b] - p.x_prev[c.b]) - (p.x[c.a] - p.x_prev[c.a]));  // ∇C·(x − xₙ)
+    const double e = (len - c.rest_length + gamma * rate) * inv_alpha_tilde;
+    const std::size_t ka = dof_of(c.a, n), kb = dof_of(c.b, n);
+    base_f_[ka] += nrm.x * e;
+    base_f_[ka + 1] += nrm.y * e;
+    base_f_[kb] -= nrm.x * e;
+    base_f_[kb + 1] -= nrm.y * e;
+    const double s = (1.0 + gamma) * inv_alpha_tilde;
+    const std::uint32_t ba = block_of(c.a, n), bb = block_of(c.b, n);
+    const std::size_t oa = offset_of(c.a, n), ob = offset_of(c.b, n);
+    add_outer(base_diagonal_[ba], oa, oa, nrm, s);
+    add_outer(base_diagonal_[bb], ob, ob, nrm, s);
+    if (ba == bb) {
+      add_outer(base_diagonal_[ba], oa, ob, nrm, -s);
+      add_outer(base_diagonal_[ba], ob, oa, nrm, -s);
+    } else if (bb == (ba + 1) % n) {
+      add_outer(base_coupling_[ba], ob, oa, nrm, -s);  // block row bb, column ba
+    } else {
+      TIRE_ASSERT(ba == (bb + 1) % n, "a tire constraint joins segments that are not neighbours");
+      add_outer(base_coupling_[bb], oa, ob, nrm, -s);
+    }
+  }
+}
+
+// An area constraint C = A(x) − p A₀ with compliance α, damped as the distance constraints are:
+// (g K⁻¹ gᵀ + α̃/(1 + γ)) μ = −(C + γ g·(x − xₙ))/(1 + γ) − g K⁻¹ f (XPBD eq. 26 divided by 1 + γ).
+void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma) {
+  const AreaConstraint& c = rim ? t.rim_area_constraint : t.area_constraint;
+  if (c.count < 3) return;  // no polygon (tests build chains from a tire's particles)
+  const Particles& p = t.particles;
+  polygon_area_gradient(p.x.data() + c.first, c.count, gradient_.data());
+  double* g = gradient_of(rows_.size());
+  std::fill(g, g + CyclicBlockCholesky::kBlock * t.n, 0.0);
+  double rate = 0.0;
+  for (std::uint32_t k = 0; k < c.count; ++k) {
+    const std::uint32_t i = c.first + k;
+    const std::size_t d = dof_of(i, t.n);
+    g[d] = gradient_[k].x;
+    g[d + 1] = gradient_[k].y;
+    rate += dot(gradient_[k], p.x[i] - p.x_prev[i]);
+  }
+  const double value = polygon_area(p.x.data() + c.first, c.count) - c.pressure * c.rest_area;
+  Row row;
+  row.alpha_tilde = c.compliance / (ctx.h * ctx.h) / (1.0 + gamma);
+  row.b = -(value + gamma * rate) / (1.0 + gamma);
+  rows_.push_back(row);
+}
+
+GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle,
+                                                 Vec2 normal, double plane, const ContactPair& pair, std::int32_t prop,
+                                                 Vec2 surface_velocity) const {
+  Contact c;
+  c.particle = particle;
+  c.normal = normal;
+  c.plane = plane;
+  c.prop = prop;
+  c.surface_velocity = surface_velocity;
+  c.surface_displacement = surface_velocity * ctx.h;
+  c.mu_static = pair.mu_static;
+  c.mu_kinetic = pair.mu_kinetic;
+  c.friction_active = c.mu_static > 0.0;
+  double give_n = 0.0, give_t = 0.0;
+  if (prop >= 0) {
+    const Prop& body = ctx.rigid->props()[static_cast<std::size_t>(prop)];
+    if (body.is_dynamic()) {
+      // What the prop gives way at the contact, w = 1/M + (r × d)²/I along d (Müller 2020 eq. 2),
+      // times its mobility along the push (0 into what holds it up; rounding can take 1 − (n·s)² a
+      // few 1e-9 below zero, see resolve_contact: clamped).
+      const Vec2 r = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
+      const Vec2 tangent = perp(normal);
+      const double mob_n = std::max(0.0, body.mobility(-normal));
+      const double mob_t = std::max(0.0, std::min(body.mobility(tangent), body.mobility(-tangent)));
+      give_n = mob_n * (body.inverse_mass + cross(r, normal) * cross(r, normal) * body.inverse_inertia);
+      give_t = mob_t * (body.inverse_mass + cross(r, tangent) * cross(r, tangent) * body.inverse_inertia);
+    }
+  }
+  c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + give_n);
+  c.stiffness_t = 1.0 / (rigid_alpha_tilde_ + give_t);
+  return c;
+}
+
+bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx) {
+  const Particles& p = t.particles;
+  const RigidWorld& rigid = *ctx.rigid;
+  const std::size_t first_new = contacts_.size();
+  for (const ContactPair& pair : t.pairs) {
+    const std::uint32_t i = pair.particle;
+    const std::int32_t existing = contact_of_[i];
+    if (existing >= 0 && static_cast<std::size_t>(existing) < first_new) continue;
+    Vec2 x = p.x[i];
+    if (dx) x += at(dx, dof_of(i, t.n));
+    std::optional<SurfaceContact> hit;
+    std::int32_t prop = -1;
+    Vec2 surface_velocity;
+    if (!pair.is_prop) {
+      hit = swept_box_contact(p.x_prev[i], x, rigid.obstacles()[pair.index].box);
+    } else {
+      const PropFrame& frame = t.prop_frames[pair.index];
+      const Prop& body = rigid.props()[frame.prop];
+      hit = local_contact(body.geometry, frame.start.to_local(p.x_prev[i]), frame.end.to_local(x));
+      if (hit) {
+        hit->normal = frame.end.rotate(hit->normal);
+        prop = static_cast<std::int32_t>(frame.prop);
+        surface_velocity = body.point_velocity(x, ctx.time + ctx.h);
+      }
+    }
+    if (!hit || !(hit->depth > ctx.config->contact_slop)) continue;
+    if (existing >= 0 && !(hit->depth > depth_[static_cast<std::size_t>(existing)])) continue;  // keep the deeper
+    const Contact c = make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity);
+    if (existing >= 0) {
+      contacts_[static_cast<std::size_t>(existing)] = c;
+    } else {
+      contact_of_[i] = static_cast<std::int32_t>(contacts_.size());
+      contacts_.push_back(c);
+    }
+    depth_[static_cast<std::size_t>(contact_of_[i])] = hit->depth;
+  }
+  return contacts_.size() > first_new;
+}
+
+bool GlobalSolver::solve_pass(const Tire& t) {
+  const std::uint32_t n = t.n;
+  const std::size_t size = CyclicBlockCholesky::kBlock * n;
+  const Particles& p = t.particles;
+  k_.reset(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    k_.diagonal(k) = base_diagonal_[k];
+    k_.coupling(k) = base_coupling_[k];
+  }
+  std::copy(base_f_.begin(), base_f_.begin() + static_cast<std::ptrdiff_t>(size), f_.begin());
+  // Each active contact: stiffness k along its direction d into K, and −k d C into f.
+  for (const Contact& c : contacts_) {
+    if (!c.normal_active) continue;
+    const std::uint32_t i = c.particle;
+    const std::size_t o = offset_of(i, n), d = dof_of(i, n);
+    Block4& block = k_.diagonal(block_of(i, n));
+    add_outer(block, o, o, c.normal, c.stiffness_n);
+    const double push = c.stiffness_n * (c.plane - dot(c.normal, p.x[i]));
+    f_[d] += c.normal.x * push;
+    f_[d + 1] += c.normal.y * push;
+    if (!c.friction_active) continue;
+    const Vec2 tangent = perp(c.normal);
+    add_outer(block, o, o, tangent, c.stiffness_t);
+    const double hold = -c.stiffness_t * dot(tangent, p.x[i] - p.x_prev[i] - c.surface_displacement);
+    f_[d] += tangent.x * hold;
+    f_[d + 1] += tangent.y * hold;
+  }
+  ++counts_.factorisations;
+  if (!k_.factor()) return false;
+  k_.forward(f_.data());
+  // The capacitance rows: y_r = L⁻¹ g_r, S = Yᵀ Y + α̃ (at most 3 × 3), solved by Cholesky.
+  const std::size_t m = rows_.size();
+  double s[kMaxRows][kMaxRows] = {};
+  double mu[kMaxRows] = {};
+  for (std::size_t r = 0; r < m; ++r) {
+    double* y = y_.data() + r * stride_;
+    const double* g = g_.data() + r * stride_;
+    std::copy(g, g + size, y);
+    k_.forward(y);
+    rows_[r].yf = dot_n(y, f_.data(), size);
+    for (std::size_t q = 0; q <= r; ++q) s[r][q] = dot_n(y, y_.data() + q * stride_, size);
+    s[r][r] += rows_[r].alpha_tilde;
+    mu[r] = rows_[r].b - rows_[r].yf;
+  }
+  for (std::size_t r = 0; r < m; ++r) {  // Cholesky of S, in its lower triangle
+    for (std::size_t q = 0; q <= r; ++q) {
+      double v = s[r][q];
+      for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
+      if (q < r) s[r][q] = v / s[q][q];
+      else if (v > 0.0) s[r][r] = std::sqrt(v);
+      else return false;
+    }
+  }
+  for (std::size_t r = 0; r < m; ++r) {
+    for (std::size_t k = 0; k < r; ++k) mu[r] -= s[r][k] * mu[k];
+    mu[r] /= s[r][r];
+  }
+  for (std::size_t r = m; r-- > 0;) {
+    for (std::size_t k = r + 1; k < m; ++k) mu[r] -= s[k][r] * mu[k];
+    mu[r] /= s[r][r];
+  }
+  std::copy(f_.begin(), f_.begin() + static_cast<std::ptrdiff_t>(size), dx_.begin());
+  for (std::size_t r = 0; r < m; ++r) {
+    rows_[r].mu = mu[r];
+    const double* y = y_.data() + r * stride_;
+    for (std::size_t k = 0; k < size; ++k) dx_[k] += mu[r] * y[k];
+  }
+  k_.backward(dx_.data());
+  // The contacts' multipliers at the new positions: μ = −k C(x + Δx).
+  for (Contact& c : contacts_) {
+    c.mu_n = c.mu_t = 0.0;
+    if (!c.normal_active) continue;
+    const std::uint32_t i = c.particle;
+    const Vec2 x = p.x[i] + at(dx_.data(), dof_of(i, n));
+    c.mu_n = c.stiffness_n * (c.plane - dot(c.normal, x));
+    if (c.friction_active)
+      c.mu_t = -c.stiffness_t * dot(perp(c.normal), x - p.x_prev[i] - c.surface_displacement);
+  }
+  return true;
+}
+
+bool GlobalSolver::update_active_set(const Tire& t, const SubstepContext& ctx) {
+  bool changed = false;
+  for (Contact& c : contacts_) {
+    if (c.normal_active) {
+      if (c.mu_n < 0.0) {  // the surface would pull: let go
+        c.normal_active = c.friction_active = false;
+        changed = true;
+      } else if (c.friction_active && std::abs(c.mu_t) > c.mu_static * c.mu_n) {  // Coulomb: slip
+        c.friction_active = false;
+        changed = true;
+      }
+    } else {  // released: back in if the step would push it into its surface
+      const Vec2 x = t.particles.x[c.particle] + at(dx_.data(), dof_of(c.particle, t.n));
+      if (c.plane - dot(c.normal, x) > ctx.config->contact_slop) {
+        c.normal_active = true;
+        changed = true;
+      }
+    }
+  }
+  return find_contacts(t, ctx, dx_.data()) || changed;
+}
+
+void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
+  TIRE_ASSERT(t.n <= segments_, "a global solver too small for the tire: reserve() it first");
+  const std::uint32_t n = t.n;
+  const double gamma = t.spec.material_damping / ctx.h;  // γ = α̃β̃/h with β = τ/α (XPBD eq. 26)
+  counts_ = {};
+  rows_.clear();
+  contacts_.clear();
+  std::fill(contact_of_.begin(), contact_of_.begin() + 2 * std::ptrdiff_t{n}, -1);
+  rigid_alpha_tilde_ = ctx.config->rigid_compliance / (ctx.h * ctx.h);
+  assemble(t, ctx, gamma);
+  add_ring_area_row(t, ctx, false, gamma);
+  add_ring_area_row(t, ctx, true, gamma);
+  if (t.grabbed) {
+    const Vec2 d = t.particles.x[t.grab_particle] - t.grab_target;
+    const double len = length(d);
+    if (len > 0.0) {  // C = |x − target| with the grab's compliance, undamped
+      double* g = gradient_of(rows_.size());
+      std::fill(g, g + 4 * std::ptrdiff_t{n}, 0.0);
+      const std::size_t k = dof_of(t.grab_particle, n);
+      g[k] = d.x / len;
+      g[k + 1] = d.y / len;
+      Row row;
+      row.alpha_tilde = t.grab_compliance / (ctx.h * ctx.h);
+      row.b = -len;
+      rows_.push_back(row);
+    }
+  }
+  // Contacts held at the end of the substep's previous iteration stay in (their plane and whether
+  // they stuck), so a resting tire does not lose its support between iterations.
+  t.for_each_contact([&](std::uint32_t i) {
+    const ContactRecord& rec = t.contacts[i];
+    if (!rec.active) return;
+    const ContactPair pair{i, 0, rec.prop >= 0, rec.mu_static, rec.mu_kinetic};
+    Contact c = make_contact(t, ctx, i, rec.normal, rec.plane, pair, rec.prop, rec.surface_velocity);
+    c.friction_active = rec.stuck;
+    contact_of_[i] = static_cast<std::int32_t>(contacts_.size());
+    contacts_.push_back(c);
+  });
+  find_contacts(t, ctx, nullptr);
+  // Active-set passes (each a factorisation), until nothing changes or the passes run out; the
+  // last pass's changes are solved once more, so Δx always matches the contacts written back.
+  const int passes = std::max(1, ctx.config->contact_passes);
+  for (int pass = 0;; ++pass) {
+    if (!solve_pass(t)) return;  // not finite (a NaN put in from outside): the divergence guard resets it
+    if (!update_active_set(t, ctx)) break;
+    if (pass + 1 == passes) {
+      if (!solve_pass(t)) return;
+      break;
+    }
+  }
+  for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
+  write_back(t, ctx);
+}
+
+// The contact records, as the velocity pass and the rest of the engine read them (λ as distances,
+// see contact.h), and the impulses owed to dynamic props: the change of this iteration's total
+// multipliers from the last iteration's, so that a substep of several iterations owes the total.
+void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
+  const double t_end = ctx.time + ctx.h;
+  const auto owe = [&](const ContactRecord& rec, std::uint32_t i, double d_lambda_n, double d_lambda_t) {
+    if (rec.prop < 0 || (d_lambda_n == 0.0 && d_lambda_t == 0.0)) return;
+    if (!ctx.rigid->props()[static_cast<std::size_t>(rec.prop)].is_dynamic()) return;
+    const double m = 1.0 / t.particles.w[i];  // λ as a distance is w μ: the impulse is μ/h
+    const Vec2 impulse = (rec.normal * d_lambda_n + perp(rec.normal) * d_lambda_t) * (-m / ctx.h);
+    t.prop_impulses.push_back({static_cast<std::uint32_t>(rec.prop), impulse, t.particles.x[i], t_end});
+  };
+  // Records of the last iteration that this one no longer holds: give back what they owed.
+  t.for_each_contact([&](std::uint32_t i) {
+    ContactRecord& rec = t.contacts[i];
+    const std::int32_t k = contact_of_[i];
+    if (rec.active && (k < 0 || !contacts_[static_cast<std::size_t>(k)].normal_active)) {
+      owe(rec, i, -rec.lambda_n, -rec.lambda_t);
+      rec = ContactRecord{};
+    }
+  });
+  for (const Contact& c : contacts_) {
+    if (!c.normal_active) continue;
+    const double w = t.particles.w[c.particle];
+    ContactRecord& rec = t.touch_contact(c.particle);
+    const ContactRecord before = rec.active ? rec : ContactRecord{};
+    rec.normal = c.normal;
+    rec.surface_velocity = c.surface_velocity;
+    rec.lambda_n = w * c.mu_n;
+    rec.lambda_t = w * c.mu_t;
+    rec.mu_static = c.mu_static;
+    rec.mu_kinetic = c.mu_kinetic;
+    rec.prop = c.prop;
+    rec.active = true;
+    rec.stuck = c.friction_active;
+    rec.plane = c.plane;
+    owe(rec, c.particle, rec.lambda_n - before.lambda_n, rec.lambda_t - before.lambda_t);
+    ++counts_.contacts;
+  }
+}
+
+void GlobalSolverPool::reserve(unsigned slots, std::uint32_t segments) {
+  if (slots > solvers_.size()) {
+    std::vector<std::unique_ptr<GlobalSolver>> grown(slots);
+    for (std::size_t k = 0; k < solvers_.size(); ++k) grown[k] = std::move(solvers_[k]);
+    for (std::size_t k = solvers_.size(); k < slots; ++k) grown[k] = std::make_unique<GlobalSolver>();
+    solvers_ = std::move(grown);
+    busy_ = std::make_unique<std::atomic<bool>[]>(slots);
+    for (std::size_t k = 0; k < slots; ++k) busy_[k].store(false);
+  }
+  for (auto& s : solvers_) s->reserve(segments);
+}
+
+GlobalSolverPool::Lease GlobalSolverPool::lend() {
+  TIRE_ASSERT(!solvers_.empty(), "the global method's solvers were never reserved");
+  for (;;)
+    for (std::size_t k = 0; k < solvers_.size(); ++k) {
+      bool expected = false;
+      if (busy_[k].compare_exchange_strong(expected, true, std::memory_order_acquire)) return Lease(*this, k);
+    }
+}
+
+}  // namespace tire

@@ -1,0 +1,156 @@
+// The global method (issue 13): each iteration of a substep solves all of one tire's constraints
+// and its contacts with obstacles and props as one linear system, so a load reaches every part of
+// the tire at once and the tire's stiffness is its compliances' at any substep count.
+//
+// The system is XPBD's linearised step (Macklin et al. 2016, eq. 9–10) for all constraints at once.
+// Its distance constraints (α > 0) are taken in the primal form, which the Woodbury identity makes
+// equal to the dual form (J W Jᵀ + α̃) Δλ = −C − α̃ λ:
+//     K Δx = f + Gᵀ μ,   K = M + (1 + γ) Jᵀ α̃⁻¹ J,   f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ J (x − xₙ)),
+// with x̃ the predicted positions, xₙ those at the substep's start and γ = α̃ β̃ / h = τ / h the
+// constraint damping of XPBD eq. 26 for the tire's Kelvin–Voigt time τ (material_damping). K is
+// the mass matrix plus the stiffness of every distance constraint: with the unknowns ordered
+// segment by segment it is block tridiagonal with a cyclic wrap (CyclicBlockCholesky).
+// Contacts are rows of one particle each, so they go into K too, as constraints of compliance
+// SolverConfig::rigid_compliance (10 nm under a tire's weight): the normal C = n·x − plane with
+// μ_n ≥ 0, and static friction t·(x − xₙ − surface motion) = 0 while |μ_t| ≤ μ_s μ_n (Müller et al.
+// 2020, Sec. 3.5; kinetic friction stays in the velocity pass, Sec. 3.6). Against a dynamic prop a
+// contact's compliance also holds what the prop gives way, its generalised inverse mass (Müller
+// 2020 eq. 2–3) scaled by its mobility, as the Gauss–Seidel contacts take it. Which contacts are in
+// is found by active-set passes, one factorisation each.
+// The two area constraints (their gradients are dense over a ring) and the mouse grab keep their
+// multipliers μ as unknowns, a dense "capacitance" system of at most three rows:
+//     (G K⁻¹ Gᵀ + α̃_G/(1 + γ)) μ = b − G K⁻¹ f,   then Δx = K⁻¹ (f + Gᵀ μ).
+// Each iteration solves for the multipliers' totals, not increments, so nothing is carried from one
+// iteration to the next but x and which contacts hold.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "tire/tire/tire.h"
+#include "tire/xpbd/cyclic_block_cholesky.h"
+
+namespace tire {
+
+struct SubstepContext;
+
+// Scratch for solving one tire, reused tire after tire: sized by reserve(), never allocated in a step.
+class GlobalSolver {
+ public:
+  // Room for tires of up to `segments` segments (allocates).
+  void reserve(std::uint32_t segments);
+  std::uint32_t capacity() const { return segments_; }
+
+  // One iteration of the substep for `tire` (called where Gauss–Seidel would sweep once): solves the
+  // system, moves the particles, and leaves the contact records (and the impulses owed to props)
+  // as the Gauss–Seidel contacts would.
+  void solve(Tire& tire, const SubstepContext& ctx);
+
+  // Work done by the last solve(), for tests and the bench.
+  struct Counts {
+    std::uint32_t factorisations = 0;  // of K: one per active-set pass
+    std::uint32_t contacts = 0;        // contacts in the system at the end
+  };
+  const Counts& counts() const { return counts_; }
+
+ private:
+  // A row of the capacitance system: an area constraint or the grab.
+  struct Row {
+    double alpha_tilde = 0.0;  // α̃/(1 + γ)
+    double b = 0.0;            // the right-hand side: −(C + γ ∇C·(x − xₙ))/(1 + γ)
+    double yf = 0.0;           // (L⁻¹ g)·(L⁻¹ f)
+    double mu = 0.0;           // its multiplier, from the last pass
+  };
+  // A particle against an obstacle or a prop. Its normal (and static friction) are rows of
+  // compliance rigid_compliance, plus what a dynamic prop gives way, taken into K itself: each
+  // touches one particle, so K keeps its shape.
+  struct Contact {
+    std::uint32_t particle = 0;
+    Vec2 normal;                // unit, out of the surface
+    double plane = 0.0;         // C(x) = normal·x − plane
+    Vec2 surface_displacement;  // of the surface point over the substep (moving props)
+    Vec2 surface_velocity;
+    std::int32_t prop = -1;     // the prop, or −1 for an obstacle
+    double mu_static = 0.0;
+    double mu_kinetic = 0.0;
+    double stiffness_n = 0.0;   // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
+    double stiffness_t = 0.0;   // the same along the tangent
+    bool normal_active = true;
+    bool friction_active = true;
+    double mu_n = 0.0;          // multipliers from the last pass (kg·m: force × h²)
+    double mu_t = 0.0;
+  };
+
+  void assemble(const Tire& t, const SubstepContext& ctx, double gamma);
+  void add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma);
+  double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
+  Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal, double plane,
+                       const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity) const;
+  // Finds the particles of `t` that penetrate a surface at x + dx (dx null: at x) and have no
+  // contact yet, and adds a contact for each. True when any was added.
+  bool find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx);
+  // One active-set pass: K with the active contacts, factored; the capacitance rows solved; Δx and
+  // each contact's multipliers. False when K could not be factored (not finite).
+  bool solve_pass(const Tire& t);
+  // Drops contacts that pull and friction that cannot hold; takes back released contacts that Δx
+  // would push into their surface. True when anything changed.
+  bool update_active_set(const Tire& t, const SubstepContext& ctx);
+  void write_back(Tire& t, const SubstepContext& ctx);
+
+  static constexpr std::size_t kMaxRows = 3;  // the two areas and the grab
+
+  std::uint32_t segments_ = 0;
+  std::size_t stride_ = 0;  // 4 × capacity: the length of one column
+  CyclicBlockCholesky k_;
+  std::vector<Block4> base_diagonal_;  // K without the contacts
+  std::vector<Block4> base_coupling_;
+  std::vector<double> base_f_;  // f without the contacts
+  std::vector<double> f_;       // f with them, then L⁻¹ f
+  std::vector<double> dx_;      // the last pass's Δx, in block order
+  std::vector<Row> rows_;
+  std::vector<double> g_;   // column r: the gradient g_r
+  std::vector<double> y_;   // column r: L⁻¹ g_r
+  std::vector<Contact> contacts_;
+  std::vector<std::int32_t> contact_of_;  // per particle: its contact, or −1
+  std::vector<double> depth_;             // find_contacts: the depth of each contact found
+  std::vector<Vec2> gradient_;            // a ring's area gradient
+  double rigid_alpha_tilde_ = 0.0;        // rigid_compliance / h²
+  Counts counts_;
+};
+
+// One GlobalSolver per thread that may solve tires at once: lend() hands out one no other thread
+// holds (tires are solved in parallel, and a solver is only scratch, so which one a tire gets never
+// changes a result).
+class GlobalSolverPool {
+ public:
+  GlobalSolverPool() = default;
+  GlobalSolverPool(GlobalSolverPool&&) noexcept = default;
+  GlobalSolverPool& operator=(GlobalSolverPool&&) noexcept = default;
+
+  // `slots` solvers with room for `segments` segments (allocates; call outside the step).
+  void reserve(unsigned slots, std::uint32_t segments);
+  bool empty() const { return solvers_.empty(); }
+
+  class Lease {
+   public:
+    Lease(GlobalSolverPool& pool, std::size_t slot) : pool_(&pool), slot_(slot) {}
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    ~Lease() { pool_->busy_[slot_].store(false, std::memory_order_release); }
+    GlobalSolver& operator*() const { return *pool_->solvers_[slot_]; }
+    GlobalSolver* operator->() const { return pool_->solvers_[slot_].get(); }
+
+   private:
+    GlobalSolverPool* pool_;
+    std::size_t slot_;
+  };
+  Lease lend();
+
+ private:
+  std::vector<std::unique_ptr<GlobalSolver>> solvers_;
+  std::unique_ptr<std::atomic<bool>[]> busy_;
+};
+
+}  // namespace tire
