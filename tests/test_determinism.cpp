@@ -45,8 +45,11 @@ TEST_CASE("results do not depend on the number of threads", "[unit][determinism]
   // threads on this machine's two cores: some are put aside mid-step and others take their chunks.
   const bool crates = GENERATE(true, false);
   CAPTURE(crates);
-  auto build = [crates](unsigned threads) {
-    auto world = std::make_unique<World>(SolverConfig{}, Vec2{0, -9.81});
+  SolverConfig config;
+  config.method = GENERATE(SolverMethod::gauss_seidel, SolverMethod::global);
+  CAPTURE(method_name(config.method));
+  auto build = [crates, config](unsigned threads) {
+    auto world = std::make_unique<World>(config, Vec2{0, -9.81});
     world->set_threads(threads);
     world->add_obstacle({{{-1, -1}, {16, 0}}});
     world->add_obstacle({{{-1, 0}, {0, 50}}});

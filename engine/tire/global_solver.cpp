@@ -237,16 +237,20 @@ bool GlobalSolver::solve_pass(const Tire& t) {
   }
   ++counts_.factorisations;
   if (!k_.factor()) return false;
-  k_.forward(f_.data());
-  // The capacitance rows: y_r = L⁻¹ g_r, S = Yᵀ Y + α̃ (at most 3 × 3), solved by Cholesky.
+  // L⁻¹ f and the capacitance rows' y_r = L⁻¹ g_r, in one forward sweep; then S = Yᵀ Y + α̃ (at
+  // most 3 × 3), solved by Cholesky.
   const std::size_t m = rows_.size();
+  double* sides[kMaxRows + 1] = {f_.data()};
+  for (std::size_t r = 0; r < m; ++r) {
+    const double* g = g_.data() + r * stride_;
+    sides[r + 1] = y_.data() + r * stride_;
+    std::copy(g, g + size, sides[r + 1]);
+  }
+  k_.forward(sides, m + 1);
   double s[kMaxRows][kMaxRows] = {};
   double mu[kMaxRows] = {};
   for (std::size_t r = 0; r < m; ++r) {
-    double* y = y_.data() + r * stride_;
-    const double* g = g_.data() + r * stride_;
-    std::copy(g, g + size, y);
-    k_.forward(y);
+    const double* y = y_.data() + r * stride_;
     rows_[r].yf = dot_n(y, f_.data(), size);
     for (std::size_t q = 0; q <= r; ++q) s[r][q] = dot_n(y, y_.data() + q * stride_, size);
     s[r][r] += rows_[r].alpha_tilde;

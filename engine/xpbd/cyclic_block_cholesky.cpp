@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "tire/math/check.h"
 
@@ -11,28 +12,34 @@ namespace {
 
 constexpr std::size_t B = CyclicBlockCholesky::kBlock;
 
+// Four doubles as one value (GCC's vector extension): element-wise IEEE arithmetic, as the scalar
+// code would do it lane by lane, compiled to whatever vector unit the target has. Same bits on any.
+// (GCC warns that passing one by value has another ABI under AVX: these functions are internal to
+// this file, so no other object ever calls them.)
+#pragma GCC diagnostic ignored "-Wpsabi"
+typedef double V4 __attribute__((vector_size(32)));
+
+V4 row(const Block4& m, std::size_t r) {
+  V4 v;
+  std::memcpy(&v, m.data() + B * r, sizeof v);
+  return v;
+}
+void set_row(Block4& m, std::size_t r, V4 v) { std::memcpy(m.data() + B * r, &v, sizeof v); }
+V4 load(const double* p) {
+  V4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+void store(double* p, V4 v) { std::memcpy(p, &v, sizeof v); }
+V4 splat(double x) { return V4{x, x, x, x}; }
+
 double& at(Block4& m, std::size_t r, std::size_t c) { return m[r * B + c]; }
 double at(const Block4& m, std::size_t r, std::size_t c) { return m[r * B + c]; }
 
-// m ← m − a bᵀ
-void subtract_abt(Block4& m, const Block4& a, const Block4& b) {
-  for (std::size_t r = 0; r < B; ++r)
-    for (std::size_t c = 0; c < B; ++c) {
-      double s = 0.0;
-      for (std::size_t k = 0; k < B; ++k) s += at(a, r, k) * at(b, c, k);
-      at(m, r, c) -= s;
-    }
-}
-
-// m ← m − a aᵀ on the lower triangle only (what cholesky() reads of a symmetric block).
-void subtract_aat_lower(Block4& m, const Block4& a) {
-  for (std::size_t r = 0; r < B; ++r)
-    for (std::size_t c = 0; c <= r; ++c) {
-      double s = 0.0;
-      for (std::size_t k = 0; k < B; ++k) s += at(a, r, k) * at(a, c, k);
-      at(m, r, c) -= s;
-    }
-}
+// Where cholesky() keeps 1/L_jj: in the upper triangle, which L does not use (row 0 holds j = 1 … 3,
+// row 1 holds j = 0).
+double& inverse_diagonal(Block4& m, std::size_t j) { return j == 0 ? m[1 * B + 2] : m[j]; }
+double inverse_diagonal(const Block4& m, std::size_t j) { return j == 0 ? m[1 * B + 2] : m[j]; }
 
 Block4 transpose(const Block4& m) {
   Block4 t{};
@@ -41,23 +48,52 @@ Block4 transpose(const Block4& m) {
   return t;
 }
 
-// m ← its lower Cholesky factor (the upper triangle is zeroed). False on a pivot that is not
-// positive (or not finite).
+// The blocks below the diagonal are kept transposed (Aᵀ, row-major), so that what the factor and
+// the forward solve need of them are rows: A x = Σ_k x_k (row k of Aᵀ).
+
+// m ← m − (A Bᵀ) given Aᵀ and Bᵀ: row r of A Bᵀ is Σ_k A_rk (row k of Bᵀ) = Σ_k (Aᵀ)_kr (Bᵀ)_k.
+void subtract_abt(Block4& m, const Block4& at_, const Block4& bt) {
+  const V4 b0 = row(bt, 0), b1 = row(bt, 1), b2 = row(bt, 2), b3 = row(bt, 3);
+  for (std::size_t r = 0; r < B; ++r) {
+    V4 s = splat(at(at_, 0, r)) * b0;
+    s += splat(at(at_, 1, r)) * b1;
+    s += splat(at(at_, 2, r)) * b2;
+    s += splat(at(at_, 3, r)) * b3;
+    set_row(m, r, row(m, r) - s);
+  }
+}
+
+// m ← its lower Cholesky factor L, with 1/L_jj where the upper triangle was (the solves multiply
+// by it rather than divide). False on a pivot that is not positive (or not finite).
 bool cholesky(Block4& m) {
   for (std::size_t j = 0; j < B; ++j) {
     double d = at(m, j, j);
     for (std::size_t k = 0; k < j; ++k) d -= at(m, j, k) * at(m, j, k);
     if (!(d > 0.0) || !std::isfinite(d)) return false;
     const double l = std::sqrt(d);
+    const double inv = 1.0 / l;
     at(m, j, j) = l;
     for (std::size_t i = j + 1; i < B; ++i) {
       double s = at(m, i, j);
       for (std::size_t k = 0; k < j; ++k) s -= at(m, i, k) * at(m, j, k);
-      at(m, i, j) = s / l;
+      at(m, i, j) = s * inv;
     }
-    for (std::size_t c = j + 1; c < B; ++c) at(m, j, c) = 0.0;
+    inverse_diagonal(m, j) = inv;
   }
   return true;
+}
+
+// X ← L⁻¹ X, the four columns of X at once (forward substitution on its rows).
+void lower_solve_rows(const Block4& l, Block4& x) {
+  V4 r0 = row(x, 0) * splat(inverse_diagonal(l, 0));
+  V4 r1 = (row(x, 1) - splat(at(l, 1, 0)) * r0) * splat(inverse_diagonal(l, 1));
+  V4 r2 = (row(x, 2) - splat(at(l, 2, 0)) * r0 - splat(at(l, 2, 1)) * r1) * splat(inverse_diagonal(l, 2));
+  V4 r3 = (row(x, 3) - splat(at(l, 3, 0)) * r0 - splat(at(l, 3, 1)) * r1 - splat(at(l, 3, 2)) * r2) *
+          splat(inverse_diagonal(l, 3));
+  set_row(x, 0, r0);
+  set_row(x, 1, r1);
+  set_row(x, 2, r2);
+  set_row(x, 3, r3);
 }
 
 // v ← L⁻¹ v (forward substitution)
@@ -65,7 +101,7 @@ void lower_solve(const Block4& l, double* v) {
   for (std::size_t i = 0; i < B; ++i) {
     double s = v[i];
     for (std::size_t k = 0; k < i; ++k) s -= at(l, i, k) * v[k];
-    v[i] = s / at(l, i, i);
+    v[i] = s * inverse_diagonal(l, i);
   }
 }
 
@@ -74,30 +110,25 @@ void upper_solve(const Block4& l, double* v) {
   for (std::size_t i = B; i-- > 0;) {
     double s = v[i];
     for (std::size_t k = i + 1; k < B; ++k) s -= at(l, k, i) * v[k];
-    v[i] = s / at(l, i, i);
+    v[i] = s * inverse_diagonal(l, i);
   }
 }
 
-// m ← m L⁻ᵀ: each row x of the result solves L xᵀ = (row of m)ᵀ.
-void right_solve_transpose(Block4& m, const Block4& l) {
-  for (std::size_t r = 0; r < B; ++r) lower_solve(l, m.data() + r * B);
+// v ← v − A x, given Aᵀ: A x = Σ_k x_k (row k of Aᵀ).
+void subtract_product(double* v, const Block4& a_t, const double* x) {
+  V4 s = splat(x[0]) * row(a_t, 0);
+  s += splat(x[1]) * row(a_t, 1);
+  s += splat(x[2]) * row(a_t, 2);
+  s += splat(x[3]) * row(a_t, 3);
+  store(v, load(v) - s);
 }
 
-// v ← v − a x
-void subtract_product(double* v, const Block4& a, const double* x) {
+// v ← v − Aᵀ x, given Aᵀ: (Aᵀ x)_r = (row r of Aᵀ)·x.
+void subtract_transpose_product(double* v, const Block4& a_t, const double* x) {
   for (std::size_t r = 0; r < B; ++r) {
     double s = 0.0;
-    for (std::size_t k = 0; k < B; ++k) s += at(a, r, k) * x[k];
+    for (std::size_t k = 0; k < B; ++k) s += at(a_t, r, k) * x[k];
     v[r] -= s;
-  }
-}
-
-// v ← v − aᵀ x
-void subtract_transpose_product(double* v, const Block4& a, const double* x) {
-  for (std::size_t c = 0; c < B; ++c) {
-    double s = 0.0;
-    for (std::size_t k = 0; k < B; ++k) s += at(a, k, c) * x[k];
-    v[c] -= s;
   }
 }
 
@@ -120,33 +151,38 @@ void CyclicBlockCholesky::reset(std::size_t blocks) {
 
 bool CyclicBlockCholesky::factor() {
   const std::size_t p = blocks_;
-  // The chain 1 … P−1, then the border block 0 (see the header).
+  for (std::size_t k = 0; k < p; ++k) couple_[k] = transpose(couple_[k]);  // kept transposed from here on
+  // The chain 1 … P−1, then the border block 0 (see the header). couple_[j] holds L_{j+1,j}ᵀ and
+  // border_[j] holds L_{0,j}ᵀ.
   for (std::size_t j = 1; j < p; ++j) {
-    if (j > 1) subtract_aat_lower(diag_[j], couple_[j - 1]);  // K_jj − L_{j,j−1} L_{j,j−1}ᵀ
+    if (j > 1) subtract_abt(diag_[j], couple_[j - 1], couple_[j - 1]);  // K_jj − L_{j,j−1} L_{j,j−1}ᵀ
     if (!cholesky(diag_[j])) return false;
-    // Block 0's row: K_{0,j} is K_{1,0}ᵀ at j = 1 and the wrap K_{0,P−1} at j = P−1, zero between.
+    // Block 0's row: K_{0,j} is K_{1,0}ᵀ at j = 1 and the wrap K_{0,P−1} at j = P−1, zero between;
+    // here transposed: K_{1,0} and K_{0,P−1}ᵀ.
     Block4& b = border_[j];
     if (j == 1) b = transpose(couple_[0]);
     else if (j == p - 1) b = couple_[p - 1];
     else b.fill(0.0);
-    if (j > 1) subtract_abt(b, border_[j - 1], couple_[j - 1]);  // − L_{0,j−1} L_{j,j−1}ᵀ
-    right_solve_transpose(b, diag_[j]);
-    if (j + 1 < p) right_solve_transpose(couple_[j], diag_[j]);  // L_{j+1,j} = K_{j+1,j} L_jj⁻ᵀ
-    subtract_aat_lower(diag_[0], b);                               // K_00 − Σ L_{0,j} L_{0,j}ᵀ
+    if (j > 1) subtract_abt(b, couple_[j - 1], border_[j - 1]);  // (L_{0,j−1} L_{j,j−1}ᵀ)ᵀ = L_{j,j−1} L_{0,j−1}ᵀ
+    lower_solve_rows(diag_[j], b);                               // L_{0,j}ᵀ = L_jj⁻¹ (K_{0,j} − …)ᵀ
+    if (j + 1 < p) lower_solve_rows(diag_[j], couple_[j]);        // L_{j+1,j}ᵀ = L_jj⁻¹ K_{j+1,j}ᵀ
+    subtract_abt(diag_[0], b, b);                                 // K_00 − Σ L_{0,j} L_{0,j}ᵀ
   }
   return cholesky(diag_[0]);
 }
 
-void CyclicBlockCholesky::forward(double* y) const {
+void CyclicBlockCholesky::forward(double* const* ys, std::size_t count) const {
+  TIRE_ASSERT(count <= kMaxRightHandSides, "too many right-hand sides for one forward solve");
   const std::size_t p = blocks_;
-  double* y0 = y;
-  for (std::size_t j = 1; j < p; ++j) {
-    double* yj = y + B * j;
-    if (j > 1) subtract_product(yj, couple_[j - 1], yj - B);
-    lower_solve(diag_[j], yj);
-    subtract_product(y0, border_[j], yj);
-  }
-  lower_solve(diag_[0], y0);
+  // Block by block, every vector at once: their chains are independent, so the CPU overlaps them.
+  for (std::size_t j = 1; j < p; ++j)
+    for (std::size_t v = 0; v < count; ++v) {
+      double* yj = ys[v] + B * j;
+      if (j > 1) subtract_product(yj, couple_[j - 1], yj - B);
+      lower_solve(diag_[j], yj);
+      subtract_product(ys[v], border_[j], yj);
+    }
+  for (std::size_t v = 0; v < count; ++v) lower_solve(diag_[0], ys[v]);
 }
 
 void CyclicBlockCholesky::backward(double* x) const {

@@ -170,6 +170,8 @@ const Scene kScenes[] = {
      [] { return prototype_world(tire::SpokePattern::cross, 8, 1); }, {1.0, false}},
     {"global-tire", "as default-tire, solved by the global method at its default settings (4 substeps x 1 iteration)",
      [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); }, {1.0, false}},
+    {"global-tire-2x1", "as global-tire, at 2 substeps x 1 iteration",
+     [] { return prototype_world(tire::SpokePattern::cross, 2, 1, tire::SolverMethod::global); }, {1.0, false}},
     {"global-tire-resting", "as global-tire, resting (no steering)",
      [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); }, {}},
     {"bare-tire", "1 default tire on a ground box, stepped by the tire solver alone (no World, no level)",

@@ -38,8 +38,11 @@ class CyclicBlockCholesky {
   // then unusable.
   bool factor();
   // y ← L⁻¹ y and x ← L⁻ᵀ x, on vectors of size() entries in block order (block k at 4k).
-  void forward(double* y) const;
+  void forward(double* y) const { forward(&y, 1); }
   void backward(double* x) const;
+  // y ← L⁻¹ y for `count` vectors at once (at most kMaxRightHandSides), faster than one by one.
+  static constexpr std::size_t kMaxRightHandSides = 4;
+  void forward(double* const* ys, std::size_t count) const;
   // x ← K⁻¹ x: forward then backward.
   void solve(double* x) const {
     forward(x);
@@ -49,7 +52,9 @@ class CyclicBlockCholesky {
  private:
   std::size_t blocks_ = 0;
   // Before factor(): K's blocks. After: L's, with diag_[k] = L_kk (lower triangular), couple_[k] =
-  // L_{k+1,k} for the chain k = 1 … P−2, and border_[k] = L_{0,k} (block 0's row) for k = 1 … P−1.
+  // L_{k+1,k}ᵀ for the chain k = 1 … P−2, and border_[k] = L_{0,k}ᵀ (block 0's row) for k = 1 … P−1:
+  // the blocks below the diagonal are kept transposed, so what the factor and the forward solve
+  // read of them are rows, four doubles side by side.
   std::vector<Block4> diag_;
   std::vector<Block4> couple_;
   std::vector<Block4> border_;
