@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <string_view>
+#include <vector>
+
+#include "tire/io/level_schema.h"
 
 namespace game {
 
@@ -74,7 +78,13 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
         const SliderRange range = slider_range(p);
         double& value = t.values[i];
         const char* label = spec ? spec->label : p.key;
-        const char* tip = spec ? spec->tip : p.description;
+        // A key without a spec shows the table's description, its {range} written out.
+        static const std::vector<std::string> descriptions = [&rows] {
+          std::vector<std::string> out;
+          for (const tire::Parameter* row : rows) out.push_back(tire::described(row->description, row->range));
+          return out;
+        }();
+        const char* tip = spec ? spec->tip : descriptions[i].c_str();
         switch (spec ? spec->scale : p.integer ? SliderScale::integer : SliderScale::linear) {
           case SliderScale::exponent: log_slider(label, value, range.min, range.max, tip); break;
           case SliderScale::integer:

@@ -41,13 +41,6 @@ std::string number_for_docs(double v) {
   return s.str();
 }
 
-std::string described(const char* description, const Range& range) {
-  std::string text(description);
-  const std::size_t at = text.find("{range}");
-  if (at != std::string::npos) text.replace(at, 7, range_for_docs(range));
-  return text;
-}
-
 // The bounds of a range as schema keywords, into `o`.
 void put_bounds(ojson& o, const Range& range) {
   o[range.min_open ? "exclusiveMinimum" : "minimum"] = number(range.min);
@@ -183,6 +176,13 @@ void write(std::string& out, const ojson& v, std::size_t indent, std::size_t col
 std::string range_for_docs(const Range& range) {
   return std::string(range.min_open ? "(" : "[") + number_for_docs(range.min) + ", " + number_for_docs(range.max) +
          (range.max_open ? ")" : "]");
+}
+
+std::string described(const char* description, const Range& range) {
+  std::string text(description);
+  const std::size_t at = text.find("{range}");
+  if (at != std::string::npos) text.replace(at, 7, range_for_docs(range));
+  return text;
 }
 
 std::string format_json(const ojson& value) {

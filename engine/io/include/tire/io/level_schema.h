@@ -31,4 +31,8 @@ std::string format_json(const nlohmann::ordered_json& value);
 // A range as the schema's descriptions write it: "[0.0001, 0.1]", "(0, 10⁶]".
 std::string range_for_docs(const Range& range);
 
+// A parameter's description as people read it (the schema, the tuning panel's tooltips): its
+// "{range}" replaced by the range, written as range_for_docs writes it.
+std::string described(const char* description, const Range& range);
+
 }  // namespace tire
