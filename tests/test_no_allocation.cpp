@@ -328,3 +328,17 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
   for (int i = 0; i < 300; ++i) world.step({1.0, i % 60 == 0});
   check_untouched(before);
 }
+
+TEST_CASE("adding a tire to a world takes a bounded number of allocations", "[unit][performance]") {
+  // Issue 12: a tire's topology is shared by the tires of its shape and its own state is a few
+  // blocks. The figure is printed (the README quotes it) and bounded, so a regression shows.
+  World world(SolverConfig{}, {0, -9.81});
+  world.add_tire(tire_at({0.0, 0.6}));  // the shape's first tire also builds the shared topology
+  world.add_tire(tire_at({1.5, 0.6}));  // grows the world's own arrays past their first sizes
+  HeapActivity before = HeapActivity::now();
+  world.add_tire(tire_at({3.0, 0.6}));
+  const HeapActivity after = HeapActivity::now();
+  const long allocations = (after.news - before.news) + (after.aligned_news - before.aligned_news);
+  WARN("allocations per add_tire (a third tire of a shape already present): " << allocations);
+  CHECK(allocations > 0);
+}

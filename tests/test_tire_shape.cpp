@@ -80,3 +80,59 @@ TEST_CASE("a NaN never spreads: the tire is reset and a warning raised", "[unit]
   CHECK(world.find_tire(0)->centroid().y == Approx(2.0).margin(0.05));  // back at its spawn
   CHECK(world.find_tire(1)->centroid().y < 1.99);  // the other tire carried on falling
 }
+
+TEST_CASE("tires of one shape share one topology and keep their own compliance", "[unit][shape]") {
+  // Issue 12: the topology (pairs, compliance groups, SIMD batch cut) is shared by the tires of a
+  // shape; what is tuned per tire (compliance) stays per tire.
+  const auto make_world = [] {
+    World w(SolverConfig{}, {0, -9.81});
+    w.add_obstacle({{{-100, -1}, {100, 0}}});
+    return w;
+  };
+  TireSpec a = tire_at({0.0, 0.8});
+  TireSpec b = tire_at({20.0, 0.8});  // far from a: the two never touch
+  TireSpec other_segments = tire_at({40.0, 0.8});
+  other_segments.segments = 20;
+  TireSpec other_spokes = tire_at({60.0, 0.8});
+  other_spokes.spokes = SpokePattern::radial;
+
+  World both = make_world();
+  const TireId ia = both.add_tire(a), ib = both.add_tire(b);
+  const TireId is = both.add_tire(other_segments), ip = both.add_tire(other_spokes);
+  CHECK(both.find_tire(ia)->topology == both.find_tire(ib)->topology);
+  CHECK(both.find_tire(ia)->distance.layout() == both.find_tire(ib)->distance.layout());
+  CHECK(both.find_tire(is)->topology != both.find_tire(ia)->topology);
+  CHECK(both.find_tire(ip)->topology != both.find_tire(ia)->topology);
+  CHECK(both.find_tire(ip)->topology != both.find_tire(is)->topology);
+
+  // Soften a alone: b must move exactly as it does in a world of its own.
+  TireCompliance soft = a.compliance;
+  soft.outer *= 100.0;
+  soft.spoke *= 100.0;
+  both.find_tire(ia)->set_compliance(soft);
+  CHECK(both.find_tire(ib)->distance.constraints()[0].compliance == b.compliance.outer);
+  CHECK(both.find_tire(ia)->distance.constraints()[0].compliance == soft.outer);
+
+  World alone_b = make_world();
+  alone_b.add_tire(b);
+  World alone_a = make_world();
+  alone_a.add_tire(a);
+  alone_a.find_tire(alone_a.tires().front().id)->set_compliance(soft);
+  for (int i = 0; i < 120; ++i) {
+    both.step({0.0, false});
+    alone_b.step({0.0, false});
+    alone_a.step({0.0, false});
+  }
+  const Tire& b_in_both = *both.find_tire(ib);
+  const Tire& a_in_both = *both.find_tire(ia);
+  const Tire& b_alone = alone_b.tires().front();
+  const Tire& a_alone = alone_a.tires().front();
+  for (std::uint32_t i = 0; i < b_alone.particle_count(); ++i) {
+    CHECK(b_in_both.particles.x[i].x == b_alone.particles.x[i].x);
+    CHECK(b_in_both.particles.x[i].y == b_alone.particles.x[i].y);
+    CHECK(a_in_both.particles.x[i].x == a_alone.particles.x[i].x);
+    CHECK(a_in_both.particles.x[i].y == a_alone.particles.x[i].y);
+  }
+  // And the softened tire did behave otherwise: it sags more than b.
+  CHECK(a_in_both.centroid().y < b_in_both.centroid().y);
+}

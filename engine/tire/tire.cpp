@@ -8,20 +8,7 @@
 
 namespace tire {
 
-namespace {
-
-// Appends ring edges (i, i+1) of a ring starting at `first`: even edges, then odd ones, so that
-// consecutive constraints share no particle and the CPU can overlap their square roots.
-void add_ring(std::vector<DistanceConstraint>& out, std::uint32_t first, std::uint32_t n,
-              double compliance) {
-  for (std::uint32_t parity = 0; parity < 2; ++parity)
-    for (std::uint32_t i = parity; i < n; i += 2)
-      out.push_back({first + i, first + (i + 1) % n, 0.0, compliance});
-}
-
-}  // namespace
-
-Tire::Tire(TireId id_, const TireSpec& spec_)
+Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology> topology_)
     : id(id_), spec(spec_), spawn_mass(spec_.mass), n(static_cast<std::uint32_t>(spec_.segments)),
       segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
   TIRE_ASSERT(spec.segments >= 3, "a tire ring of fewer than three segments");
@@ -39,22 +26,20 @@ Tire::Tire(TireId id_, const TireSpec& spec_)
   soft_lambda.resize(n);
   on_tire.resize(2 * n);
 
-  std::vector<DistanceConstraint> list;
-  add_ring(list, 0, n, spec.compliance.outer);
-  add_ring(list, n, n, spec.compliance.inner);
-  for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, i, 0.0, spec.compliance.spoke});
-  if (spec.spokes == SpokePattern::cross) {
-    for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + 1) % n, 0.0, spec.compliance.spoke});
-    for (std::uint32_t i = 0; i < n; ++i) list.push_back({n + i, (i + n - 1) % n, 0.0, spec.compliance.spoke});
-  }
+  topology = topology_ ? std::move(topology_) : std::make_shared<const TireTopology>(TireShape::of(spec));
+  TIRE_ASSERT(topology->shape() == TireShape::of(spec), "a tire built on the topology of another shape");
   area_constraint = {0, n, 0.0, spec.pressure, spec.compliance.pressure};
   // The rim's area is as stiff as its ring: α_area = α_inner·r² (m³/N) matches the ring's own
   // resistance to a change of radius, so a metal rim is nearly rigid and a rubber one is not.
   rim_area_constraint = {n, n, 0.0, 1.0, spec.compliance.inner * spec.inner_radius * spec.inner_radius};
   reset();
   // Rest lengths and rest area are those of the tire as built, so it starts in equilibrium.
-  for (DistanceConstraint& c : list) c.rest_length = length(particles.x[c.b] - particles.x[c.a]);
-  distance = DistanceConstraintSet(std::move(list));
+  const DistanceLayout& layout = *topology->distance();
+  std::vector<double> rest_length(layout.size());
+  for (std::size_t k = 0; k < layout.size(); ++k)
+    rest_length[k] = length(particles.x[layout.pairs()[k].b] - particles.x[layout.pairs()[k].a]);
+  const double compliance[TireTopology::group_count] = {spec.compliance.outer, spec.compliance.inner, spec.compliance.spoke};
+  distance = DistanceConstraintSet(topology->distance(), rest_length, compliance);
   area_constraint.rest_area = polygon_area(particles.x.data(), n);
   rim_area_constraint.rest_area = polygon_area(particles.x.data() + n, n);
   TIRE_ASSERT(distance.size() == (spec.spokes == SpokePattern::cross ? 5u : 3u) * n, "a ring or a spoke is missing");
@@ -98,9 +83,9 @@ Vec2 mean(const std::vector<Vec2>& values) {
 void Tire::set_compliance(const TireCompliance& c) {
   TIRE_ASSERT(c.outer >= 0.0 && c.inner >= 0.0 && c.spoke >= 0.0 && c.pressure >= 0.0, "a negative compliance");
   spec.compliance = c;
-  distance.set_compliance(outer_ring_first(), n, c.outer);
-  distance.set_compliance(inner_ring_first(), n, c.inner);
-  distance.set_compliance(spokes_first(), distance.size() - spokes_first(), c.spoke);
+  distance.set_group_compliance(TireTopology::outer_ring, c.outer);
+  distance.set_group_compliance(TireTopology::inner_ring, c.inner);
+  distance.set_group_compliance(TireTopology::spoke, c.spoke);
   area_constraint.compliance = c.pressure;
   rim_area_constraint.compliance = c.inner * spec.inner_radius * spec.inner_radius;
 }

@@ -164,7 +164,7 @@ void World::release_particle(TireId id) {
 
 TireId World::add_tire(const TireSpec& spec) {
   const TireId id = next_id_++;
-  tires_.emplace_back(id, spec);
+  tires_.emplace_back(id, spec, topologies_.of(TireShape::of(spec)));
   if (spec.player || !player_) player_ = id;
   // Room for the contacts between tires, so that stepping never allocates: a tire in a pile
   // touches at most six others, and a pair is counted once.

@@ -12,34 +12,30 @@
 
 namespace tire {
 
-DistanceConstraintSet::DistanceConstraintSet(std::vector<DistanceConstraint> constraints)
-    : constraints_(std::move(constraints)) {
-  for (const DistanceConstraint& c : constraints_) {
-    TIRE_ASSERT(c.a != c.b, "a distance constraint joins a particle to itself");
-    TIRE_ASSERT(c.rest_length >= 0.0 && std::isfinite(c.rest_length), "a rest length is negative, NaN or infinite");
-    TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance), "a compliance is negative, NaN or infinite");
-    particle_count_ = std::max<std::size_t>(particle_count_, std::max(c.a, c.b) + std::size_t{1});
+DistanceLayout::DistanceLayout(std::vector<Pair> pairs, std::vector<std::uint32_t> group, const double* w)
+    : pairs_(std::move(pairs)), group_(std::move(group)) {
+  TIRE_ASSERT(group_.size() == pairs_.size(), "a distance constraint without a compliance group");
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    TIRE_ASSERT(pairs_[k].a != pairs_[k].b, "a distance constraint joins a particle to itself");
+    particle_count_ = std::max<std::size_t>(particle_count_, std::max(pairs_[k].a, pairs_[k].b) + std::size_t{1});
+    group_count_ = std::max<std::size_t>(group_count_, group_[k] + std::size_t{1});
   }
-  build_batches(nullptr);
-}
-
-void DistanceConstraintSet::build_batches(const double* w) {
-  batches_.clear();
-  params_of_.clear();
-  params_.clear();
-  slot_.assign(constraints_.size(), 0);
-  const auto params_index = [&](const Params& q) {
-    for (std::size_t i = 0; i < params_.size(); ++i)
-      if (params_[i].compliance == q.compliance && params_[i].w_a == q.w_a && params_[i].w_b == q.w_b)
-        return static_cast<std::uint32_t>(i);
-    params_.push_back(q);
-    return static_cast<std::uint32_t>(params_.size() - 1);
+  slot_.assign(pairs_.size(), 0);
+  // A class is a group and a pair of inverse masses; without masses, a group.
+  const auto same_class = [&](const Class& p, const Class& q) {
+    return p.group == q.group && (!w || (w[p.a] == w[q.a] && w[p.b] == w[q.b]));
   };
-  // Greedy, in order: a constraint joins the open batch unless it shares a particle with it or has
-  // another compliance or other inverse masses. The order of the constraints is kept whatever the
-  // cut, and the lanes of a batch are independent, so the cut never changes a result.
-  Batch open{};
-  Params open_params;
+  const auto class_index = [&](const Class& q) {
+    for (std::size_t i = 0; i < classes_.size(); ++i)
+      if (same_class(classes_[i], q)) return static_cast<std::uint32_t>(i);
+    classes_.push_back(q);
+    return static_cast<std::uint32_t>(classes_.size() - 1);
+  };
+  // Greedy, in order: a constraint joins the open batch unless it shares a particle with it or is
+  // of another class. The order of the constraints is kept whatever the cut, and the lanes of a
+  // batch are independent, so the cut never changes a result.
+  Lanes open{};
+  Class open_class;
   std::uint32_t count = 0;
   const auto close = [&] {
     if (count == 0) return;
@@ -55,50 +51,139 @@ void DistanceConstraintSet::build_batches(const double* w) {
     for (std::uint32_t l = count; l < kLanes; ++l) {
       open.a[l] = open.a[0];
       open.b[l] = open.b[0];
-      open.rest_length[l] = open.rest_length[0];
     }
     batches_.push_back(open);
-    params_of_.push_back(params_index(open_params));
-    open = Batch{};
+    class_of_.push_back(class_index(open_class));
+    open = Lanes{};
     count = 0;
   };
-  for (std::size_t k = 0; k < constraints_.size(); ++k) {
-    const DistanceConstraint& c = constraints_[k];
-    const Params q{c.compliance, w ? w[c.a] : 1.0, w ? w[c.b] : 1.0};
-    bool fits = q.compliance == open_params.compliance && q.w_a == open_params.w_a && q.w_b == open_params.w_b;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const Pair c = pairs_[k];
+    const Class q{group_[k], c.a, c.b};
+    bool fits = count > 0 && same_class(q, open_class);
     for (std::uint32_t l = 0; l < count; ++l)
       fits &= open.a[l] != c.a && open.a[l] != c.b && open.b[l] != c.a && open.b[l] != c.b;
     if (!fits) close();
-    if (count == 0) open_params = q;
+    if (count == 0) open_class = q;
     const std::uint32_t l = count++;
     slot_[k] = static_cast<std::uint32_t>(batches_.size() * kLanes + l);
     open.a[l] = c.a;
     open.b[l] = c.b;
-    open.rest_length[l] = c.rest_length;
     if (count == kLanes) close();
   }
   close();
 }
 
+bool DistanceLayout::fits(const double* w) const {
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const Class& q = classes_[class_of_[slot_[k] / kLanes]];
+    if (w[pairs_[k].a] != w[q.a] || w[pairs_[k].b] != w[q.b]) return false;
+  }
+  return true;
+}
+
+DistanceConstraintSet::DistanceConstraintSet(const std::vector<DistanceConstraint>& constraints) {
+  std::vector<DistanceLayout::Pair> pairs;
+  std::vector<std::uint32_t> group;
+  std::vector<double> rest_length;
+  pairs.reserve(constraints.size());
+  group.reserve(constraints.size());
+  rest_length.reserve(constraints.size());
+  for (const DistanceConstraint& c : constraints) {
+    TIRE_ASSERT(c.rest_length >= 0.0 && std::isfinite(c.rest_length), "a rest length is negative, NaN or infinite");
+    TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance), "a compliance is negative, NaN or infinite");
+    const auto it = std::find(compliance_.begin(), compliance_.end(), c.compliance);
+    group.push_back(static_cast<std::uint32_t>(it - compliance_.begin()));
+    if (it == compliance_.end()) compliance_.push_back(c.compliance);
+    pairs.push_back({c.a, c.b});
+    rest_length.push_back(c.rest_length);
+  }
+  adopt(std::make_shared<const DistanceLayout>(std::move(pairs), std::move(group)), rest_length);
+}
+
+DistanceConstraintSet::DistanceConstraintSet(std::shared_ptr<const DistanceLayout> layout,
+                                             std::span<const double> rest_length, std::span<const double> compliance)
+    : compliance_(compliance.begin(), compliance.end()) {
+  TIRE_ASSERT(layout && compliance_.size() == layout->group_count(), "a compliance per group of the layout");
+  for (double c : compliance_)
+    TIRE_ASSERT(c >= 0.0 && std::isfinite(c), "a compliance is negative, NaN or infinite");
+  for (double l : rest_length)
+    TIRE_ASSERT(l >= 0.0 && std::isfinite(l), "a rest length is negative, NaN or infinite");
+  adopt(std::move(layout), rest_length);
+}
+
+void DistanceConstraintSet::adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length) {
+  TIRE_ASSERT(rest_length.size() == layout->size(), "a rest length per constraint of the layout");
+  layout_ = std::move(layout);
+  state_.assign(layout_->batch_count(), LaneState{});
+  const std::vector<std::uint32_t>& slot = layout_->slot();
+  for (std::size_t k = 0; k < slot.size(); ++k) state_[slot[k] / kLanes].rest_length[slot[k] % kLanes] = rest_length[k];
+  // A lane that repeats lane 0 repeats its rest length too (is_copy).
+  const std::vector<DistanceLayout::Lanes>& batches = layout_->batches();
+  for (std::size_t i = 0; i < batches.size(); ++i)
+    for (std::uint32_t l = 1; l < kLanes; ++l)
+      if (batches[i].a[l] == batches[i].a[0]) state_[i].rest_length[l] = state_[i].rest_length[0];
+  params_.assign(layout_->classes().size(), Params{});
+  w_built_.clear();
+}
+
+DistanceConstraint DistanceConstraintSet::constraint(std::size_t k) const {
+  const std::uint32_t s = layout_->slot()[k];
+  const DistanceLayout::Pair p = layout_->pairs()[k];
+  const double compliance = pending_.empty() ? compliance_[layout_->group()[k]] : pending_[k];
+  return {p.a, p.b, state_[s / kLanes].rest_length[s % kLanes], compliance};
+}
+
 void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count, double compliance) {
   TIRE_ASSERT(compliance >= 0.0 && std::isfinite(compliance), "a compliance is negative, NaN or infinite");
-  for (std::size_t k = first; k < first + count && k < constraints_.size(); ++k) constraints_[k].compliance = compliance;
-  rebuild_ = true;
+  if (pending_.empty())
+    for (std::size_t k = 0; k < size(); ++k) pending_.push_back(compliance_[layout_->group()[k]]);
+  for (std::size_t k = first; k < first + count && k < size(); ++k) pending_[k] = compliance;
+}
+
+void DistanceConstraintSet::set_group_compliance(std::size_t g, double compliance) {
+  TIRE_ASSERT(compliance >= 0.0 && std::isfinite(compliance), "a compliance is negative, NaN or infinite");
+  TIRE_ASSERT(g < compliance_.size() && pending_.empty(), "no such group, or compliances set by range and not yet prepared");
+  compliance_[g] = compliance;
 }
 
 void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
   TIRE_ASSERT(h > 0.0 && std::isfinite(h), "the substep is not a positive length of time");
   TIRE_ASSERT(tau >= 0.0 && std::isfinite(tau), "the damping time is negative, NaN or infinite");
-  TIRE_ASSERT(std::all_of(w, w + particle_count_, [](double wi) { return wi >= 0.0 && std::isfinite(wi); }),
+  const std::size_t particle_count = layout_->particle_count();
+  TIRE_ASSERT(std::all_of(w, w + particle_count, [](double wi) { return wi >= 0.0 && std::isfinite(wi); }),
               "an inverse mass is negative, NaN or infinite");
-  // The batches follow the inverse masses: built again only when one changed (a new tire mass).
-  if (rebuild_ || w_built_.size() != particle_count_ || !std::equal(w_built_.begin(), w_built_.end(), w)) {
-    build_batches(w);
-    w_built_.assign(w, w + particle_count_);
-    rebuild_ = false;
+  // The shared layout serves while every batch's lanes have its class's masses (a tire's particles
+  // all weigh the same) and compliances are set by group. Otherwise the set is cut again, on a
+  // layout of its own (the cut never changes a result, see DistanceLayout).
+  const bool regroup = !pending_.empty();
+  if (regroup || w_built_.size() != particle_count || !std::equal(w_built_.begin(), w_built_.end(), w)) {
+    if (regroup || !layout_->fits(w)) {
+      std::vector<double> rest_length(size()), per_constraint(size());
+      for (std::size_t k = 0; k < size(); ++k) {
+        const DistanceConstraint c = constraint(k);
+        rest_length[k] = c.rest_length;
+        per_constraint[k] = c.compliance;
+      }
+      pending_.clear();
+      compliance_.clear();
+      std::vector<std::uint32_t> group(size());
+      for (std::size_t k = 0; k < size(); ++k) {
+        const auto it = std::find(compliance_.begin(), compliance_.end(), per_constraint[k]);
+        group[k] = static_cast<std::uint32_t>(it - compliance_.begin());
+        if (it == compliance_.end()) compliance_.push_back(per_constraint[k]);
+      }
+      adopt(std::make_shared<const DistanceLayout>(layout_->pairs(), std::move(group), w), rest_length);
+    }
+    w_built_.assign(w, w + particle_count);
   }
   const double inv_h2 = 1.0 / (h * h);
-  for (Params& q : params_) {
+  const std::vector<DistanceLayout::Class>& classes = layout_->classes();
+  for (std::size_t i = 0; i < params_.size(); ++i) {
+    Params& q = params_[i];
+    q.compliance = compliance_[classes[i].group];
+    q.w_a = w[classes[i].a];
+    q.w_b = w[classes[i].b];
     q.alpha_tilde = q.compliance * inv_h2;  // α̃ = α/h²  (XPBD eq. 4)
     // ∇C M⁻¹ ∇Cᵀ + α̃ with |∇C| = 1 at each end
     const double denominator = q.w_a + q.w_b + q.alpha_tilde;
@@ -112,11 +197,13 @@ void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
 }
 
 void DistanceConstraintSet::reset_lambda() {
-  for (Batch& batch : batches_) std::fill(std::begin(batch.lambda), std::end(batch.lambda), 0.0);
+  for (LaneState& s : state_) std::fill(std::begin(s.lambda), std::end(s.lambda), 0.0);
 }
 
 double DistanceConstraintSet::lambda(std::size_t k) const {
-  return k < slot_.size() ? batches_[slot_[k] / kLanes].lambda[slot_[k] % kLanes] : 0.0;
+  if (!layout_ || k >= layout_->size()) return 0.0;
+  const std::uint32_t s = layout_->slot()[k];
+  return state_[s / kLanes].lambda[s % kLanes];
 }
 
 namespace {
@@ -133,15 +220,15 @@ bool is_copy(const B& batch, std::uint32_t l) {
   return l > 0 && batch.a[l] == batch.a[0];
 }
 
-template <typename B, typename P>
-void solve_scalar(B& batch, const P& q, Vec2* x) {
+template <typename B, typename S, typename P>
+void solve_scalar(const B& batch, S& s, const P& q, Vec2* x) {
   for (std::uint32_t l = 0; l < B::kLanes && !is_copy(batch, l); ++l) {
     const Vec2 xa = x[batch.a[l]], xb = x[batch.b[l]];
     const double dx = xb.x - xa.x, dy = xb.y - xa.y;
     const double len = std::sqrt(dx * dx + dy * dy);
     const double inv_len = len > 0.0 ? 1.0 / len : 0.0;
-    const double delta_lambda = ((batch.rest_length[l] - len) - q.alpha_tilde * batch.lambda[l]) * q.inv_denominator;
-    batch.lambda[l] += delta_lambda;
+    const double delta_lambda = ((s.rest_length[l] - len) - q.alpha_tilde * s.lambda[l]) * q.inv_denominator;
+    s.lambda[l] += delta_lambda;
     const double nx = dx * inv_len, ny = dy * inv_len;
     const double sa = q.w_a * delta_lambda, sb = q.w_b * delta_lambda;
     x[batch.a[l]] = {xa.x - nx * sa, xa.y - ny * sa};
@@ -190,12 +277,13 @@ __attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t*
   _mm_storeu_pd(&x[idx[3]].x, _mm256_extractf128_pd(t13, 1));
 }
 
-template <typename B, typename P>
-__attribute__((target("avx"))) void solve_avx(B* batches, const std::uint32_t* params_of, const P* params,
-                                               std::size_t n, Vec2* x) {
+template <typename B, typename S, typename P>
+__attribute__((target("avx"))) void solve_avx(const B* batches, S* states, const std::uint32_t* params_of,
+                                               const P* params, std::size_t n, Vec2* x) {
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   for (std::size_t k = 0; k < n; ++k) {
-    B& batch = batches[k];
+    const B& batch = batches[k];
+    S& s = states[k];
     const P& q = params[params_of[k]];
     __m256d ax, ay, bx, by;
     gather(x, batch.a, ax, ay);
@@ -203,12 +291,12 @@ __attribute__((target("avx"))) void solve_avx(B* batches, const std::uint32_t* p
     const __m256d dx = _mm256_sub_pd(bx, ax), dy = _mm256_sub_pd(by, ay);
     const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
     const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
-    const __m256d lambda = _mm256_load_pd(batch.lambda);
+    const __m256d lambda = _mm256_load_pd(s.lambda);
     const __m256d delta_lambda = _mm256_mul_pd(
-        _mm256_sub_pd(_mm256_sub_pd(_mm256_load_pd(batch.rest_length), len),
+        _mm256_sub_pd(_mm256_sub_pd(_mm256_load_pd(s.rest_length), len),
                       _mm256_mul_pd(_mm256_set1_pd(q.alpha_tilde), lambda)),
         _mm256_set1_pd(q.inv_denominator));
-    _mm256_store_pd(batch.lambda, _mm256_add_pd(lambda, delta_lambda));
+    _mm256_store_pd(s.lambda, _mm256_add_pd(lambda, delta_lambda));
     const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
     const __m256d sa = _mm256_mul_pd(_mm256_set1_pd(q.w_a), delta_lambda);
     const __m256d sb = _mm256_mul_pd(_mm256_set1_pd(q.w_b), delta_lambda);
@@ -248,31 +336,38 @@ const bool kCpuHasAvx = __builtin_cpu_supports("avx");
 }  // namespace
 
 void DistanceConstraintSet::solve(Vec2* x) {
-  TIRE_ASSERT(!rebuild_ && w_built_.size() == particle_count_, "solve() before prepare(), or after a change it has not seen");
+  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(), "solve() before prepare(), or after a change it has not seen");
+  const DistanceLayout& layout = *layout_;
+  const std::size_t n = layout.batch_count();
+  const DistanceLayout::Lanes* batches = layout.batches().data();
+  const std::uint32_t* class_of = layout.class_of().data();
 #ifndef NDEBUG
-  const bool finite_before = std::all_of(x, x + particle_count_, [](Vec2 p) { return is_finite(p); });
+  const bool finite_before = std::all_of(x, x + layout.particle_count(), [](Vec2 p) { return is_finite(p); });
 #endif
 #ifdef TIRE_HAVE_AVX_PATH
   if (kCpuHasAvx && kernel_ == Kernel::automatic)
-    solve_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x);
+    solve_avx(batches, state_.data(), class_of, params_.data(), n, x);
   else
 #endif
-    for (std::size_t k = 0; k < batches_.size(); ++k) solve_scalar(batches_[k], params_[params_of_[k]], x);
+    for (std::size_t k = 0; k < n; ++k) solve_scalar(batches[k], state_[k], params_[class_of[k]], x);
 #ifndef NDEBUG
-  TIRE_ASSERT(!finite_before || std::all_of(batches_.begin(), batches_.end(),
-                                            [](const Batch& b) { return std::all_of(std::begin(b.lambda), std::end(b.lambda),
-                                                                                    [](double l) { return std::isfinite(l); }); }),
+  TIRE_ASSERT(!finite_before || std::all_of(state_.begin(), state_.end(),
+                                            [](const LaneState& s) { return std::all_of(std::begin(s.lambda), std::end(s.lambda),
+                                                                                        [](double l) { return std::isfinite(l); }); }),
               "a sweep from finite positions left a multiplier NaN or infinite");
 #endif
 }
 
 void DistanceConstraintSet::damp(const Vec2* x, Vec2* v) {
-  TIRE_ASSERT(!rebuild_ && w_built_.size() == particle_count_, "damp() before prepare(), or after a change it has not seen");
+  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(), "damp() before prepare(), or after a change it has not seen");
+  const DistanceLayout& layout = *layout_;
+  const std::size_t n = layout.batch_count();
+  const DistanceLayout::Lanes* batches = layout.batches().data();
+  const std::uint32_t* class_of = layout.class_of().data();
 #ifdef TIRE_HAVE_AVX_PATH
-  if (kCpuHasAvx && kernel_ == Kernel::automatic)
-    return damp_avx(batches_.data(), params_of_.data(), params_.data(), batches_.size(), x, v);
+  if (kCpuHasAvx && kernel_ == Kernel::automatic) return damp_avx(batches, class_of, params_.data(), n, x, v);
 #endif
-  for (std::size_t k = 0; k < batches_.size(); ++k) damp_scalar(batches_[k], params_[params_of_[k]], x, v);
+  for (std::size_t k = 0; k < n; ++k) damp_scalar(batches[k], params_[class_of[k]], x, v);
 }
 
 }  // namespace tire

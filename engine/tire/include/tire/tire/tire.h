@@ -15,6 +15,7 @@
 #include "tire/xpbd/particles.h"
 #include "tire/rigid/prop_geometry.h"
 #include "tire/tire/tire_spec.h"
+#include "tire/tire/tire_topology.h"
 
 namespace tire {
 
@@ -62,7 +63,9 @@ struct RigidMotion {
 };
 
 struct Tire {
-  Tire(TireId id, const TireSpec& spec);
+  // `topology`: the shared one of the spec's shape (World::add_tire passes its own); null builds one
+  // for this tire alone.
+  Tire(TireId id, const TireSpec& spec, std::shared_ptr<const TireTopology> topology = nullptr);
 
   // Puts every particle back where the spec builds it, at rest; forgets contacts and λ.
   void reset();
@@ -123,7 +126,9 @@ struct Tire {
   std::uint32_t n;              // particles per ring
   double segment_length;        // rest length of one outer-ring segment (m)
 
+  std::shared_ptr<const TireTopology> topology;  // shared by the tires of this shape
   Particles particles;
+  // On topology->distance(): this tire's rest lengths, λ and compliance per kind.
   DistanceConstraintSet distance;  // rings, then spokes; ordered so neighbours rarely share a particle
   AreaConstraint area_constraint;
   double area_lambda = 0.0;

@@ -144,6 +144,7 @@ class World {
   Vec2 gravity_;
   RigidWorld rigid_;
   std::vector<Tire> tires_;
+  TireTopologies topologies_;  // one per shape of tire added: what tires of a shape share
   TirePairFinder pair_finder_;
   std::vector<TirePair> tire_pairs_;     // this tick's candidate pairs
   // The pairs sorted into colours: no two pairs of a colour share a tire, so a colour's pairs are

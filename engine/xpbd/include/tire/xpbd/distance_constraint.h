@@ -7,7 +7,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -23,24 +25,118 @@ struct DistanceConstraint {
   double compliance = 0.0;   // α (m/N): inverse stiffness; 0 is rigid
 };
 
-// A set of distance constraints laid out for the solver: in their Gauss–Seidel order, cut into
-// batches of up to four that share no particle, stored lane by lane. Constraints in a batch are
+// What sets of distance constraints of one shape share (Jolt's shared settings): which particles
+// each constraint joins, the compliance group it takes its α from, and the cut of the constraints,
+// in their Gauss–Seidel order, into batches of up to four that share no particle and one set of
+// Params (one group, one pair of inverse masses). Immutable once built: held by std::shared_ptr
+// by every set that uses it. What changes per set (rest lengths, λ, the groups' compliances, the
+// inverse masses) lives in the set.
+class DistanceLayout {
+ public:
+  static constexpr int kLanes = 4;
+
+  // The particles of four lanes, 32 bytes. A batch that is not full repeats its first lane.
+  struct alignas(32) Lanes {
+    static constexpr std::uint32_t kLanes = DistanceLayout::kLanes;
+    std::uint32_t a[kLanes];
+    std::uint32_t b[kLanes];
+  };
+  static_assert(sizeof(Lanes) == 8 * kLanes);
+  // The lanes of a batch share one group and one pair of inverse masses: those of particles a and b.
+  struct Class {
+    std::uint32_t group = 0;
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+  };
+  struct Pair {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+  };
+
+  // `group[k]` is constraint k's compliance group. With inverse masses `w` the cut also splits at a
+  // change of (w_a, w_b); without (null), it splits by group only, and fits() tells whether some
+  // masses agree with it.
+  DistanceLayout(std::vector<Pair> pairs, std::vector<std::uint32_t> group, const double* w = nullptr);
+
+  std::size_t size() const { return pairs_.size(); }
+  std::size_t batch_count() const { return batches_.size(); }
+  std::size_t group_count() const { return group_count_; }
+  std::size_t particle_count() const { return particle_count_; }  // 1 + the highest particle index named
+  const std::vector<Pair>& pairs() const { return pairs_; }
+  const std::vector<std::uint32_t>& group() const { return group_; }
+  const std::vector<Lanes>& batches() const { return batches_; }
+  const std::vector<std::uint32_t>& class_of() const { return class_of_; }  // per batch
+  const std::vector<Class>& classes() const { return classes_; }
+  // Constraint k is lane slot()[k] % kLanes of batch slot()[k] / kLanes.
+  const std::vector<std::uint32_t>& slot() const { return slot_; }
+  // Whether every batch's lanes have the inverse masses of its class under `w`.
+  bool fits(const double* w) const;
+
+ private:
+  std::vector<Pair> pairs_;
+  std::vector<std::uint32_t> group_;
+  std::vector<Lanes> batches_;
+  std::vector<std::uint32_t> class_of_;
+  std::vector<Class> classes_;
+  std::vector<std::uint32_t> slot_;
+  std::size_t group_count_ = 0;
+  std::size_t particle_count_ = 0;
+};
+
+// A set of distance constraints laid out for the solver: a shared DistanceLayout and this set's own
+// rest lengths, multipliers and compliances, stored lane by lane. Constraints in a batch are
 // independent, so solving them together is exactly solving them one after the other, and one
 // vector instruction serves all four (AVX where the CPU has it; otherwise the same arithmetic lane
 // by lane, which gives the same bits: IEEE sqrt and division are correctly rounded either way).
 class DistanceConstraintSet {
  public:
-  static constexpr int kLanes = 4;
+  static constexpr int kLanes = DistanceLayout::kLanes;
+
+  // The constraints, read one by one (a, b, rest length and the compliance of its group), by value.
+  class ConstraintView {
+   public:
+    class iterator {
+     public:
+      using value_type = DistanceConstraint;
+      using difference_type = std::ptrdiff_t;
+      iterator() = default;
+      iterator(const DistanceConstraintSet* set, std::size_t k) : set_(set), k_(k) {}
+      DistanceConstraint operator*() const { return set_->constraint(k_); }
+      iterator& operator++() { ++k_; return *this; }
+      iterator operator++(int) { iterator old = *this; ++k_; return old; }
+      bool operator==(const iterator& o) const { return k_ == o.k_; }
+     private:
+      const DistanceConstraintSet* set_ = nullptr;
+      std::size_t k_ = 0;
+    };
+    explicit ConstraintView(const DistanceConstraintSet* set) : set_(set) {}
+    iterator begin() const { return {set_, 0}; }
+    iterator end() const { return {set_, size()}; }
+    std::size_t size() const { return set_->size(); }
+    bool empty() const { return size() == 0; }
+    DistanceConstraint operator[](std::size_t k) const { return set_->constraint(k); }
+   private:
+    const DistanceConstraintSet* set_;
+  };
 
   DistanceConstraintSet() = default;
-  explicit DistanceConstraintSet(std::vector<DistanceConstraint> constraints);
+  // A set of its own: one compliance group per distinct compliance.
+  explicit DistanceConstraintSet(const std::vector<DistanceConstraint>& constraints);
+  // A set on a shared layout: `rest_length` per constraint, `compliance` per group.
+  DistanceConstraintSet(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length,
+                        std::span<const double> compliance);
 
-  const std::vector<DistanceConstraint>& constraints() const { return constraints_; }
+  ConstraintView constraints() const { return ConstraintView(this); }
+  DistanceConstraint constraint(std::size_t k) const;
+  const std::shared_ptr<const DistanceLayout>& layout() const { return layout_; }
   // Changes the compliance of constraints [first, first + count) (live tuning); takes effect at
-  // the next prepare().
+  // the next prepare(). A range that is not whole groups gives this set a layout of its own.
   void set_compliance(std::size_t first, std::size_t count, double compliance);
-  std::size_t size() const { return constraints_.size(); }
-  std::size_t batch_count() const { return batches_.size(); }
+  // Changes the compliance of group g (live tuning, never a new layout); takes effect at prepare().
+  void set_group_compliance(std::size_t g, double compliance);
+  double group_compliance(std::size_t g) const { return compliance_[g]; }
+  std::size_t size() const { return layout_ ? layout_->size() : 0; }
+  std::size_t batch_count() const { return layout_ ? layout_->batch_count() : 0; }
 
   // Derives, for substep h and damping time τ, α̃ = α/h² (XPBD eq. 4), the inverse masses,
   // 1/(w_a + w_b + α̃) and the dashpot factor of damp(). Call whenever h, τ, a mass or a compliance
@@ -62,48 +158,40 @@ class DistanceConstraintSet {
 
   // Asks the CPU to start loading the batches (a hint; changes nothing).
   void prefetch() const {
-    tire::prefetch(batches_);
-    tire::prefetch(params_of_);
+    tire::prefetch(state_);
+    if (layout_) tire::prefetch(layout_->batches());
   }
 
   enum class Kernel { automatic, scalar };  // scalar: force the portable path (tests compare them)
   void set_kernel(Kernel kernel) { kernel_ = kernel; }
 
  private:
-  // What one sweep reads and writes for four constraints, 96 bytes: in a scene of a thousand tires
-  // the batches are most of what streams from memory every substep. A batch that is not full
-  // repeats its first lane (see build_batches).
-  struct alignas(32) Batch {
-    static constexpr std::uint32_t kLanes = DistanceConstraintSet::kLanes;
-    std::uint32_t a[kLanes];
-    std::uint32_t b[kLanes];
+  // What a sweep reads and writes of this set's own for four constraints, 64 bytes: in a scene of a
+  // thousand tires these are most of what streams from memory every substep (the shared Lanes of
+  // a shape stay in cache). A batch that is not full repeats its first lane.
+  struct alignas(32) LaneState {
     double rest_length[kLanes];
     double lambda[kLanes];
   };
-  static_assert(sizeof(Batch) == 24 * kLanes);
-  // What the four lanes of a batch share: the lanes of a batch are built to have one compliance and
-  // one pair of inverse masses, so these are a few per set (one per kind of constraint), not four
-  // per batch.
+  static_assert(sizeof(LaneState) == 16 * kLanes);
+  // What the four lanes of a batch share, one per class of the layout.
   struct Params {
     double compliance = 0.0;       // α
     double w_a = 0.0;
     double w_b = 0.0;
     double alpha_tilde = 0.0;      // α̃ = α/h²
     double inv_denominator = 0.0;  // 1 / (w_a + w_b + α̃); 0 for a pinned pair
-    double damping = 0.0;          // τh / (α + τh(w_a + w_b)): dashpot impulse per unit of dC/dt
+    double damping = 0.0;          // τh / (α + τhW): dashpot impulse per unit of dC/dt
   };
-  // Cuts the constraints, in order, into batches whose lanes share no particle and share Params
-  // under inverse masses `w` (null: all equal).
-  void build_batches(const double* w);
+  // Puts this set on `layout`, its rest lengths (per constraint) into the lanes; λ = 0.
+  void adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length);
 
-  std::vector<DistanceConstraint> constraints_;
-  std::vector<Batch> batches_;
-  std::vector<std::uint32_t> params_of_;  // per batch: its entry in params_
-  std::vector<Params> params_;
-  std::vector<std::uint32_t> slot_;  // constraint k is lane slot_[k] % kLanes of batch slot_[k] / kLanes
-  std::size_t particle_count_ = 0;   // 1 + the highest particle index any constraint names
-  std::vector<double> w_built_;      // the inverse masses the batches were built for (empty: none yet)
-  bool rebuild_ = false;             // a compliance changed: build again at the next prepare()
+  std::shared_ptr<const DistanceLayout> layout_;
+  std::vector<LaneState> state_;       // per batch of the layout
+  std::vector<Params> params_;         // per class of the layout
+  std::vector<double> compliance_;     // per group
+  std::vector<double> w_built_;        // the inverse masses the params were derived for (empty: none yet)
+  std::vector<double> pending_;        // per constraint: compliances set by range, not yet grouped
   Kernel kernel_ = Kernel::automatic;
 };
 
