@@ -32,7 +32,8 @@ void check_errors(const Load& load, const Value& value, const std::string& file)
 
 // Leading lines "--set key=value" are overrides, the rest is the level: the fuzzer reaches
 // apply_override as well.
-inline void split_overrides(const std::string& input, std::string& text, std::vector<std::string>& overrides) {
+inline void split_overrides(const std::string& input, std::string& text,
+                            std::vector<std::string>& overrides) {
   std::size_t at = 0;
   while (input.compare(at, 6, "--set ") == 0 && overrides.size() < 8) {
     const std::size_t end = input.find('\n', at);
@@ -59,18 +60,19 @@ inline void fuzz_replay(const std::string& input) {
   // What the writer writes, the reader reads back to the same replay.
   const std::string once = replay_to_json(*load.replay);
   const ReplayLoad again = load_replay_text(once, "again.json");
-  require(again.replay.has_value(), "a written replay reads back", again.errors.empty() ? "" : again.errors.front());
+  require(again.replay.has_value(), "a written replay reads back",
+          again.errors.empty() ? "" : again.errors.front());
   require(replay_to_json(*again.replay) == once, "a replay survives writing and reading unchanged", once);
 }
 
 // How much simulation one input may ask for before the target skips it: each execution must stay
 // in the milliseconds for the fuzzer to make progress.
 struct SimulateBudget {
-  std::size_t max_particles = 3000;        // 2 x segments, over the level's tires and spawn actions
-  std::size_t max_props = 64;               // with spawned ones
-  std::size_t max_points = 2000;            // chain, polygon and path points
+  std::size_t max_particles = 3000;  // 2 x segments, over the level's tires and spawn actions
+  std::size_t max_props = 64;        // with spawned ones
+  std::size_t max_points = 2000;     // chain, polygon and path points
   std::size_t max_obstacles = 256;
-  double max_particle_sweeps = 300000.0;    // particles x substeps x iterations per tick
+  double max_particle_sweeps = 300000.0;  // particles x substeps x iterations per tick
   int ticks = 40;
 };
 

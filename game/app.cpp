@@ -173,27 +173,17 @@ void App::handle_event(const SDL_Event& e) {
     case SDL_MOUSEBUTTONUP:
       if (e.button.button == SDL_BUTTON_LEFT && grabbing_) mouse_up();
       break;
-    default:
-      break;
+    default: break;
   }
 }
 
 void App::key_down(SDL_Scancode k) {
   switch (k) {
-    case SDL_SCANCODE_F1:
-      show_help_ = !show_help_;
-      return;
-    case SDL_SCANCODE_F2:
-      show_tuning_ = !show_tuning_;
-      return;
-    case SDL_SCANCODE_F3:
-      debug_.enabled = !debug_.enabled;
-      return;
-    case SDL_SCANCODE_F5:
-      save_replay();
-      return;
-    default:
-      break;
+    case SDL_SCANCODE_F1: show_help_ = !show_help_; return;
+    case SDL_SCANCODE_F2: show_tuning_ = !show_tuning_; return;
+    case SDL_SCANCODE_F3: debug_.enabled = !debug_.enabled; return;
+    case SDL_SCANCODE_F5: save_replay(); return;
+    default: break;
   }
   if (menu_open_) {
     if (levels_.empty())
@@ -226,28 +216,17 @@ void App::key_down(SDL_Scancode k) {
     }
   }
   switch (k) {
-    case SDL_SCANCODE_R:
-      restart();
-      break;
-    case SDL_SCANCODE_P:
-      paused_ = !paused_;
-      break;
+    case SDL_SCANCODE_R: restart(); break;
+    case SDL_SCANCODE_P: paused_ = !paused_; break;
     case SDL_SCANCODE_PERIOD:
       if (paused_) step_requested_ = true;
       break;
-    case SDL_SCANCODE_N:
-      go_to_level(+1);
-      break;
-    case SDL_SCANCODE_B:
-      go_to_level(-1);
-      break;
+    case SDL_SCANCODE_N: go_to_level(+1); break;
+    case SDL_SCANCODE_B: go_to_level(-1); break;
     case SDL_SCANCODE_SPACE:
     case SDL_SCANCODE_UP:
-    case SDL_SCANCODE_W:
-      pending_jump_ = true;
-      break;
-    default:
-      break;
+    case SDL_SCANCODE_W: pending_jump_ = true; break;
+    default: break;
   }
 }
 
@@ -389,16 +368,11 @@ void App::draw_ui() {
     else if (choice == MenuChoice::quit)
       quit_ = true;
   } else if (level_over()) {
-    switch (draw_end_screen(session_.level_session().status(), session_.level().name, finished_at_.value_or(world.time()),
-                            imgui_->big_font())) {
-      case EndChoice::next:
-        go_to_level(+1);
-        break;
-      case EndChoice::retry:
-        restart();
-        break;
-      case EndChoice::none:
-        break;
+    switch (draw_end_screen(session_.level_session().status(), session_.level().name,
+                            finished_at_.value_or(world.time()), imgui_->big_font())) {
+      case EndChoice::next: go_to_level(+1); break;
+      case EndChoice::retry: restart(); break;
+      case EndChoice::none: break;
     }
   }
   draw_level_errors(error_file_, level_errors_);

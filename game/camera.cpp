@@ -44,10 +44,14 @@ void Camera::snap(tire::Vec2 target, const tire::Aabb& bounds) {
 void Camera::clamp(const tire::Aabb& bounds) {
   const double hw = width_ * 0.5 / scale_;
   const double hh = height_ * 0.5 / scale_;
-  if (bounds.max.x - bounds.min.x >= 2 * hw) center_.x = std::clamp(center_.x, bounds.min.x + hw, bounds.max.x - hw);
-  else center_.x = 0.5 * (bounds.min.x + bounds.max.x);
-  if (bounds.max.y - bounds.min.y >= 2 * hh) center_.y = std::clamp(center_.y, bounds.min.y + hh, bounds.max.y - hh);
-  else center_.y = bounds.min.y + hh;
+  if (bounds.max.x - bounds.min.x >= 2 * hw)
+    center_.x = std::clamp(center_.x, bounds.min.x + hw, bounds.max.x - hw);
+  else
+    center_.x = 0.5 * (bounds.min.x + bounds.max.x);
+  if (bounds.max.y - bounds.min.y >= 2 * hh)
+    center_.y = std::clamp(center_.y, bounds.min.y + hh, bounds.max.y - hh);
+  else
+    center_.y = bounds.min.y + hh;
 }
 
 namespace {
@@ -94,7 +98,8 @@ tire::Aabb level_bounds(const tire::LevelSession& session, double margin, double
     if (!props[i].alive) continue;
     const tire::Pose pose = world.rigid().current_pose(i);
     const tire::Aabb local = props[i].geometry.local_bounds();
-    for (const tire::Vec2 c : {local.min, local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}})
+    for (const tire::Vec2 c :
+         {local.min, local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}})
       grow(box, any, pose.to_world(c));
     for (const tire::Vec2& w : props[i].spec.path.waypoints) {
       grow(box, any, w + local.min);

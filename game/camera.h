@@ -8,7 +8,7 @@
 namespace tire {
 class LevelSession;
 class World;
-}
+}  // namespace tire
 
 namespace game {
 
@@ -66,6 +66,7 @@ class Camera {
 double underground_height(const tire::World& world);
 
 constexpr double kBoundsMarginBelow = 0.75;  // m
-tire::Aabb level_bounds(const tire::LevelSession& session, double margin = 1.5, double below = kBoundsMarginBelow);
+tire::Aabb level_bounds(const tire::LevelSession& session, double margin = 1.5,
+                        double below = kBoundsMarginBelow);
 
 }  // namespace game

@@ -65,18 +65,10 @@ void SdlDebugDraw::polygon(std::span<const tire::Vec2> points, DebugShape kind) 
 void SdlDebugDraw::point(tire::Vec2 p, DebugShape kind) {
   const ScreenPoint s = camera_.to_screen(p);
   switch (kind) {
-    case DebugShape::contact:
-      d_.circle(s, 3.5f, kContact, 8);
-      break;
-    case DebugShape::pair:
-      d_.circle(s, 3.0f, kCandidateProp, 6);
-      break;
-    case DebugShape::rim:
-      d_.circle(s, 2.0f, kRim, 6);
-      break;
-    default:
-      d_.circle(s, 2.0f, kTreadParticle, 6);
-      break;
+    case DebugShape::contact: d_.circle(s, 3.5f, kContact, 8); break;
+    case DebugShape::pair: d_.circle(s, 3.0f, kCandidateProp, 6); break;
+    case DebugShape::rim: d_.circle(s, 2.0f, kRim, 6); break;
+    default: d_.circle(s, 2.0f, kTreadParticle, 6); break;
   }
 }
 
@@ -90,15 +82,9 @@ void SdlDebugDraw::vector(tire::Vec2 at, tire::Vec2 v, DebugShape kind) {
 void SdlDebugDraw::box(const tire::Aabb& b, DebugShape kind) {
   const ScreenPoint min = camera_.to_screen(b.min), max = camera_.to_screen(b.max);
   switch (kind) {
-    case DebugShape::candidate_obstacle:
-      d_.rect_outline(min, max, 3.0f, kCandidateObstacle);
-      break;
-    case DebugShape::candidate_prop:
-      d_.rect_outline(min, max, 3.0f, kCandidateProp);
-      break;
-    default:
-      d_.rect_outline(min, max, 1.5f, kBounds);
-      break;
+    case DebugShape::candidate_obstacle: d_.rect_outline(min, max, 3.0f, kCandidateObstacle); break;
+    case DebugShape::candidate_prop: d_.rect_outline(min, max, 3.0f, kCandidateProp); break;
+    default: d_.rect_outline(min, max, 1.5f, kBounds); break;
   }
 }
 

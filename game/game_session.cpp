@@ -71,12 +71,12 @@ void GameSession::apply(const SessionEvent& event) {
       event);
 }
 
-
 void GameSession::step(const tire::TickInput& input) {
   flush();
   for (const tire::Tire& t : session_->world().tires()) previous_x_[t.id] = t.particles.x;  // reuses capacity
   if (previous_x_.size() > 2 * session_->world().tires().size() + 16) {
-    std::erase_if(previous_x_, [this](const auto& entry) { return !session_->world().find_tire(entry.first); });
+    std::erase_if(previous_x_,
+                  [this](const auto& entry) { return !session_->world().find_tire(entry.first); });
   }
   const auto& props = session_->world().rigid().props();
   previous_poses_.resize(props.size());
@@ -87,7 +87,8 @@ void GameSession::step(const tire::TickInput& input) {
   if (observer_) observer_->on_stepped(*session_);
 }
 
-void GameSession::interpolated_positions(const tire::Tire& t, double alpha, std::vector<tire::Vec2>& out) const {
+void GameSession::interpolated_positions(const tire::Tire& t, double alpha,
+                                         std::vector<tire::Vec2>& out) const {
   const std::vector<tire::Vec2>& now = t.particles.x;
   out.resize(now.size());
   const auto it = previous_x_.find(t.id);

@@ -12,10 +12,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "tire/io/level.h"
 #include "session_input.h"
-#include "tuning.h"
+#include "tire/io/level.h"
 #include "tire/session/level_session.h"
+#include "tuning.h"
 
 namespace game {
 

@@ -73,7 +73,8 @@ bool ImGuiLayer::create_font_texture() {
   unsigned char* pixels = nullptr;
   int width = 0, height = 0;
   io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  font_texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STATIC, width, height);
+  font_texture_ =
+      SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STATIC, width, height);
   if (!font_texture_) return false;
   SDL_UpdateTexture(font_texture_, nullptr, pixels, 4 * width);
   SDL_SetTextureBlendMode(font_texture_, SDL_BLENDMODE_BLEND);
@@ -137,9 +138,10 @@ void ImGuiLayer::render() {
       const auto* xy = reinterpret_cast<const float*>(base + offsetof(ImDrawVert, pos));
       const auto* uv = reinterpret_cast<const float*>(base + offsetof(ImDrawVert, uv));
       const auto* color = reinterpret_cast<const SDL_Color*>(base + offsetof(ImDrawVert, col));
-      SDL_RenderGeometryRaw(renderer_, static_cast<SDL_Texture*>(cmd.GetTexID()), xy, sizeof(ImDrawVert), color,
-                            sizeof(ImDrawVert), uv, sizeof(ImDrawVert), list->VtxBuffer.Size - static_cast<int>(cmd.VtxOffset),
-                            indices + cmd.IdxOffset, static_cast<int>(cmd.ElemCount), sizeof(ImDrawIdx));
+      SDL_RenderGeometryRaw(renderer_, static_cast<SDL_Texture*>(cmd.GetTexID()), xy, sizeof(ImDrawVert),
+                            color, sizeof(ImDrawVert), uv, sizeof(ImDrawVert),
+                            list->VtxBuffer.Size - static_cast<int>(cmd.VtxOffset), indices + cmd.IdxOffset,
+                            static_cast<int>(cmd.ElemCount), sizeof(ImDrawIdx));
     }
   }
   SDL_RenderSetClipRect(renderer_, nullptr);

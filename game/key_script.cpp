@@ -21,7 +21,8 @@ SDL_Scancode scancode_of(const std::string& given) {
     const char* alias;
     const char* sdl;
   };
-  static constexpr Alias kAliases[] = {{"enter", "return"}, {"esc", "escape"}, {"period", "."}, {"dot", "."}, {"comma", ","}};
+  static constexpr Alias kAliases[] = {
+      {"enter", "return"}, {"esc", "escape"}, {"period", "."}, {"dot", "."}, {"comma", ","}};
   for (const Alias& a : kAliases)
     if (name == a.alias) return SDL_GetScancodeFromName(a.sdl);
   return SDL_GetScancodeFromName(name.c_str());
@@ -39,7 +40,8 @@ std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& er
   const std::string name = spec.substr(0, colon);
   press.key = scancode_of(name);
   if (press.key == SDL_SCANCODE_UNKNOWN) {
-    error = "--press " + spec + ": unknown key \"" + name + "\" (use SDL key names: left, right, up, space, r, p, ...)";
+    error = "--press " + spec + ": unknown key \"" + name +
+            "\" (use SDL key names: left, right, up, space, r, p, ...)";
     return std::nullopt;
   }
   const std::string frames = spec.substr(colon + 1);
@@ -47,7 +49,8 @@ std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& er
   const auto first = parse_frame(frames.substr(0, dash));
   const auto last = dash == std::string::npos ? first : parse_frame(frames.substr(dash + 1));
   if (!first || !last || *last < *first) {
-    error = "--press " + spec + ": \"" + frames + "\" is not a frame or an increasing frame range (FIRST-LAST)";
+    error =
+        "--press " + spec + ": \"" + frames + "\" is not a frame or an increasing frame range (FIRST-LAST)";
     return std::nullopt;
   }
   press.first = *first;

@@ -25,7 +25,8 @@ std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir) {
   return out;
 }
 
-std::optional<std::size_t> find_level(const std::vector<LevelEntry>& levels, const std::filesystem::path& file) {
+std::optional<std::size_t> find_level(const std::vector<LevelEntry>& levels,
+                                      const std::filesystem::path& file) {
   std::error_code ec;
   for (std::size_t i = 0; i < levels.size(); ++i)
     if (std::filesystem::equivalent(levels[i].path, file, ec)) return i;

@@ -18,6 +18,7 @@ struct LevelEntry {
 std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir);
 
 // Index of `file` in `levels` (same file, however spelled), if it is there.
-std::optional<std::size_t> find_level(const std::vector<LevelEntry>& levels, const std::filesystem::path& file);
+std::optional<std::size_t> find_level(const std::vector<LevelEntry>& levels,
+                                      const std::filesystem::path& file);
 
 }  // namespace game

@@ -1,6 +1,5 @@
 // tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "app.h"
@@ -11,10 +10,12 @@
 #endif
 
 int main(int argc, char** argv) {
-  CLI::App cli{"Soft tire: roll a deformable XPBD tire through a level.\n"
-               "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
-               "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing. Mouse: click spawns a tire, drag grabs one.",
-               "tire-game"};
+  CLI::App cli{
+      "Soft tire: roll a deformable XPBD tire through a level.\n"
+      "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
+      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing. Mouse: click spawns a tire, drag grabs "
+      "one.",
+      "tire-game"};
   std::string level;
   std::string levels_dir = TIRE_LEVELS_DIR;
   long long frames = -1;
@@ -25,10 +26,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   cli.add_option("--frames", frames, "run exactly N frames (one tick each) and exit; for tests")
       ->transform(tire_tools::integer_in({0, 1e12}));
-  cli.add_option("--press", presses, "scripted key press KEY:FRAME or KEY:FIRST-LAST, e.g. right:0-300, space:120");
+  cli.add_option("--press", presses,
+                 "scripted key press KEY:FRAME or KEY:FIRST-LAST, e.g. right:0-300, space:120");
   cli.add_option("--screenshot", screenshot, "save the last frame to FILE (BMP)");
   std::string record;
-  cli.add_option("--record", record, "save a replay of the session to FILE on exit (tirectl replay checks it)");
+  cli.add_option("--record", record,
+                 "save a replay of the session to FILE on exit (tirectl replay checks it)");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -22,7 +22,8 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& s
   ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
   ImGui::SetNextWindowSizeConstraints({420, 0}, {vp->Size.x - 40.0f, vp->Size.y - 40.0f});
   if (ImGui::Begin("##levelmenu", nullptr,
-                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                       ImGuiWindowFlags_NoSavedSettings)) {
     if (big) ImGui::PushFont(big);
     centred_text("Levels", {1.0f, 0.8f, 0.35f, 1.0f});
     if (big) ImGui::PopFont();
@@ -63,9 +64,11 @@ EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, d
   ImGui::SetNextWindowSizeConstraints({380, 0}, {vp->Size.x, vp->Size.y});
   ImGui::PushStyleColor(ImGuiCol_WindowBg, won ? IM_COL32(20, 70, 35, 235) : IM_COL32(80, 20, 20, 235));
   if (ImGui::Begin("##end", nullptr,
-                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                       ImGuiWindowFlags_NoSavedSettings)) {
     if (big) ImGui::PushFont(big);
-    centred_text(won ? "Level complete!" : "You lost", won ? ImVec4{0.6f, 1.0f, 0.6f, 1.0f} : ImVec4{1.0f, 0.6f, 0.6f, 1.0f});
+    centred_text(won ? "Level complete!" : "You lost",
+                 won ? ImVec4{0.6f, 1.0f, 0.6f, 1.0f} : ImVec4{1.0f, 0.6f, 0.6f, 1.0f});
     if (big) ImGui::PopFont();
     char line[256];
     std::snprintf(line, sizeof line, "%s  -  %.2f s", level.c_str(), time);

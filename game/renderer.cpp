@@ -38,12 +38,9 @@ SDL_Color darker(SDL_Color c, float f = 0.6f) {
 
 SDL_Color prop_color(const tire::Prop& p) {
   switch (p.spec.type) {
-    case tire::PropType::dynamic_body:
-      return kDynamic;
-    case tire::PropType::kinematic_body:
-      return kKinematic;
-    case tire::PropType::static_body:
-      break;
+    case tire::PropType::dynamic_body: return kDynamic;
+    case tire::PropType::kinematic_body: return kKinematic;
+    case tire::PropType::static_body: break;
   }
   return kStatic;
 }

@@ -102,7 +102,8 @@ void SessionRecorder::on_stepped(const tire::LevelSession& session) {
   if (recorder_) recorder_->after_step(session);
 }
 
-std::string SessionRecorder::save(const tire::LevelSession& session, const std::filesystem::path& file) const {
+std::string SessionRecorder::save(const tire::LevelSession& session,
+                                  const std::filesystem::path& file) const {
   if (!recorder_) return "nothing recorded yet";
   tire::Replay replay = recorder_->finish(session);
   const std::filesystem::path target = std::filesystem::absolute(file);

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "tire/replay/replay.h"
 #include "session_input.h"
+#include "tire/replay/replay.h"
 
 namespace game {
 

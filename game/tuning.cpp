@@ -15,20 +15,27 @@ constexpr const char* kWorld = "World and solver";
 constexpr SliderSpec kSliders[] = {
     {"tires.compliance.outer", kCompliance, "outer ring", 1e-9, 1e-1, SliderScale::exponent, "",
      "tread segments (m/N): larger is softer"},
-    {"tires.compliance.inner", kCompliance, "inner ring", 1e-9, 1e-1, SliderScale::exponent, "", "rim segments (m/N)"},
-    {"tires.compliance.spoke", kCompliance, "spokes", 1e-9, 1e-1, SliderScale::exponent, "", "sidewall spokes (m/N)"},
+    {"tires.compliance.inner", kCompliance, "inner ring", 1e-9, 1e-1, SliderScale::exponent, "",
+     "rim segments (m/N)"},
+    {"tires.compliance.spoke", kCompliance, "spokes", 1e-9, 1e-1, SliderScale::exponent, "",
+     "sidewall spokes (m/N)"},
     {"tires.compliance.pressure", kCompliance, "pressure##c", 1e-8, 1e0, SliderScale::exponent, "",
      "the air (m^4/J): larger lets the area change more"},
-    {"tires.pressure", kTire, "pressure", 0.1, 4.0, SliderScale::linear, "%.2f", "target area / rest area: above 1 inflates"},
-    {"tires.mass_scale", kTire, "mass scale", 0.1, 10.0, SliderScale::logarithmic, "%.2f x", "each tire's mass times this"},
-    {"tires.friction", kTire, "friction", 0.0, 3.0, SliderScale::linear, "%.2f", "static and kinetic friction coefficient"},
+    {"tires.pressure", kTire, "pressure", 0.1, 4.0, SliderScale::linear, "%.2f",
+     "target area / rest area: above 1 inflates"},
+    {"tires.mass_scale", kTire, "mass scale", 0.1, 10.0, SliderScale::logarithmic, "%.2f x",
+     "each tire's mass times this"},
+    {"tires.friction", kTire, "friction", 0.0, 3.0, SliderScale::linear, "%.2f",
+     "static and kinetic friction coefficient"},
     {"tires.material_damping", kTire, "material damping", 1e-5, 1.0, SliderScale::exponent, "",
      "Kelvin-Voigt damping time (s)"},
     {"gravity.x", kWorld, "gravity x", -30.0, 30.0, SliderScale::linear, "%.2f m/s2", "horizontal gravity"},
-    {"gravity.y", kWorld, "gravity y", -30.0, 30.0, SliderScale::linear, "%.2f m/s2", "vertical gravity (-9.81 is Earth)"},
+    {"gravity.y", kWorld, "gravity y", -30.0, 30.0, SliderScale::linear, "%.2f m/s2",
+     "vertical gravity (-9.81 is Earth)"},
     {"solver.damping", kWorld, "damping", 0.0, 100.0, SliderScale::logarithmic, "%.2f 1/s",
      "solver.damping: decay rate of non-rigid motion"},
-    {"solver.substeps", kWorld, "substeps", 1, 256, SliderScale::integer, "", "solver.substeps: the most effective accuracy knob"},
+    {"solver.substeps", kWorld, "substeps", 1, 256, SliderScale::integer, "",
+     "solver.substeps: the most effective accuracy knob"},
     {"solver.iterations", kWorld, "iterations", 1, 64, SliderScale::integer, "",
      "solver.iterations: constraint sweeps per substep"},
 };
@@ -66,7 +73,8 @@ Tuning::Tuning() {
 Tuning Tuning::from_world(const tire::World& world) {
   Tuning t;
   for (std::size_t i = 0; i < t.values.size(); ++i)
-    t.values[i] = world.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
+    t.values[i] =
+        world.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
   return t;
 }
 
@@ -95,7 +103,8 @@ bool apply_tuning(tire::World& world, std::string_view key, double value) {
   if (!p || !p->may(tire::by_panel) || key != p->key) return false;
   if (p->integer) value = std::round(value);
   if (p->id == tire::ParamId::tire_friction)
-    return world.set_parameter("tires.friction", value) && world.set_parameter("tires.kinetic_friction", value);
+    return world.set_parameter("tires.friction", value) &&
+           world.set_parameter("tires.kinetic_friction", value);
   return world.set_parameter(key, value);
 }
 

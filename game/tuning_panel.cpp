@@ -33,8 +33,8 @@ bool log_slider(const char* label, double& value, double min, double max, const 
 bool slider(const char* label, double& value, double min, double max, const char* format, const char* tip,
             ImGuiSliderFlags flags = 0) {
   const double before = value;
-  const bool changed =
-      ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags | ImGuiSliderFlags_AlwaysClamp);
+  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format,
+                                           flags | ImGuiSliderFlags_AlwaysClamp);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
   // Ctrl+click lets the player type a value; ImGui reads "nan" and "inf" with %lf, and clamping
   // lets NaN through (every comparison with it is false): such text leaves the value as it was.
@@ -47,7 +47,8 @@ bool slider(const char* label, double& value, double min, double max, const char
 
 bool int_slider(const char* label, double& value, int min, int max, const char* tip) {
   int v = static_cast<int>(value);
-  const bool changed = ImGui::SliderInt(label, &v, min, max, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  const bool changed = ImGui::SliderInt(label, &v, min, max, "%d",
+                                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
   value = v;
   return changed;
@@ -55,8 +56,8 @@ bool int_slider(const char* label, double& value, int min, int max, const char* 
 
 }  // namespace
 
-std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& level_defaults, DebugOptions& debug,
-                                         bool* open) {
+std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& level_defaults,
+                                         DebugOptions& debug, bool* open) {
   Tuning t = current;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos({vp->Size.x - 10.0f, 10.0f}, ImGuiCond_Appearing, {1.0f, 0.0f});
@@ -74,23 +75,28 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
         const tire::Parameter& p = *rows[i];
         const SliderSpec* spec = slider_spec(p.key);
         // A key the panel has no spec for goes, as a plain slider, into the last section.
-        if (spec ? std::string_view(spec->section) != sections[section] : section + 1 != sections.size()) continue;
+        if (spec ? std::string_view(spec->section) != sections[section] : section + 1 != sections.size())
+          continue;
         const SliderRange range = slider_range(p);
         double& value = t.values[i];
         const char* label = spec ? spec->label : p.key;
         // A key without a spec shows the table's description, its {range} written out.
         static const std::vector<std::string> descriptions = [&rows] {
           std::vector<std::string> out;
-          for (const tire::Parameter* row : rows) out.push_back(tire::described(row->description, row->range));
+          for (const tire::Parameter* row : rows)
+            out.push_back(tire::described(row->description, row->range));
           return out;
         }();
         const char* tip = spec ? spec->tip : descriptions[i].c_str();
         switch (spec ? spec->scale : p.integer ? SliderScale::integer : SliderScale::linear) {
           case SliderScale::exponent: log_slider(label, value, range.min, range.max, tip); break;
           case SliderScale::integer:
-            int_slider(label, value, static_cast<int>(std::ceil(range.min)), static_cast<int>(std::floor(range.max)), tip);
+            int_slider(label, value, static_cast<int>(std::ceil(range.min)),
+                       static_cast<int>(std::floor(range.max)), tip);
             break;
-          case SliderScale::linear: slider(label, value, range.min, range.max, spec ? spec->format : "%.3g", tip); break;
+          case SliderScale::linear:
+            slider(label, value, range.min, range.max, spec ? spec->format : "%.3g", tip);
+            break;
           case SliderScale::logarithmic:
             slider(label, value, range.min, range.max, spec->format, tip, ImGuiSliderFlags_Logarithmic);
             break;

@@ -12,7 +12,7 @@
 namespace game {
 
 // `current` is the tuning in force, `level_defaults` what the level started with (for "Reset").
-std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& level_defaults, DebugOptions& debug,
-                                         bool* open);
+std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& level_defaults,
+                                         DebugOptions& debug, bool* open);
 
 }  // namespace game

@@ -33,7 +33,8 @@ namespace {
 
 // C(x) = A(x) − p·A0 with A the shoelace area, written here rather than taken from the engine: the
 // solver's gradient is checked against this function's finite differences.
-double area_constraint_value(const std::vector<Vec2>& x, std::size_t first, std::size_t count, double target) {
+double area_constraint_value(const std::vector<Vec2>& x, std::size_t first, std::size_t count,
+                             double target) {
   double twice_area = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
     const Vec2 a = x[first + i], b = x[first + (i + 1) % count];
@@ -43,7 +44,8 @@ double area_constraint_value(const std::vector<Vec2>& x, std::size_t first, std:
 }
 
 // ∂C/∂x_i for each vertex by central differences.
-std::vector<Vec2> area_fd_gradient(const std::vector<Vec2>& x, std::size_t first, std::size_t count, double target) {
+std::vector<Vec2> area_fd_gradient(const std::vector<Vec2>& x, std::size_t first, std::size_t count,
+                                   double target) {
   const double eps = 1e-6;
   std::vector<Vec2> grad(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -51,7 +53,9 @@ std::vector<Vec2> area_fd_gradient(const std::vector<Vec2>& x, std::size_t first
       std::vector<Vec2> plus = x, minus = x;
       plus[first + i] += dir * eps;
       minus[first + i] -= dir * eps;
-      const double d = (area_constraint_value(plus, first, count, target) - area_constraint_value(minus, first, count, target)) / (2 * eps);
+      const double d = (area_constraint_value(plus, first, count, target) -
+                        area_constraint_value(minus, first, count, target)) /
+                       (2 * eps);
       (dir.x != 0.0 ? grad[i].x : grad[i].y) = d;
     }
   }
@@ -86,7 +90,8 @@ Polygon irregular_polygon(double pressure, double compliance) {
 
 }  // namespace
 
-TEST_CASE("one projection of the real area solve moves along the finite-difference gradient", "[unit][area]") {
+TEST_CASE("one projection of the real area solve moves along the finite-difference gradient",
+          "[unit][area]") {
   // XPBD eq. 17-18 with λ = 0 at the start: vertex i moves by Δx_i = w_i ∇_i C Δλ with
   // Δλ = −C / (Σ_i w_i |∇_i C|² + α̃). The gradient the solver used is read off what it did,
   // ∇_i C = Δx_i / (w_i Δλ), and compared with finite differences of C.
@@ -162,8 +167,7 @@ TEST_CASE("a rigid area constraint restores the target area", "[unit][area]") {
   CHECK(polygon_area(p.x.data(), 12) == Approx(rest).epsilon(1e-9));
 }
 
-TEST_CASE("an area compliance alpha under a pressure load P loses alpha*P of area",
-          "[unit][area][physics]") {
+TEST_CASE("an area compliance alpha under a pressure load P loses alpha*P of area", "[unit][area][physics]") {
   // A polygon of free particles held only by its area constraint, with an external inward
   // pressure: force −P ∇A on each vertex. At equilibrium the constraint force λ/h² balances P,
   // and C = −α λ/h² = −α P.  Mean over an oscillation, as for the hanging particle.

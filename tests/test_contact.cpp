@@ -37,12 +37,14 @@ namespace {
 template <typename F>
 Vec2 central_difference(F&& f, Vec2 x) {
   const double eps = 1e-7;
-  return {(f(x + Vec2{eps, 0}) - f(x - Vec2{eps, 0})) / (2 * eps), (f(x + Vec2{0, eps}) - f(x - Vec2{0, eps})) / (2 * eps)};
+  return {(f(x + Vec2{eps, 0}) - f(x - Vec2{eps, 0})) / (2 * eps),
+          (f(x + Vec2{0, eps}) - f(x - Vec2{0, eps})) / (2 * eps)};
 }
 
 }  // namespace
 
-TEST_CASE("the contact projection the solver runs moves along the finite-difference gradient", "[unit][contact]") {
+TEST_CASE("the contact projection the solver runs moves along the finite-difference gradient",
+          "[unit][contact]") {
   // solve_contacts runs swept_box_contact, then resolve_contact. Its constraint is C(x) ≥ 0 with C
   // the signed distance to the surface: to the nearest face for a particle that started inside, to
   // the face it came in through for one that entered this substep. Each C is written here from the

@@ -54,7 +54,8 @@ TEST_CASE("results do not depend on the number of threads", "[unit][determinism]
     world->add_obstacle({{{-1, -1}, {16, 0}}});
     world->add_obstacle({{{-1, 0}, {0, 50}}});
     world->add_obstacle({{{15, 0}, {16, 50}}});
-    for (int i = 0; i < 100; ++i) world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
+    for (int i = 0; i < 100; ++i)
+      world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
     for (int i = 0; i < (crates ? 6 : 0); ++i) {
       PropSpec crate;
       crate.type = PropType::dynamic_body;
@@ -75,7 +76,8 @@ TEST_CASE("results do not depend on the number of threads", "[unit][determinism]
   }
 }
 
-TEST_CASE("a tire with more neighbours than colours gives the same result on any thread count", "[unit][determinism]") {
+TEST_CASE("a tire with more neighbours than colours gives the same result on any thread count",
+          "[unit][determinism]") {
   // Tire pairs are solved a colour at a time, a colour's pairs in parallel: no two of them may share
   // a tire. A tire has a colour for each of 64 neighbours; its pairs beyond go to one last colour,
   // whose pairs therefore can share a tire and are solved in order. A tire dropped into a pile at
@@ -87,7 +89,8 @@ TEST_CASE("a tire with more neighbours than colours gives the same result on any
     world->add_obstacle({{{-1, -1}, {16, 0}}});
     world->add_obstacle({{{-1, 0}, {0, 50}}});
     world->add_obstacle({{{15, 0}, {16, 50}}});
-    for (int i = 0; i < 100; ++i) world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
+    for (int i = 0; i < 100; ++i)
+      world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
     TireSpec fast = tire_at({7.3, 8.2});
     fast.velocity = {0.0, -3000.0};
     world->add_tire(fast);

@@ -19,7 +19,8 @@ double stretch(Vec2 a, Vec2 b, double rest) { return std::hypot(b.x - a.x, b.y -
 template <typename F>
 Vec2 central_difference(F&& f, Vec2 x) {
   const double eps = 1e-6;
-  return {(f(x + Vec2{eps, 0}) - f(x - Vec2{eps, 0})) / (2 * eps), (f(x + Vec2{0, eps}) - f(x - Vec2{0, eps})) / (2 * eps)};
+  return {(f(x + Vec2{eps, 0}) - f(x - Vec2{eps, 0})) / (2 * eps),
+          (f(x + Vec2{0, eps}) - f(x - Vec2{0, eps})) / (2 * eps)};
 }
 
 // 13 constraints that share no particle: 10 rigid ones (batches of 4, 4 and 2 lanes: full batches
@@ -55,7 +56,8 @@ TEST_CASE("one projection of the real solver moves along the finite-difference g
   // moves end j by Δx_j = w_j ∇_j C Δλ with Δλ = −C / (Σ_j w_j |∇_j C|² + α̃). So the gradient the
   // solver used can be read off what it did, ∇_j C = Δx_j / (w_j Δλ), with Δλ the multiplier it
   // accumulated, and both are compared with finite differences of C.
-  const auto kernel = GENERATE(DistanceConstraintSet::Kernel::automatic, DistanceConstraintSet::Kernel::scalar);
+  const auto kernel =
+      GENERATE(DistanceConstraintSet::Kernel::automatic, DistanceConstraintSet::Kernel::scalar);
   CAPTURE(kernel == DistanceConstraintSet::Kernel::scalar);
   const double h = 1e-3, alpha = 1e-6, alpha_tilde = alpha / (h * h);  // α̃ = 1: as much as w_a + w_b
   const Independent s = independent_constraints(alpha);
@@ -74,7 +76,8 @@ TEST_CASE("one projection of the real solver moves along the finite-difference g
     const Vec2 fd_b = central_difference([&](Vec2 q) { return stretch(xa, q, c.rest_length); }, xb);
     const double delta_lambda = set.lambda(k);
     const double expected_lambda =
-        -C / (s.p.w[c.a] * length_squared(fd_a) + s.p.w[c.b] * length_squared(fd_b) + (c.compliance > 0 ? alpha_tilde : 0.0));
+        -C / (s.p.w[c.a] * length_squared(fd_a) + s.p.w[c.b] * length_squared(fd_b) +
+              (c.compliance > 0 ? alpha_tilde : 0.0));
     CHECK(delta_lambda == Approx(expected_lambda).epsilon(1e-8));
     const Vec2 grad_a = (x[c.a] - xa) / (s.p.w[c.a] * delta_lambda);
     const Vec2 grad_b = (x[c.b] - xb) / (s.p.w[c.b] * delta_lambda);
@@ -85,11 +88,13 @@ TEST_CASE("one projection of the real solver moves along the finite-difference g
   }
 }
 
-TEST_CASE("the real dashpot removes rate along the finite-difference gradient, both kernels", "[unit][distance]") {
+TEST_CASE("the real dashpot removes rate along the finite-difference gradient, both kernels",
+          "[unit][distance]") {
   // damp(): the rate dC/dt = Σ_j ∇_j C · v_j, and the impulse p = rate·τh/(α + τh Σ_j w_j|∇_j C|²)
   // changes each velocity by Δv_j = −w_j ∇_j C p (the implicit Kelvin-Voigt dashpot). Predicted
   // from finite-difference gradients, compared with what the solver did.
-  const auto kernel = GENERATE(DistanceConstraintSet::Kernel::automatic, DistanceConstraintSet::Kernel::scalar);
+  const auto kernel =
+      GENERATE(DistanceConstraintSet::Kernel::automatic, DistanceConstraintSet::Kernel::scalar);
   CAPTURE(kernel == DistanceConstraintSet::Kernel::scalar);
   const double h = 1e-3, tau = 5e-3, alpha = 1e-4;
   const Independent s = independent_constraints(alpha);
@@ -106,7 +111,8 @@ TEST_CASE("the real dashpot removes rate along the finite-difference gradient, b
     const double rate = dot(fd_a, s.p.v[c.a]) + dot(fd_b, s.p.v[c.b]);
     const double tau_h = tau * h;
     const double impulse =
-        rate * tau_h / (c.compliance + tau_h * (s.p.w[c.a] * length_squared(fd_a) + s.p.w[c.b] * length_squared(fd_b)));
+        rate * tau_h /
+        (c.compliance + tau_h * (s.p.w[c.a] * length_squared(fd_a) + s.p.w[c.b] * length_squared(fd_b)));
     const Vec2 dv_a = v[c.a] - s.p.v[c.a], dv_b = v[c.b] - s.p.v[c.b];
     CHECK(dv_a.x == Approx(-s.p.w[c.a] * fd_a.x * impulse).margin(1e-8));
     CHECK(dv_a.y == Approx(-s.p.w[c.a] * fd_a.y * impulse).margin(1e-8));
@@ -114,8 +120,10 @@ TEST_CASE("the real dashpot removes rate along the finite-difference gradient, b
     CHECK(dv_b.y == Approx(-s.p.w[c.b] * fd_b.y * impulse).margin(1e-8));
     // A rigid constraint loses all of its rate, a compliant one part of it.
     const double rate_after = dot(fd_a, v[c.a]) + dot(fd_b, v[c.b]);
-    if (c.compliance == 0.0) CHECK(rate_after == Approx(0.0).margin(1e-8));
-    else CHECK(std::abs(rate_after) < std::abs(rate));
+    if (c.compliance == 0.0)
+      CHECK(rate_after == Approx(0.0).margin(1e-8));
+    else
+      CHECK(std::abs(rate_after) < std::abs(rate));
   }
 }
 
@@ -201,7 +209,7 @@ TEST_CASE("material damping removes the rate of stretch, implicitly, and leaves 
   // Implicit dashpot c = τ/α over h: the stretch rate 1.0 m/s decays to 1/(1 + (τ/α)·h·(w_a + w_b)).
   const double expected_rate = 1.0 / (1.0 + tau / alpha * h * 2.0);
   CHECK(p.v[1].x - p.v[0].x == Approx(expected_rate).epsilon(1e-12));
-  CHECK(p.v[1].y - p.v[0].y == Approx(spin).epsilon(1e-12));         // the spin is untouched
+  CHECK(p.v[1].y - p.v[0].y == Approx(spin).epsilon(1e-12));           // the spin is untouched
   CHECK((p.v[0] + p.v[1]).x * 0.5 == Approx(rigid.x).epsilon(1e-12));  // momentum is kept
   CHECK((p.v[0] + p.v[1]).y * 0.5 == Approx(rigid.y).epsilon(1e-12));
   // A rigid constraint loses all of its stretch rate.
@@ -220,7 +228,8 @@ TEST_CASE("batched constraints solve exactly as one Gauss-Seidel sweep in their 
   CAPTURE(equal_masses);
   std::vector<DistanceConstraint> list;
   for (std::uint32_t parity = 0; parity < 2; ++parity)
-    for (std::uint32_t i = parity; i + 1 < 17; i += 2) list.push_back({i, i + 1, 0.9 + 0.01 * i, 1e-5 * (i / 8)});
+    for (std::uint32_t i = parity; i + 1 < 17; i += 2)
+      list.push_back({i, i + 1, 0.9 + 0.01 * i, 1e-5 * (i / 8)});
   list.push_back({0, 16, 7.0, 0.0});
   list.push_back({2, 6, 3.9, 1e-4});
   Particles p;
@@ -251,7 +260,8 @@ TEST_CASE("the vector and the scalar kernels give the same bits", "[unit][distan
   // odd ones: full batches of four), a few links of their own compliance, and spokes.
   std::vector<DistanceConstraint> list;
   for (std::uint32_t parity = 0; parity < 2; ++parity)
-    for (std::uint32_t i = parity; i < 40; i += 2) list.push_back({i, (i + 1) % 40, 0.3, i % 9 == 0 ? 3e-6 : 1e-6});
+    for (std::uint32_t i = parity; i < 40; i += 2)
+      list.push_back({i, (i + 1) % 40, 0.3, i % 9 == 0 ? 3e-6 : 1e-6});
   for (std::uint32_t parity = 0; parity < 2; ++parity)
     for (std::uint32_t i = parity; i < 20; i += 2) list.push_back({i, i + 20, 2.0, 1e-5});
   Particles p;
@@ -291,7 +301,8 @@ TEST_CASE("a new compliance or new masses take effect at the next prepare", "[un
     for (std::uint32_t i = parity; i < 12; i += 2) list.push_back({i, (i + 1) % 12, 0.5, 1e-6});
   Particles p;
   p.resize(12);
-  for (std::uint32_t i = 0; i < 12; ++i) p.x[i] = {std::cos(0.5 * i) * (1.0 + 0.02 * (i % 3)), std::sin(0.5 * i)};
+  for (std::uint32_t i = 0; i < 12; ++i)
+    p.x[i] = {std::cos(0.5 * i) * (1.0 + 0.02 * (i % 3)), std::sin(0.5 * i)};
   std::fill(p.w.begin(), p.w.end(), 2.0);
   DistanceConstraintSet tuned(list);
   tuned.prepare(p.w.data(), 1e-3);

@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "tire_fixtures.h"
 #include "tire/tire/tire_solver.h"
+#include "tire_fixtures.h"
 
 using namespace tire;
 using namespace tire::test;
@@ -92,7 +92,8 @@ double chain_stretch(const Tire& t, std::uint32_t n, double link) {
 
 }  // namespace
 
-TEST_CASE("global: a resting tire's sag is its compliances', at any substep count", "[unit][global][physics]") {
+TEST_CASE("global: a resting tire's sag is its compliances', at any substep count",
+          "[unit][global][physics]") {
   const double factor = GENERATE(1.0, 100.0);
   const TireCompliance compliance = softer(factor);
   const double sag2 = rest_sag(global_config(2), compliance);
@@ -143,7 +144,8 @@ TEST_CASE("global: a tire hanging from the grab stretches it by α·Mg at every 
   CHECK(stretch == Approx(expected).epsilon(1e-3));
 }
 
-TEST_CASE("global: a chain of stiff links under load stretches by Σ α·load in one substep", "[unit][global][physics]") {
+TEST_CASE("global: a chain of stiff links under load stretches by Σ α·load in one substep",
+          "[unit][global][physics]") {
   // 8 particles of 10/8 kg, 7 links: link j carries the 8 − j particles below it.
   const std::uint32_t n = 4;
   const double link = 0.1, alpha = 1e-6;

@@ -62,7 +62,9 @@ TEST_CASE("all problems are reported in one pass with their JSON paths", "[unit]
   CHECK(has(errors, "x.json: /tires/1/position: is required"));
   CHECK(has(errors, "x.json: /tires/1/segments: must be an integer in [6, 256], got 300"));
   CHECK(has(errors, "x.json: /tires/1/mass: must be a number in (0, 1e+06] kg, got -1"));
-  CHECK(has(errors, "x.json: /tires/2/position: must be [x, y] with each in [-10000, 10000] m, got [0,1000000000.0]"));
+  CHECK(
+      has(errors,
+          "x.json: /tires/2/position: must be [x, y] with each in [-10000, 10000] m, got [0,1000000000.0]"));
   CHECK(has(errors, "x.json: /tires/2/player: only one tire may be the player, and /tires/1 already is"));
   CHECK(has(errors, "x.json: /tires/2/spokes: must be one of \"radial\", \"cross\", got \"wire\""));
   CHECK(has(errors, "x.json: /obstacles/0/max: must be greater than min on both axes"));
@@ -109,13 +111,16 @@ TEST_CASE("a missing or oversized file is refused before it is read", "[unit][le
 
 TEST_CASE("set overrides numeric keys by dotted path, and validation judges the result", "[unit][level]") {
   const std::string text = R"({"name": "n", "tires": [{"position": [0, 1]}]})";
-  LevelLoad load = load_level_text(text, "x.json", {"solver.substeps=16", "tires.0.mass=20", "tires.0.position.1=3"});
+  LevelLoad load =
+      load_level_text(text, "x.json", {"solver.substeps=16", "tires.0.mass=20", "tires.0.position.1=3"});
   REQUIRE(load.level);
   CHECK(load.level->solver.substeps == 16);
   CHECK(load.level->tires[0].mass == 20);
   CHECK(load.level->tires[0].position.y == 3);
-  CHECK(has(errors_of(text, {"solver.substeps=0"}), "/solver/substeps: must be an integer in [1, 256], got 0"));
-  CHECK(has(errors_of(text, {"solver.substepz=4"}), "/solver/substepz: unknown key; did you mean \"substeps\"?"));
+  CHECK(
+      has(errors_of(text, {"solver.substeps=0"}), "/solver/substeps: must be an integer in [1, 256], got 0"));
+  CHECK(has(errors_of(text, {"solver.substepz=4"}),
+            "/solver/substepz: unknown key; did you mean \"substeps\"?"));
   CHECK(has(errors_of(text, {"tires.3.mass=1"}), "\"3\" is not an index of the 1-entry array"));
   CHECK(has(errors_of(text, {"tires.0.mass=heavy"}), "value must be a number, got \"heavy\""));
   CHECK(has(errors_of(text, {"tires=1"}), "is an object or array, not a number"));

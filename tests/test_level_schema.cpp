@@ -133,8 +133,10 @@ std::vector<Issue> issues_of(const json& level) {
   for (const std::string& e : load.errors) {
     const std::string rest = e.rfind(prefix, 0) == 0 ? e.substr(prefix.size()) : e;
     const auto colon = rest.find(": ");
-    if (colon == std::string::npos) out.push_back({"", rest});
-    else out.push_back({rest.substr(0, colon), rest.substr(colon + 2)});
+    if (colon == std::string::npos)
+      out.push_back({"", rest});
+    else
+      out.push_back({rest.substr(0, colon), rest.substr(colon + 2)});
   }
   if (!load.level && out.empty()) out.push_back({"", "not loaded, and no error given"});
   return out;
@@ -202,11 +204,11 @@ std::string listed(const std::set<std::string>& names) {
 
 struct Kind {
   std::string name;
-  json schema;                                      // resolved object schema with "properties"
-  std::string path;                                 // JSON pointer of the object in the probe level
-  std::function<json(const std::string&)> base;     // a minimal valid object in which the key applies
-  std::function<json(const json&)> level;           // a probe level holding the object at `path`
-  bool core;                                        // a part of levels/README.md, not of SCRIPTING.md
+  json schema;                                   // resolved object schema with "properties"
+  std::string path;                              // JSON pointer of the object in the probe level
+  std::function<json(const std::string&)> base;  // a minimal valid object in which the key applies
+  std::function<json(const json&)> level;        // a probe level holding the object at `path`
+  bool core;                                     // a part of levels/README.md, not of SCRIPTING.md
 };
 
 json named_level() { return {{"name", "Schema probe"}}; }
@@ -224,7 +226,8 @@ json script_level(const json& trigger) {
   json level = named_level();
   level["regions"] = json::array({region_sample()});
   level["counters"] = {{"coins", 0}};
-  level["props"] = json::array({{{"name", "crate"}, {"shape", "box"}, {"type", "kinematic"}, {"size", {1, 1}}}});
+  level["props"] =
+      json::array({{{"name", "crate"}, {"shape", "box"}, {"type", "kinematic"}, {"size", {1, 1}}}});
   level["triggers"] = json::array({trigger});
   return level;
 }
@@ -271,15 +274,19 @@ std::vector<Kind> kinds() {
                  [](const json& obj) { return script_level(obj); }, false});
   for (const json& ref : def("condition").at("oneOf")) {
     const json condition = resolved(ref);
-    out.push_back({condition.at("properties").at("type").at("const").get<std::string>() + " condition", condition,
-                   "/triggers/0/when",
+    out.push_back({condition.at("properties").at("type").at("const").get<std::string>() + " condition",
+                   condition, "/triggers/0/when",
                    [condition](const std::string& key) { return required_base(condition, key); },
-                   [](const json& obj) { return script_level({{"when", obj}, {"do", json::array()}}); }, false});
+                   [](const json& obj) {
+                     return script_level({{"when", obj}, {"do", json::array()}});
+                   },
+                   false});
   }
   for (const json& ref : def("action").at("oneOf")) {
     const json action = resolved(ref);
     out.push_back({action.at("properties").at("action").at("const").get<std::string>() + " action", action,
-                   "/triggers/0/do/0", [action](const std::string& key) { return required_base(action, key); },
+                   "/triggers/0/do/0",
+                   [action](const std::string& key) { return required_base(action, key); },
                    [](const json& obj) {
                      return script_level({{"when", {{"type", "start"}}}, {"do", json::array({obj})}});
                    },
@@ -346,25 +353,30 @@ void check_bounds(const Kind& kind, const json& base, const std::string& key, co
     const bool lower = b.key == "minimum" || b.key == "exclusiveMinimum";
     const bool exclusive = b.key.rfind("exclusive", 0) == 0;
     const double outward = lower ? -inf : inf;
-    const double outside = exclusive ? b.value : integer ? b.value + (lower ? -1.0 : 1.0) : std::nextafter(b.value, outward);
-    const double inside = exclusive ? (integer ? b.value - (lower ? -1.0 : 1.0) : std::nextafter(b.value, -outward))
-                                    : b.value;
+    const double outside = exclusive ? b.value
+                           : integer ? b.value + (lower ? -1.0 : 1.0)
+                                     : std::nextafter(b.value, outward);
+    const double inside =
+        exclusive ? (integer ? b.value - (lower ? -1.0 : 1.0) : std::nextafter(b.value, -outward)) : b.value;
     {
       const auto issues = probe(outside);
       INFO(kind.name << "." << key << " " << b.key << " " << b.value << ": " << outside
-                     << " should be out of range\n" << joined(issues));
+                     << " should be out of range\n"
+                     << joined(issues));
       CHECK(range_issue_at(issues, path));
     }
     {
       const auto issues = probe(inside);
       INFO(kind.name << "." << key << " " << b.key << " " << b.value << ": " << inside
-                     << " should be in range\n" << joined(issues));
+                     << " should be in range\n"
+                     << joined(issues));
       CHECK_FALSE(range_issue_at(issues, path));
     }
   }
   const auto bounds = bounds_of(slot.numbers);
   if (!integer && bounds.size() == 2) {  // a number may have a fraction
-    const double lo = std::min(bounds[0].value, bounds[1].value), hi = std::max(bounds[0].value, bounds[1].value);
+    const double lo = std::min(bounds[0].value, bounds[1].value),
+                 hi = std::max(bounds[0].value, bounds[1].value);
     double v = lo + (hi - lo) * 0.3712345;
     if (std::floor(v) == v) v += std::min(0.5, (hi - v) / 2.0);
     const auto issues = probe(v);
@@ -395,27 +407,51 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
   return {
       {"root", {{"description", l.description}, {"gravity", vec(l.gravity)}}},
       {"solver",
-       {{"dt", s.dt}, {"substeps", s.substeps}, {"iterations", s.iterations}, {"damping", s.damping},
-        {"tunnel_clamp", s.tunnel_clamp}, {"ground_normal_y", s.ground_normal_y}, {"method", method_name(s.method)}}},
+       {{"dt", s.dt},
+        {"substeps", s.substeps},
+        {"iterations", s.iterations},
+        {"damping", s.damping},
+        {"tunnel_clamp", s.tunnel_clamp},
+        {"ground_normal_y", s.ground_normal_y},
+        {"method", method_name(s.method)}}},
       {"tire",
-       {{"velocity", vec(t.velocity)}, {"angle", t.angle}, {"angular_velocity", t.angular_velocity},
-        {"outer_radius", t.outer_radius}, {"inner_radius", t.inner_radius}, {"segments", t.segments},
-        {"mass", t.mass}, {"friction", t.friction}, {"pressure", t.pressure},
+       {{"velocity", vec(t.velocity)},
+        {"angle", t.angle},
+        {"angular_velocity", t.angular_velocity},
+        {"outer_radius", t.outer_radius},
+        {"inner_radius", t.inner_radius},
+        {"segments", t.segments},
+        {"mass", t.mass},
+        {"friction", t.friction},
+        {"pressure", t.pressure},
         {"spokes", t.spokes == SpokePattern::cross ? "cross" : "radial"},
-        {"material_damping", t.material_damping}, {"rolling_resistance", t.rolling_resistance},
-        {"player", t.player}, {"drive_acceleration", t.drive_acceleration}, {"jump_speed", t.jump_speed},
+        {"material_damping", t.material_damping},
+        {"rolling_resistance", t.rolling_resistance},
+        {"player", t.player},
+        {"drive_acceleration", t.drive_acceleration},
+        {"jump_speed", t.jump_speed},
         {"max_speed", t.max_speed}}},
       {"compliance", {{"outer", c.outer}, {"inner", c.inner}, {"spoke", c.spoke}, {"pressure", c.pressure}}},
       {"obstacle", {{"friction", o.friction}}},
       {"prop",
        {{"name", p.name},
-        {"type", p.type == PropType::static_body ? "static" : p.type == PropType::dynamic_body ? "dynamic" : "kinematic"},
-        {"position", vec(p.position)}, {"angle", p.angle}, {"loop", p.loop}, {"thickness", p.thickness},
-        {"density", p.density}, {"friction", p.friction}, {"restitution", p.restitution},
-        {"velocity", vec(p.velocity)}, {"angular_velocity", p.angular_velocity}}},
+        {"type", p.type == PropType::static_body    ? "static"
+                 : p.type == PropType::dynamic_body ? "dynamic"
+                                                    : "kinematic"},
+        {"position", vec(p.position)},
+        {"angle", p.angle},
+        {"loop", p.loop},
+        {"thickness", p.thickness},
+        {"density", p.density},
+        {"friction", p.friction},
+        {"restitution", p.restitution},
+        {"velocity", vec(p.velocity)},
+        {"angular_velocity", p.angular_velocity}}},
       {"path",
        {{"speed", k.speed},
-        {"mode", k.mode == PathMode::loop ? "loop" : k.mode == PathMode::once ? "once" : "ping_pong"},
+        {"mode", k.mode == PathMode::loop   ? "loop"
+                 : k.mode == PathMode::once ? "once"
+                                            : "ping_pong"},
         {"running", k.running}}},
   };
 }
@@ -424,21 +460,25 @@ bool empty_container(const json& v) { return (v.is_object() || v.is_array()) && 
 
 }  // namespace
 
-TEST_CASE("the schema is draft 2020-12 and every object in it forbids unknown keys", "[unit][level][schema]") {
+TEST_CASE("the schema is draft 2020-12 and every object in it forbids unknown keys",
+          "[unit][level][schema]") {
   const json& s = schema();
   CHECK(s.at("$schema") == "https://json-schema.org/draft/2020-12/schema");
   CHECK(s.at("$id") == "levels/schema.json");
-  for (const char* name : {"coordinate", "velocity", "solver", "tire", "compliance", "obstacle", "prop", "path"})
+  for (const char* name :
+       {"coordinate", "velocity", "solver", "tire", "compliance", "obstacle", "prop", "path"})
     CHECK(s.at("$defs").contains(name));
   // Every object schema with properties closes itself, and every property says what it is.
-  std::function<void(const json&, const std::string&)> walk = [&](const json& node, const std::string& where) {
+  std::function<void(const json&, const std::string&)> walk = [&](const json& node,
+                                                                  const std::string& where) {
     if (node.is_array()) {
       for (std::size_t i = 0; i < node.size(); ++i) walk(node[i], where + "/" + std::to_string(i));
       return;
     }
     if (!node.is_object()) return;
     // Rules (if/then/else, oneOf alternatives, contains) only narrow an object declared elsewhere.
-    const bool in_rule = where.find("/allOf/") != std::string::npos || where.find("/oneOf/") != std::string::npos ||
+    const bool in_rule = where.find("/allOf/") != std::string::npos ||
+                         where.find("/oneOf/") != std::string::npos ||
                          where.find("/contains") != std::string::npos;
     if (node.contains("properties") && !in_rule) {
       INFO(where);
@@ -460,7 +500,8 @@ TEST_CASE("every key the schema declares is accepted by the level reader", "[uni
       json object = kind.base(key);
       object[key] = sample(kind.schema.at("properties").at(key));
       const auto issues = issues_of(kind.level(object));
-      INFO(kind.name << "." << key << " = " << object[key].dump() << " in " << kind.level(object).dump() << "\n"
+      INFO(kind.name << "." << key << " = " << object[key].dump() << " in " << kind.level(object).dump()
+                     << "\n"
                      << joined(issues));
       CHECK(issues.empty());
     }
@@ -495,7 +536,8 @@ TEST_CASE("every choice the level reader offers is in the schema's enum", "[unit
       INFO(kind.name << "." << key << "\n" << joined(issues));
       REQUIRE(bad != nullptr);
       const auto enum_values = strings(property.at("enum"));
-      CHECK(quoted_after(bad->message, "must be one of ") == std::set<std::string>(enum_values.begin(), enum_values.end()));
+      CHECK(quoted_after(bad->message, "must be one of ") ==
+            std::set<std::string>(enum_values.begin(), enum_values.end()));
     }
   }
   // The conditions' types and the actions' names, which select a branch of a oneOf.
@@ -506,10 +548,15 @@ TEST_CASE("every choice the level reader offers is in the schema's enum", "[unit
     const char* path;
   };
   const std::vector<Selector> selectors{
-      {"condition", "type", [](const json& when) { return script_level({{"when", when}, {"do", json::array()}}); },
+      {"condition", "type",
+       [](const json& when) {
+         return script_level({{"when", when}, {"do", json::array()}});
+       },
        "/triggers/0/when/type"},
       {"action", "action",
-       [](const json& action) { return script_level({{"when", {{"type", "start"}}}, {"do", json::array({action})}}); },
+       [](const json& action) {
+         return script_level({{"when", {{"type", "start"}}}, {"do", json::array({action})}});
+       },
        "/triggers/0/do/0/action"}};
   for (const Selector& selector : selectors) {
     std::set<std::string> values;
@@ -532,13 +579,15 @@ TEST_CASE("every default in the schema is the engine's default", "[unit][level][
     REQUIRE(known != engine.end());
     for (const auto& [key, property] : properties.items()) {
       const json p = resolved(property);
-      if (!p.contains("default") || empty_container(p.at("default"))) continue;  // {} and []: all defaults, none
+      if (!p.contains("default") || empty_container(p.at("default")))
+        continue;  // {} and []: all defaults, none
       INFO(kind.name << "." << key << ": schema default " << p.at("default").dump());
       REQUIRE(known->second.count(key) == 1);
       CHECK(p.at("default") == known->second.at(key));
     }
     for (const auto& [key, value] : known->second) {
-      INFO(kind.name << "." << key << ": the engine default " << value.dump() << " is missing from the schema");
+      INFO(kind.name << "." << key << ": the engine default " << value.dump()
+                     << " is missing from the schema");
       REQUIRE(properties.contains(key));
       CHECK(resolved(properties.at(key)).contains("default"));
     }
@@ -573,8 +622,9 @@ TEST_CASE("every numeric range in the schema is the level reader's range", "[uni
       REQUIRE(selector.size() == 1);
       const std::string selector_key = selector.begin().key();
       const json& choice = selector.begin().value();
-      const std::vector<std::string> values = choice.contains("const") ? std::vector<std::string>{choice.at("const").get<std::string>()}
-                                                                       : strings(choice.at("enum"));
+      const std::vector<std::string> values =
+          choice.contains("const") ? std::vector<std::string>{choice.at("const").get<std::string>()}
+                                   : strings(choice.at("enum"));
       for (const auto& [key, numbers] : rule.at("then").at("properties").items()) {
         json number_schema = resolved(kind.schema.at("properties").at(key));
         for (const auto& [k, v] : numbers.items()) number_schema[k] = v;
@@ -594,7 +644,9 @@ TEST_CASE("every string length limit in the schema is the level reader's", "[uni
       const json p = resolved(kind.schema.at("properties").at(key));
       if (p.value("type", "") != "string" || p.contains("enum")) continue;
       const std::string path = kind.path + "/" + key;
-      auto probe = [&](const std::string& value) { return issues_of(kind.level(with(kind.base(key), key, value))); };
+      auto probe = [&](const std::string& value) {
+        return issues_of(kind.level(with(kind.base(key), key, value)));
+      };
       auto too_long = [&](const std::vector<Issue>& issues) {
         for (const Issue& i : issues)
           if (i.path == path && i.message.rfind("must be a string of at most", 0) == 0) return true;

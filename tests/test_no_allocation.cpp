@@ -189,7 +189,8 @@ struct HeapActivity {
 
   static HeapActivity now() {
     const struct mallinfo2 m = mallinfo2();
-    return {::news.load(), ::aligned_news.load(), ::deletes.load(), ::mallocs.load(), ::frees.load(), m.uordblks + m.hblkhd};
+    return {::news.load(),    ::aligned_news.load(), ::deletes.load(),
+            ::mallocs.load(), ::frees.load(),        m.uordblks + m.hblkhd};
   }
 };
 
@@ -314,7 +315,8 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
   world.add_obstacle({{{-1, -1}, {13, 0}}});
   world.add_obstacle({{{-1, 0}, {0, 50}}});
   world.add_obstacle({{{12, 0}, {13, 50}}});
-  for (int i = 0; i < 64; ++i) world.add_tire(tire_at({0.6 + 1.05 * (i % 11) + 0.2 * ((i / 11) % 2), 0.5 + 1.0 * (i / 11)}));
+  for (int i = 0; i < 64; ++i)
+    world.add_tire(tire_at({0.6 + 1.05 * (i % 11) + 0.2 * ((i / 11) % 2), 0.5 + 1.0 * (i / 11)}));
   PropSpec crate;
   crate.type = PropType::dynamic_body;
   crate.size = {0.6, 0.6};

@@ -33,8 +33,15 @@ bool expected_ok(const Parameter& p, double v) {
 // Values at, just past and between the ends of the row's range, and some fractions.
 std::vector<double> probes(const Parameter& p) {
   const Range& r = p.range;
-  std::vector<double> v{r.min, r.max, std::nextafter(r.min, -kInf), std::nextafter(r.max, kInf), (r.min + r.max) / 2,
-                        r.min - 1, r.max + 1, 0.0, p.default_value};
+  std::vector<double> v{r.min,
+                        r.max,
+                        std::nextafter(r.min, -kInf),
+                        std::nextafter(r.max, kInf),
+                        (r.min + r.max) / 2,
+                        r.min - 1,
+                        r.max + 1,
+                        0.0,
+                        p.default_value};
   if (p.integer) v.insert(v.end(), {r.min + 0.5, r.max - 0.5});
   return v;
 }
@@ -55,12 +62,14 @@ std::vector<std::string> keys_of(const Parameter& p) {
 // The errors, as "/path: message", of a level or replay file, without the file name.
 std::vector<std::string> stripped(const std::vector<std::string>& errors, const std::string& file) {
   std::vector<std::string> out;
-  for (const std::string& e : errors) out.push_back(e.rfind(file + ": ", 0) == 0 ? e.substr(file.size() + 2) : e);
+  for (const std::string& e : errors)
+    out.push_back(e.rfind(file + ": ", 0) == 0 ? e.substr(file.size() + 2) : e);
   return out;
 }
 
 // Whether one of `errors` is at `path`; `message` its text there.
-bool error_at(const std::vector<std::string>& errors, const std::string& path, std::string* message = nullptr) {
+bool error_at(const std::vector<std::string>& errors, const std::string& path,
+              std::string* message = nullptr) {
   for (const std::string& e : errors)
     if (e.rfind(path + ": ", 0) == 0) {
       if (message) *message = e.substr(path.size() + 2);
@@ -94,13 +103,17 @@ json level_with(const Parameter& p, const json& value, std::string& path) {
 json script_level(const std::string& key, const json& value) {
   return {{"name", "probe"},
           {"tires", json::array({{{"position", {0, 1}}}})},
-          {"triggers", json::array({{{"when", {{"type", "start"}}},
-                                     {"do", json::array({{{"action", "set"}, {"key", key}, {"value", value}}})}}})}};
+          {"triggers",
+           json::array({{{"when", {{"type", "start"}}},
+                         {"do", json::array({{{"action", "set"}, {"key", key}, {"value", value}}})}}})}};
 }
 
 std::vector<std::string> replay_errors(const json& inputs) {
-  const json replay{{"format", kReplayFormat}, {"level", "probe-level.json"}, {"level_sha256", std::string(64, '0')},
-                    {"ticks", 10},           {"inputs", inputs}};
+  const json replay{{"format", kReplayFormat},
+                    {"level", "probe-level.json"},
+                    {"level_sha256", std::string(64, '0')},
+                    {"ticks", 10},
+                    {"inputs", inputs}};
   return stripped(load_replay_text(replay.dump(), "probe.json").errors, "probe.json");
 }
 
@@ -112,9 +125,11 @@ World probe_world() { return test::flat_world(test::tire_at({0, 0.5}, true)); }
 
 }  // namespace
 
-TEST_CASE("the parameter table: one row a key, its default the engine's, its setters consistent", "[unit][parameters]") {
+TEST_CASE("the parameter table: one row a key, its default the engine's, its setters consistent",
+          "[unit][parameters]") {
   // A world built from a level that gives nothing holds every row's default.
-  const LevelLoad load = load_level_text(R"({"name": "defaults", "tires": [{"position": [0, 1]}]})", "defaults.json");
+  const LevelLoad load =
+      load_level_text(R"({"name": "defaults", "tires": [{"position": [0, 1]}]})", "defaults.json");
   REQUIRE(load.level);
   const std::unique_ptr<LevelSession> session = make_session(*load.level);
   const World* const world = &session->world();
@@ -126,8 +141,10 @@ TEST_CASE("the parameter table: one row a key, its default the engine's, its set
     CHECK(p.accepts(p.default_value));
     // What the panel, a script or a replay sets is set while the world runs, so World takes it.
     CHECK(p.runtime() == (p.may(by_script) || p.may(by_replay) || p.may(by_panel)));
-    if (p.is_tire()) CHECK(find_parameter("player." + std::string(p.key).substr(6)) == &p);
-    else CHECK(find_parameter("player." + std::string(p.key)) == nullptr);
+    if (p.is_tire())
+      CHECK(find_parameter("player." + std::string(p.key).substr(6)) == &p);
+    else
+      CHECK(find_parameter("player." + std::string(p.key)) == nullptr);
   }
   CHECK(find_parameter("tires.colour") == nullptr);
   CHECK(find_parameter("player.solver.substeps") == nullptr);
@@ -135,11 +152,14 @@ TEST_CASE("the parameter table: one row a key, its default the engine's, its set
   CHECK(parameter(ParamId::tire_mass).default_value == TireSpec{}.mass);
   CHECK(parameter(ParamId::tire_compliance_spoke).default_value == TireSpec{}.compliance.spoke);
   CHECK(parameter(ParamId::solver_substeps).default_value == SolverConfig{}.substeps);
-  CHECK(Level{}.gravity == Vec2{parameter(ParamId::gravity_x).default_value, parameter(ParamId::gravity_y).default_value});
+  CHECK(Level{}.gravity ==
+        Vec2{parameter(ParamId::gravity_x).default_value, parameter(ParamId::gravity_y).default_value});
 }
 
-TEST_CASE("every row's range is enforced identically by the level, script and replay readers and World::set_parameter",
-          "[unit][parameters]") {
+TEST_CASE(
+    "every row's range is enforced identically by the level, script and replay readers and "
+    "World::set_parameter",
+    "[unit][parameters]") {
   for (const Parameter& p : parameters()) {
     const std::string want = range_message(p);
     for (const double v : probes(p)) {
@@ -189,8 +209,10 @@ TEST_CASE("every row's range is enforced identically by the level, script and re
           const std::optional<double> before = world.parameter(key);
           const bool set = world.set_parameter(key, v);
           CHECK(set == (ok && p.runtime()));
-          if (set) CHECK(world.parameter(key).value_or(kInf) == Approx(v).margin(1e-12));
-          else CHECK(world.parameter(key) == before);
+          if (set)
+            CHECK(world.parameter(key).value_or(kInf) == Approx(v).margin(1e-12));
+          else
+            CHECK(world.parameter(key) == before);
         }
       }
     }
@@ -203,11 +225,13 @@ TEST_CASE("every row's range is enforced identically by the level, script and re
   }
 }
 
-TEST_CASE("the gravity rows' range is the level's, a set_gravity action's and a replay gravity input's", "[unit][parameters]") {
+TEST_CASE("the gravity rows' range is the level's, a set_gravity action's and a replay gravity input's",
+          "[unit][parameters]") {
   const Parameter& g = parameter(ParamId::gravity_x);
   REQUIRE(parameter(ParamId::gravity_y).range == g.range);
   const std::string want = "must be [x, y] with each in " + g.range.text() + " " + g.unit + ", got ";
-  for (const double v : {g.range.min, g.range.max, std::nextafter(g.range.min, -kInf), std::nextafter(g.range.max, kInf)}) {
+  for (const double v :
+       {g.range.min, g.range.max, std::nextafter(g.range.min, -kInf), std::nextafter(g.range.max, kInf)}) {
     const bool ok = expected_ok(g, v);
     const json gravity{0.0, v};
     INFO(gravity.dump());
@@ -215,20 +239,25 @@ TEST_CASE("the gravity rows' range is the level's, a set_gravity action's and a 
     CHECK(error_at(level_errors({{"name", "probe"}, {"gravity", gravity}}), "/gravity", &message) == !ok);
     if (!ok) CHECK(message == want + gravity.dump());
     const json action{{"action", "set_gravity"}, {"gravity", gravity}};
-    const json level{{"name", "probe"},
-                     {"triggers", json::array({{{"when", {{"type", "start"}}}, {"do", json::array({action})}}})}};
+    const json level{
+        {"name", "probe"},
+        {"triggers", json::array({{{"when", {{"type", "start"}}}, {"do", json::array({action})}}})}};
     CHECK(error_at(level_errors(level), "/triggers/0/do/0/gravity") == !ok);
-    CHECK(error_at(replay_errors(json::array({{{"tick", 0}, {"gravity", gravity}}})), "/inputs/0/gravity") == !ok);
+    CHECK(error_at(replay_errors(json::array({{{"tick", 0}, {"gravity", gravity}}})), "/inputs/0/gravity") ==
+          !ok);
   }
 }
 
-TEST_CASE("a replay that sets tires.mass_scale to 0 is refused, and so is the world's set_parameter", "[unit][parameters]") {
+TEST_CASE("a replay that sets tires.mass_scale to 0 is refused, and so is the world's set_parameter",
+          "[unit][parameters]") {
   // The tire would divide by its mass: 2n / (spawn mass x 0) is infinite, and it diverged every tick.
   const std::string file = test::source_path("tests/replays-bad/mass-scale-zero.json");
   const ReplayLoad load = load_replay_file(file);
   CHECK_FALSE(load.replay);
-  CHECK(load.errors == std::vector<std::string>{
-                           file + ": /inputs/0/set/value: must be a number in [0.01, 10] (times the tire's spawn mass), got 0"});
+  CHECK(load.errors ==
+        std::vector<std::string>{
+            file +
+            ": /inputs/0/set/value: must be a number in [0.01, 10] (times the tire's spawn mass), got 0"});
   // The same replay with a scale in range is a valid replay.
   CHECK(replay_errors(set_input("tires.mass_scale", 0.5)).empty());
   CHECK(replay_errors(set_input("player.mass_scale", 10)).empty());

@@ -70,7 +70,8 @@ TEST_CASE("a circle pushes out radially and catches a particle that crossed it",
   CHECK_FALSE(local_contact(g, {2, 0}, {1.5, 0}));
 }
 
-TEST_CASE("a chain is one-sided: solid on the right of its points, as thick as it says", "[unit][props][contact]") {
+TEST_CASE("a chain is one-sided: solid on the right of its points, as thick as it says",
+          "[unit][props][contact]") {
   PropSpec spec = shape_spec(PropShape::chain);
   spec.points = {{-5, 0}, {0, 0}, {5, -1}};  // terrain drawn left to right: solid below
   spec.thickness = 0.5;
@@ -103,9 +104,9 @@ TEST_CASE("a chain is one-sided: solid on the right of its points, as thick as i
 
 TEST_CASE("convexity is checked: counter-clockwise, no dents, one turn", "[unit][props]") {
   CHECK(is_convex_ccw({{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
-  CHECK_FALSE(is_convex_ccw({{0, 0}, {0, 1}, {1, 1}, {1, 0}}));          // clockwise
+  CHECK_FALSE(is_convex_ccw({{0, 0}, {0, 1}, {1, 1}, {1, 0}}));            // clockwise
   CHECK_FALSE(is_convex_ccw({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}));  // dented
-  CHECK_FALSE(is_convex_ccw({{0, 0}, {1, 0}, {2, 0}, {1, 1}}));          // three in a line
+  CHECK_FALSE(is_convex_ccw({{0, 0}, {1, 0}, {2, 0}, {1, 1}}));            // three in a line
   std::vector<Vec2> star;
   for (int i = 0; i < 5; ++i) {
     const double a = 4.0 * std::numbers::pi * i / 5;
@@ -170,7 +171,8 @@ TEST_CASE("a tire rolls down a slope at g sin(theta) / (1 + I/(M R^2))", "[unit]
   }
 }
 
-TEST_CASE("a tire with no friction slides down a slope at g sin(theta) without turning", "[unit][props][physics]") {
+TEST_CASE("a tire with no friction slides down a slope at g sin(theta) without turning",
+          "[unit][props][physics]") {
   const double theta = 20.0 * std::numbers::pi / 180.0;
   for (const PropShape shape : {PropShape::box, PropShape::chain}) {
     World world = slope_world(theta, shape, 0.0);
@@ -189,7 +191,8 @@ TEST_CASE("a tire rests stably on a gentle slope with enough friction", "[unit][
     run(world, 180);
     const Vec2 start = world.tires().front().centroid();
     double max_speed = 0.0;
-    for (int i = 0; i < 120; ++i) world.step({}), max_speed = std::max(max_speed, length(world.tires().front().velocity()));
+    for (int i = 0; i < 120; ++i)
+      world.step({}), max_speed = std::max(max_speed, length(world.tires().front().velocity()));
     INFO((shape == PropShape::chain ? "chain" : "box") << " slope");
     CHECK(max_speed < 1e-3);
     CHECK(length(world.tires().front().centroid() - start) < 2e-3);
@@ -250,9 +253,9 @@ TEST_CASE("a driving tire pushes a crate along the ground", "[unit][props][physi
   const double crate_x = world.rigid().props().front().start_pose.position.x;
   const Tire& t = world.tires().front();
   INFO("crate at " << crate_x << ", tire at " << t.centroid().x);
-  CHECK(crate_x > 2.5);                                           // pushed more than a metre
-  CHECK(t.centroid().x < crate_x - 0.5);                          // from behind: not over, not through
-  CHECK(t.centroid().y == Approx(0.49).margin(0.02));            // still on the ground
+  CHECK(crate_x > 2.5);                                // pushed more than a metre
+  CHECK(t.centroid().x < crate_x - 0.5);               // from behind: not over, not through
+  CHECK(t.centroid().y == Approx(0.49).margin(0.02));  // still on the ground
 }
 
 TEST_CASE("a moving platform carries a tire by friction, as a free wheel", "[unit][props][physics]") {
@@ -339,7 +342,9 @@ TEST_CASE("props are read with every mistake reported at its path", "[unit][prop
       { "shape": "wedge" },
       { "shape": "box", "type": "static", "path": { "waypoints": [[0, 0]] } },
       { "shape": "polygon", "points": [[0, 0], [1, 0], [2, "x"]] }
-    ] })", "p.json").errors;
+    ] })",
+                                      "p.json")
+                          .errors;
   std::string all;
   for (const std::string& e : errors) all += e + "\n";
   INFO(all);
@@ -351,7 +356,8 @@ TEST_CASE("props are read with every mistake reported at its path", "[unit][prop
   CHECK(has("p.json: /props/2/type: a chain can only be static"));
   CHECK(has("p.json: /props/2/points/1: must be at least 0.01 m from the point before it"));
   CHECK(has("p.json: /props/3/radius: is required"));
-  CHECK(has("p.json: /props/4/shape: must be one of \"box\", \"circle\", \"polygon\", \"chain\", got \"wedge\""));
+  CHECK(has(
+      "p.json: /props/4/shape: must be one of \"box\", \"circle\", \"polygon\", \"chain\", got \"wedge\""));
   CHECK(has("p.json: /props/5/path: applies only to kinematic props, and this one is static"));
   CHECK(has("p.json: /props/6/points/2: must be [x, y]"));
   CHECK_FALSE(has("/props/6/points: must be a convex"));  // no knock-on error from the bad point

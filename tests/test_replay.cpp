@@ -1,9 +1,10 @@
 // Replays: read strictly, written atomically, played back bit for bit.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <csignal>
 #include <filesystem>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "tire/io/file_io.h"
 #include "tire/replay/replay.h"
@@ -17,7 +18,8 @@ TEST_CASE("SHA-256 is the standard one", "[unit][replay]") {
   CHECK(sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
 }
 
-TEST_CASE("a recorded run replays to the same hashes, and a changed input is caught", "[unit][replay][determinism]") {
+TEST_CASE("a recorded run replays to the same hashes, and a changed input is caught",
+          "[unit][replay][determinism]") {
   const Level level = default_level();
   ReplayRecorder recorder("level.json", std::string(64, '0'), 10);
   auto session = make_session(level);
@@ -77,7 +79,9 @@ TEST_CASE("only known keys can be tuned by a replay", "[unit][replay]") {
                                        "r.json")
                           .errors;
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0] == "r.json: /inputs/0/set/key: must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"solver.dt\"");
+  CHECK(errors[0] ==
+        "r.json: /inputs/0/set/key: must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", "
+        "got \"solver.dt\"");
   CHECK(errors[1] == "r.json: /inputs/1: has a tick but no input (steer, jump, spawn, ...)");
 }
 
@@ -100,7 +104,8 @@ TEST_CASE("a file written atomically survives the writer being killed mid-write"
     ::waitpid(child, nullptr, 0);
     const auto contents = read_file(file, 1ull << 30, error);
     REQUIRE(contents);
-    const bool whole = *contents == "old and whole" || (contents->size() == (64u << 20) && contents->back() == 'x');
+    const bool whole =
+        *contents == "old and whole" || (contents->size() == (64u << 20) && contents->back() == 'x');
     CHECK(whole);
   }
   std::filesystem::remove_all(dir);

@@ -40,7 +40,8 @@ TEST_CASE("the tire broad phase finds exactly the overlapping pairs, in a fixed 
   finder.find(tires, 1.0 / 60.0, 0.0, pairs);  // at rest: bounds grow by the skin only
   finder.find(tires, 1.0 / 60.0, 0.0, again);
   REQUIRE(pairs.size() == again.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) CHECK((pairs[k].a == again[k].a && pairs[k].b == again[k].b));
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    CHECK((pairs[k].a == again[k].a && pairs[k].b == again[k].b));
   std::size_t brute = 0;
   for (std::uint32_t i = 0; i < tires.size(); ++i)
     for (std::uint32_t j = i + 1; j < tires.size(); ++j) {
@@ -48,7 +49,8 @@ TEST_CASE("the tire broad phase finds exactly the overlapping pairs, in a fixed 
       const Vec2 d = tires[i].centroid() - tires[j].centroid();
       const double side = 2 * 0.5 + 2 * kTirePairSkin;
       const bool near = std::abs(d.x) < side - 1e-9 && std::abs(d.y) < side - 1e-9;
-      const bool listed = std::any_of(pairs.begin(), pairs.end(), [&](const TirePair& p) { return p.a == i && p.b == j; });
+      const bool listed =
+          std::any_of(pairs.begin(), pairs.end(), [&](const TirePair& p) { return p.a == i && p.b == j; });
       if (near) CHECK(listed);
       brute += listed;
     }
@@ -66,7 +68,9 @@ TEST_CASE("two tires colliding keep momentum and never pass into each other", "[
   right.mass = 20;
   world.add_tire(left);
   world.add_tire(right);
-  const auto momentum = [&] { return world.tires()[0].velocity() * 10.0 + world.tires()[1].velocity() * 20.0; };
+  const auto momentum = [&] {
+    return world.tires()[0].velocity() * 10.0 + world.tires()[1].velocity() * 20.0;
+  };
   const Vec2 before = momentum();
   double worst = 0.0;
   for (int i = 0; i < 90; ++i) {
@@ -76,14 +80,15 @@ TEST_CASE("two tires colliding keep momentum and never pass into each other", "[
   }
   const Vec2 after = momentum();
   INFO("velocities after: " << world.tires()[0].velocity().x << ", " << world.tires()[1].velocity().x);
-  CHECK(world.tires()[0].velocity().x < 0.0);  // they bounced off each other
+  CHECK(world.tires()[0].velocity().x < 0.0);             // they bounced off each other
   CHECK(after.x == Approx(before.x).margin(1e-9 * 160));  // scale: |p| of each tire is 80 N·s
   CHECK(after.y == Approx(before.y).margin(1e-9 * 160));
   CHECK(worst < 0.02);  // at most a small overlap within a step, corrected: no passing through
   CHECK(length(world.tires()[0].centroid() - world.tires()[1].centroid()) > 0.9);
 }
 
-TEST_CASE("a tire resting in the groove of two others stays there, and can jump off", "[unit][soft][physics]") {
+TEST_CASE("a tire resting in the groove of two others stays there, and can jump off",
+          "[unit][soft][physics]") {
   // (One tire balanced on another is an unstable equilibrium and rolls off, as real wheels do.)
   World world = flat_world(tire_at({-0.5, 0.5}));
   world.add_obstacle({{{-2, 0}, {-1, 3}}});
@@ -106,7 +111,8 @@ TEST_CASE("a pile of tires in a box settles without overlaps or NaN", "[unit][so
   world.add_obstacle({{{-10, -1}, {10, 0}}});
   world.add_obstacle({{{-4, 0}, {-3, 10}}});
   world.add_obstacle({{{3, 0}, {4, 10}}});
-  for (int i = 0; i < 16; ++i) world.add_tire(tire_at({-2.0 + 1.1 * (i % 4) + 0.1 * (i / 4), 0.6 + 1.2 * (i / 4)}));
+  for (int i = 0; i < 16; ++i)
+    world.add_tire(tire_at({-2.0 + 1.1 * (i % 4) + 0.1 * (i / 4), 0.6 + 1.2 * (i / 4)}));
   run(world, 600);
   double worst = 0.0, fastest = 0.0;
   for (const Tire& a : world.tires()) {
@@ -120,7 +126,8 @@ TEST_CASE("a pile of tires in a box settles without overlaps or NaN", "[unit][so
   CHECK(world.warnings().empty());
 }
 
-TEST_CASE("a tread particle inside another tire is projected along the particle-edge gradient", "[unit][soft]") {
+TEST_CASE("a tread particle inside another tire is projected along the particle-edge gradient",
+          "[unit][soft]") {
   // C = n·(p − (1−t) b0 − t b1) ≥ 0 with ∇_p C = n, ∇_b0 C = −(1−t) n, ∇_b1 C = −t n: one
   // projection of the real solve_tire_contact moves each of the three by w ∇C Δλ with
   // Δλ = −C / Σ w|∇C|² (XPBD eq. 17–18, α = 0), the gradients taken by finite differences; that
@@ -134,7 +141,8 @@ TEST_CASE("a tread particle inside another tire is projected along the particle-
   // B's tread edge facing +x, and the particle of A facing B, moved 1 cm inside that edge, off centre.
   std::uint32_t k = 0, i = 0;
   for (std::uint32_t j = 0; j < n; ++j) {
-    if (b.particles.x[j].x + b.particles.x[(j + 1) % n].x > b.particles.x[k].x + b.particles.x[(k + 1) % n].x) k = j;
+    if (b.particles.x[j].x + b.particles.x[(j + 1) % n].x > b.particles.x[k].x + b.particles.x[(k + 1) % n].x)
+      k = j;
     if (a.particles.x[j].x < a.particles.x[i].x) i = j;
   }
   const std::uint32_t k1 = (k + 1) % n;
@@ -163,13 +171,14 @@ TEST_CASE("a tread particle inside another tire is projected along the particle-
   const double eps = 1e-7;
   const auto fd = [&](int which) {
     const auto at = [&](Vec2 dq) {
-      return line_C(p + (which == 0 ? dq : Vec2{}), b0 + (which == 1 ? dq : Vec2{}), b1 + (which == 2 ? dq : Vec2{}));
+      return line_C(p + (which == 0 ? dq : Vec2{}), b0 + (which == 1 ? dq : Vec2{}),
+                    b1 + (which == 2 ? dq : Vec2{}));
     };
     return Vec2{(at({eps, 0}) - at({-eps, 0})) / (2 * eps), (at({0, eps}) - at({0, -eps})) / (2 * eps)};
   };
   const Vec2 grad_p = fd(0), grad_b0 = fd(1), grad_b1 = fd(2);
   CHECK(line_C(p, b0, b1) == Approx(C).margin(1e-12));
-  CHECK(length(grad_p - normal) < 1e-7);            // ∇_p C = n
+  CHECK(length(grad_p - normal) < 1e-7);             // ∇_p C = n
   CHECK(length(grad_b0 + normal * (1 - t)) < 1e-7);  // ∇_b0 C = −(1−t) n
   CHECK(length(grad_b1 + normal * t) < 1e-7);        // ∇_b1 C = −t n
 

@@ -75,7 +75,8 @@ TEST_CASE("a tire's rest sag does not depend on substeps", "[unit][motion][physi
     for (int i = 0; i < 60; ++i) world.step({}), sum += world.tires().front().centroid().y;
     sags.push_back(spec.outer_radius - sum / 60);
   }
-  INFO("sag at 16, 32, 64, 128 substeps: " << sags[0] << ", " << sags[1] << ", " << sags[2] << ", " << sags[3]);
+  INFO("sag at 16, 32, 64, 128 substeps: " << sags[0] << ", " << sags[1] << ", " << sags[2] << ", "
+                                           << sags[3]);
   CHECK(sags[3] > 0.005);  // the tire really is soft
   CHECK(sags[0] == Approx(sags[3]).epsilon(0.20));
   CHECK(sags[1] == Approx(sags[3]).epsilon(0.08));

@@ -78,7 +78,7 @@ TEST_CASE("a NaN never spreads: the tire is reset and a warning raised", "[unit]
   CHECK(world.warnings().front().find("diverged") != std::string::npos);
   for (const Tire& t : world.tires()) CHECK(t.is_finite());
   CHECK(world.find_tire(0)->centroid().y == Approx(2.0).margin(0.05));  // back at its spawn
-  CHECK(world.find_tire(1)->centroid().y < 1.99);  // the other tire carried on falling
+  CHECK(world.find_tire(1)->centroid().y < 1.99);                       // the other tire carried on falling
 }
 
 TEST_CASE("tires of one shape share one topology and keep their own compliance", "[unit][shape]") {

@@ -8,7 +8,9 @@
 
 namespace tire::test {
 
-inline std::string source_path(const std::string& relative) { return std::string(TIRE_SOURCE_DIR) + "/" + relative; }
+inline std::string source_path(const std::string& relative) {
+  return std::string(TIRE_SOURCE_DIR) + "/" + relative;
+}
 
 inline TireSpec tire_at(Vec2 position, bool player = false) {
   TireSpec spec;

@@ -11,7 +11,8 @@
 
 namespace tire {
 
-std::optional<std::string> read_file(const std::filesystem::path& file, std::uintmax_t max_bytes, std::string& error) {
+std::optional<std::string> read_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
+                                     std::string& error) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
     error = std::filesystem::exists(file, ec) ? "not a regular file" : "no such file";

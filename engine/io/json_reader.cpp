@@ -113,7 +113,8 @@ void JsonReader::fail(const std::string& path, std::string message) {
   // A hostile file can hold a million mistakes; the first ones tell the story.
   if (issues_.size() > kMaxIssues) return;
   if (issues_.size() == kMaxIssues) {
-    issues_.push_back({"", "more problems follow; only the first " + std::to_string(kMaxIssues) + " are reported"});
+    issues_.push_back(
+        {"", "more problems follow; only the first " + std::to_string(kMaxIssues) + " are reported"});
     return;
   }
   issues_.push_back({path, std::move(message)});
@@ -131,14 +132,15 @@ bool JsonReader::object(const json& j, const std::string& path,
     std::size_t best_distance = 3;  // suggest only close matches
     for (const auto& candidate : allowed) {
       // The distance is at least the difference in length: a long hostile key costs nothing.
-      const std::size_t gap = key.size() > candidate.size() ? key.size() - candidate.size() : candidate.size() - key.size();
+      const std::size_t gap =
+          key.size() > candidate.size() ? key.size() - candidate.size() : candidate.size() - key.size();
       if (gap >= best_distance) continue;
       const std::size_t d = edit_distance(key, candidate);
       if (d < best_distance) best_distance = d, best = candidate;
     }
     fail(join_path(path, shorten_key(key)), best.empty()
-                                   ? "unknown key; expected one of " + quoted_list(allowed)
-                                   : "unknown key; did you mean \"" + std::string(best) + "\"?");
+                                                ? "unknown key; expected one of " + quoted_list(allowed)
+                                                : "unknown key; did you mean \"" + std::string(best) + "\"?");
   }
   return true;
 }
@@ -155,8 +157,8 @@ bool JsonReader::array(const json& j, const std::string& path, std::size_t max_s
   return true;
 }
 
-double JsonReader::number(const json& obj, const std::string& path, const char* key,
-                          double fallback, const Range& range, const char* unit, bool required) {
+double JsonReader::number(const json& obj, const std::string& path, const char* key, double fallback,
+                          const Range& range, const char* unit, bool required) {
   const std::string p = join_path(path, key);
   const auto it = obj.find(key);
   if (it == obj.end()) {
@@ -206,7 +208,8 @@ std::string JsonReader::string(const json& obj, const std::string& path, const c
     return fallback;
   }
   if (!it->is_string() || it->get_ref<const std::string&>().size() > max_length) {
-    fail(p, "must be a string of at most " + std::to_string(max_length) + " characters, got " + describe(*it));
+    fail(p,
+         "must be a string of at most " + std::to_string(max_length) + " characters, got " + describe(*it));
     return fallback;
   }
   return it->get<std::string>();
@@ -318,7 +321,8 @@ class BoundedBuilder {
     // The lexer has just read the key's closing quote: the cursor is on the key's line.
     const auto [first, inserted] = f.key_lines.emplace(k, cursor_.line);
     if (!inserted && duplicates_.size() <= kMaxIssues)
-      duplicates_.push_back({path(), "key given twice (first at line " + std::to_string(first->second) + ")"});
+      duplicates_.push_back(
+          {path(), "key given twice (first at line " + std::to_string(first->second) + ")"});
     return true;
   }
   bool end_object() { return close(); }
@@ -338,8 +342,8 @@ class BoundedBuilder {
  private:
   struct Frame {
     json* container;
-    std::size_t index;  // arrays: of the element being read
-    std::string key;    // objects: of the member being read
+    std::size_t index;                                          // arrays: of the element being read
+    std::string key;                                            // objects: of the member being read
     std::map<std::string, std::size_t, std::less<>> key_lines;  // objects: each key's first line
   };
 
@@ -352,7 +356,8 @@ class BoundedBuilder {
 
   void count() {
     if (++work_.values > budget_.max_values)
-      throw OverBudget{path() + ": " + budget_.document + " may hold at most " + std::to_string(budget_.max_values) +
+      throw OverBudget{path() + ": " + budget_.document + " may hold at most " +
+                       std::to_string(budget_.max_values) +
                        " JSON values (numbers, strings, arrays, objects), and this one holds more"};
   }
 
@@ -389,7 +394,8 @@ class BoundedBuilder {
     count();
     if (frames_.size() >= static_cast<std::size_t>(budget_.max_depth))
       throw OverBudget{path() + ": nesting deeper than " + std::to_string(budget_.max_depth) +
-                       " levels; arrays and objects may nest at most " + std::to_string(budget_.max_depth) + " deep"};
+                       " levels; arrays and objects may nest at most " + std::to_string(budget_.max_depth) +
+                       " deep"};
     // The new container is the last element of its parent until it closes, so the pointer holds.
     frames_.push_back({place(json(type)), 0, {}, {}});
     return true;

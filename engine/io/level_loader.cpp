@@ -5,7 +5,6 @@
 
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
-
 #include "tire/session/level_session.h"
 #include "tire/world/world.h"
 
@@ -19,8 +18,8 @@ using json = nlohmann::json;
 // deep tree: the largest legitimate level (a 100 000-point chain, 10 000 tires, 100 000
 // obstacles) holds under a million values, and no string it needs is longer than 4 KiB. A
 // million values make a tree of at most about 150 MB.
-constexpr JsonBudget kLevelBudget{LevelLimits::max_depth, LevelLimits::max_json_values, LevelLimits::max_string_bytes,
-                                  "a level"};
+constexpr JsonBudget kLevelBudget{LevelLimits::max_depth, LevelLimits::max_json_values,
+                                  LevelLimits::max_string_bytes, "a level"};
 
 // Splits "a.b.0.c" into its parts.
 std::vector<std::string> split_dotted(const std::string& path) {
@@ -64,8 +63,10 @@ std::string apply_override(json& doc, const std::string& assignment) {
   }
   if (node->is_object() || node->is_array())
     return "--set " + assignment + ": \"" + key + "\" is an object or array, not a number";
-  if (std::floor(value) == value && std::abs(value) < 9e15) *node = static_cast<std::int64_t>(value);
-  else *node = value;
+  if (std::floor(value) == value && std::abs(value) < 9e15)
+    *node = static_cast<std::int64_t>(value);
+  else
+    *node = value;
   return "";
 }
 
@@ -80,7 +81,8 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
   }
   json& doc = *parse.doc;
   for (const std::string& assignment : overrides) {
-    if (std::string err = apply_override(doc, assignment); !err.empty()) out.errors.push_back(file + ": " + err);
+    if (std::string err = apply_override(doc, assignment); !err.empty())
+      out.errors.push_back(file + ": " + err);
   }
   if (!out.errors.empty()) return out;
   std::vector<JsonIssue> issues;

@@ -1,12 +1,12 @@
 // Level validation: every key of levels/README.md, with its unit, default and range.
+#include "level_reader.h"
+
 #include <algorithm>
 #include <map>
 
-#include "tire/rigid/prop_geometry.h"
-
-#include "tire/io/level.h"
-#include "level_reader.h"
 #include "script_reader.h"
+#include "tire/io/level.h"
+#include "tire/rigid/prop_geometry.h"
 
 namespace tire {
 
@@ -20,10 +20,12 @@ const Range kFriction{0.0, 10.0};
 
 SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) {
   SolverConfig s;
-  if (!r.object(j, path, {"dt", "substeps", "iterations", "damping", "tunnel_clamp", "ground_normal_y", "method"}))
+  if (!r.object(j, path,
+                {"dt", "substeps", "iterations", "damping", "tunnel_clamp", "ground_normal_y", "method"}))
     return s;
-  const std::string method = r.choice(j, path, "method", method_name(s.method),
-                                     {method_name(SolverMethod::gauss_seidel), method_name(SolverMethod::global)});
+  const std::string method =
+      r.choice(j, path, "method", method_name(s.method),
+               {method_name(SolverMethod::gauss_seidel), method_name(SolverMethod::global)});
   for (const SolverMethod m : kSolverMethods)
     if (method == method_name(m)) s.method = m;
   s.dt = read_parameter(r, j, path, ParamId::solver_dt, s.dt);
@@ -68,10 +70,11 @@ Vec2 read_gravity(JsonReader& r, const json& j, const std::string& path, const c
 
 TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   TireSpec t;
-  if (!r.object(j, path,
-                {"position", "velocity", "angle", "angular_velocity", "outer_radius", "inner_radius",
-                 "segments", "mass", "friction", "kinetic_friction", "pressure", "compliance", "spokes", "material_damping", "rolling_resistance",
-                 "player", "drive_acceleration", "jump_speed", "max_speed"}))
+  if (!r.object(
+          j, path,
+          {"position", "velocity", "angle", "angular_velocity", "outer_radius", "inner_radius", "segments",
+           "mass", "friction", "kinetic_friction", "pressure", "compliance", "spokes", "material_damping",
+           "rolling_resistance", "player", "drive_acceleration", "jump_speed", "max_speed"}))
     return t;
   t.position = r.vec2(j, path, "position", t.position, kCoordinate, "m", true);
   t.velocity = r.vec2(j, path, "velocity", t.velocity, kVelocity, "m/s");
@@ -129,7 +132,8 @@ std::vector<Vec2> read_points(JsonReader& r, const json& j, const std::string& p
     const bool ok = v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() &&
                     kCoordinate.contains(v[0].get<double>()) && kCoordinate.contains(v[1].get<double>());
     if (!ok) {
-      r.fail(join_path(p, i), "must be [x, y] with each in " + kCoordinate.text() + " m, got " + JsonReader::describe(v));
+      r.fail(join_path(p, i),
+             "must be [x, y] with each in " + kCoordinate.text() + " m, got " + JsonReader::describe(v));
       continue;
     }
     points.push_back({v[0].get<double>(), v[1].get<double>()});
@@ -154,8 +158,9 @@ Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
   o.box.min = r.vec2(j, path, "min", {}, kCoordinate, "m", true);
   o.box.max = r.vec2(j, path, "max", {}, kCoordinate, "m", true);
   if (j.contains("min") && j.contains("max") && !(o.box.min.x < o.box.max.x && o.box.min.y < o.box.max.y))
-    r.fail(join_path(path, "max"), "must be greater than min on both axes, got " + JsonReader::describe(j["max"]) +
-                                       " with min " + JsonReader::describe(j["min"]));
+    r.fail(join_path(path, "max"), "must be greater than min on both axes, got " +
+                                       JsonReader::describe(j["max"]) + " with min " +
+                                       JsonReader::describe(j["min"]));
   o.friction = r.number(j, path, "friction", o.friction, kFriction, "");
   return o;
 }
@@ -165,24 +170,29 @@ Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
 PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
   PropSpec p;
   if (!r.object(j, path,
-                {"name", "shape", "type", "position", "angle", "size", "radius", "points", "loop", "thickness",
-                 "density", "friction", "restitution", "velocity", "angular_velocity", "path"}))
+                {"name", "shape", "type", "position", "angle", "size", "radius", "points", "loop",
+                 "thickness", "density", "friction", "restitution", "velocity", "angular_velocity", "path"}))
     return p;
   p.name = r.string(j, path, "name", "", 100);
-  if (!j.contains("shape")) r.fail(join_path(path, "shape"), "is required: one of \"box\", \"circle\", \"polygon\", \"chain\"");
+  if (!j.contains("shape"))
+    r.fail(join_path(path, "shape"), "is required: one of \"box\", \"circle\", \"polygon\", \"chain\"");
   const std::string shape = r.choice(j, path, "shape", "box", {"box", "circle", "polygon", "chain"});
-  p.shape = shape == "circle" ? PropShape::circle : shape == "polygon" ? PropShape::polygon
-          : shape == "chain"  ? PropShape::chain  : PropShape::box;
+  p.shape = shape == "circle"    ? PropShape::circle
+            : shape == "polygon" ? PropShape::polygon
+            : shape == "chain"   ? PropShape::chain
+                                 : PropShape::box;
   const std::string type = r.choice(j, path, "type", "static", {"static", "dynamic", "kinematic"});
-  p.type = type == "dynamic" ? PropType::dynamic_body : type == "kinematic" ? PropType::kinematic_body
-                                                                           : PropType::static_body;
+  p.type = type == "dynamic"     ? PropType::dynamic_body
+           : type == "kinematic" ? PropType::kinematic_body
+                                 : PropType::static_body;
   p.position = r.vec2(j, path, "position", p.position, kCoordinate, "m");
   p.angle = r.number(j, path, "angle", p.angle, {-100.0, 100.0}, "rad");
 
   // Shape keys: each belongs to some shapes only.
   auto only_for = [&](const char* key, std::initializer_list<PropShape> shapes, const char* which) {
     if (j.contains(key) && std::find(shapes.begin(), shapes.end(), p.shape) == shapes.end())
-      r.fail(join_path(path, key), std::string("applies only to ") + which + " props, and this one is a " + shape);
+      r.fail(join_path(path, key),
+             std::string("applies only to ") + which + " props, and this one is a " + shape);
   };
   only_for("size", {PropShape::box}, "box");
   only_for("radius", {PropShape::circle}, "circle");
@@ -191,7 +201,8 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
   only_for("thickness", {PropShape::chain}, "chain");
   switch (p.shape) {
     case PropShape::box:
-      p.size = r.vec2(j, path, "size", p.size, {kMinPointSpacing, 2.0 * LevelLimits::max_coordinate}, "m", true);
+      p.size =
+          r.vec2(j, path, "size", p.size, {kMinPointSpacing, 2.0 * LevelLimits::max_coordinate}, "m", true);
       break;
     case PropShape::circle:
       p.radius = r.number(j, path, "radius", p.radius, {kMinPointSpacing, 1000.0}, "m", true);
@@ -206,7 +217,8 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
       p.points = read_points(r, j, path, "points", 2, 100000);
       p.loop = r.boolean(j, path, "loop", p.loop);
       p.thickness = r.number(j, path, "thickness", p.thickness, {kMinPointSpacing, 100.0}, "m");
-      if (p.loop && p.points.size() < 3) r.fail(join_path(path, "points"), "a closed chain needs at least 3 points");
+      if (p.loop && p.points.size() < 3)
+        r.fail(join_path(path, "points"), "a closed chain needs at least 3 points");
       if (p.type != PropType::static_body)
         r.fail(join_path(path, "type"), "a chain can only be static (it has no mass), got \"" + type + "\"");
       break;
@@ -278,7 +290,8 @@ void check_totals(JsonReader& r, const json& doc, const Level& level) {
   for (std::size_t i = 0; i < level.tires.size(); ++i)
     count_tire(t, static_cast<std::size_t>(level.tires[i].segments), join_path("/tires", i));
   for (std::size_t i = 0; i < level.props.size(); ++i)
-    count_prop(t, level.props[i].points.size() + level.props[i].path.waypoints.size(), join_path("/props", i));
+    count_prop(t, level.props[i].points.size() + level.props[i].path.waypoints.size(),
+               join_path("/props", i));
   // The script's spawn actions, read from the document so that each is named by its own path.
   if (const auto triggers = doc.find("triggers"); triggers != doc.end() && triggers->is_array()) {
     for (std::size_t i = 0; i < triggers->size(); ++i) {
@@ -295,25 +308,31 @@ void check_totals(JsonReader& r, const json& doc, const Level& level) {
         if (action == "spawn_prop" && a.contains("prop") && a["prop"].is_object()) {
           const json& prop = a["prop"];
           const auto path_it = prop.find("path");
-          count_prop(t, array_size(prop, "points") + (path_it != prop.end() && path_it->is_object() ? array_size(*path_it, "waypoints") : 0),
-                     path);
+          count_prop(
+              t,
+              array_size(prop, "points") +
+                  (path_it != prop.end() && path_it->is_object() ? array_size(*path_it, "waypoints") : 0),
+              path);
         }
       }
     }
   }
-  const auto over = [&r](const std::string& path, const std::string& what, std::size_t total, std::size_t limit) {
+  const auto over = [&r](const std::string& path, const std::string& what, std::size_t total,
+                         std::size_t limit) {
     r.fail(path, what + " may add up to at most " + std::to_string(limit) + ", got " + std::to_string(total) +
                      " (this entry is the first past the limit)");
   };
   if (!t.tires_path.empty())
     over(t.tires_path, "the level's tires, with those its script spawns,", t.tires, LevelLimits::max_tires);
   if (!t.particles_path.empty())
-    over(t.particles_path, "the particles of the level's tires (2 x segments each), with those its script spawns,",
-         t.particles, kMaxParticles);
+    over(t.particles_path,
+         "the particles of the level's tires (2 x segments each), with those its script spawns,", t.particles,
+         kMaxParticles);
   if (!t.props_path.empty())
     over(t.props_path, "the level's props, with those its script spawns,", t.props, LevelLimits::max_props);
   if (!t.points_path.empty())
-    over(t.points_path, "the points of the level's props (chain, polygon and path points), with those its script spawns,",
+    over(t.points_path,
+         "the points of the level's props (chain, polygon and path points), with those its script spawns,",
          t.points, kMaxPoints);
 }
 
@@ -323,8 +342,9 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
   const std::size_t issues_before = issues.size();
   JsonReader r(issues);
   Level level;
-  if (!r.object(doc, "", {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles", "props",
-                          "regions", "goal", "time_limit", "counters", "triggers"}))
+  if (!r.object(doc, "",
+                {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles", "props",
+                 "regions", "goal", "time_limit", "counters", "triggers"}))
     return std::nullopt;
   level.name = r.string(doc, "", "name", "", 200, true);
   level.description = r.string(doc, "", "description", "", 2000);
@@ -337,12 +357,14 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
       const std::string path = join_path("/tires", i);
       level.tires.push_back(read_tire(r, (*it)[i], path));
       if (!level.tires.back().player) continue;
-      if (first_player.empty()) first_player = path;
-      else r.fail(path + "/player", "only one tire may be the player, and " + first_player + " already is");
+      if (first_player.empty())
+        first_player = path;
+      else
+        r.fail(path + "/player", "only one tire may be the player, and " + first_player + " already is");
     }
   }
-  if (const auto it = doc.find("obstacles"); it != doc.end() &&
-                                             r.array(*it, "/obstacles", LevelLimits::max_obstacles)) {
+  if (const auto it = doc.find("obstacles");
+      it != doc.end() && r.array(*it, "/obstacles", LevelLimits::max_obstacles)) {
     for (std::size_t i = 0; i < it->size(); ++i)
       level.obstacles.push_back(read_obstacle(r, (*it)[i], join_path("/obstacles", i)));
   }
@@ -355,7 +377,8 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
       if (name.empty()) continue;
       const auto [first, inserted] = first_with_name.emplace(name, i);
       if (!inserted)
-        r.fail(path + "/name", "must be unique, and /props/" + std::to_string(first->second) + " is already \"" + name + "\"");
+        r.fail(path + "/name", "must be unique, and /props/" + std::to_string(first->second) +
+                                   " is already \"" + name + "\"");
     }
   }
   std::vector<std::string> prop_names;

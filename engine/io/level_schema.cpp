@@ -52,8 +52,10 @@ ojson property(const Parameter& p) {
   o["type"] = p.integer ? "integer" : "number";
   put_bounds(o, p.range);
   // A default that follows another key is not a fixed value: an example instead.
-  if (p.default_follows) o["examples"] = ojson::array({number(p.default_value)});
-  else o["default"] = number(p.default_value);
+  if (p.default_follows)
+    o["examples"] = ojson::array({number(p.default_value)});
+  else
+    o["default"] = number(p.default_value);
   o["description"] = described(p.description, p.range);
   return o;
 }
@@ -93,8 +95,10 @@ void generate_set_action(ojson& action) {
   ojson rules = ojson::array();
   for (const Group& g : groups) {
     ojson selector;
-    if (g.keys.size() == 1) selector["const"] = g.keys.front();
-    else selector["enum"] = g.keys;
+    if (g.keys.size() == 1)
+      selector["const"] = g.keys.front();
+    else
+      selector["enum"] = g.keys;
     ojson value;
     if (g.first->integer) value["type"] = "integer";
     put_bounds(value, g.first->range);
@@ -174,8 +178,8 @@ void write(std::string& out, const ojson& v, std::size_t indent, std::size_t col
 }  // namespace
 
 std::string range_for_docs(const Range& range) {
-  return std::string(range.min_open ? "(" : "[") + number_for_docs(range.min) + ", " + number_for_docs(range.max) +
-         (range.max_open ? ")" : "]");
+  return std::string(range.min_open ? "(" : "[") + number_for_docs(range.min) + ", " +
+         number_for_docs(range.max) + (range.max_open ? ")" : "]");
 }
 
 std::string described(const char* description, const Range& range) {
@@ -200,7 +204,8 @@ SchemaGeneration generate_level_schema(const std::string& current) {
       if (!p.may(by_level)) continue;
       const char* definition = definition_of(p);
       if (!definition) throw std::runtime_error(std::string("no definition holds the level key ") + p.key);
-      at(at(defs, definition, "/$defs"), "properties", std::string("/$defs/") + definition)[p.field()] = property(p);
+      at(at(defs, definition, "/$defs"), "properties", std::string("/$defs/") + definition)[p.field()] =
+          property(p);
     }
     // Gravity: the level's, a set_gravity action's; each component in the table's range.
     const Parameter& g = parameter(ParamId::gravity_x);

@@ -11,8 +11,8 @@
 #include <set>
 #include <string_view>
 
-#include "tire/io/level.h"
 #include "level_reader.h"
+#include "tire/io/level.h"
 
 namespace tire {
 

@@ -69,7 +69,8 @@ void WorkerPool::run_chunks(std::uint32_t generation) {
 void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
   const auto chunks = static_cast<std::uint32_t>(std::min(n, threads() * kChunksPerThread));
   const std::uint32_t generation = generation_.load(std::memory_order_relaxed) + 1;
-  TIRE_ASSERT(chunks >= 1 && chunks <= n && chunks < 0xFFFFFFFFu, "a job cut into no chunk, or more chunks than items");
+  TIRE_ASSERT(chunks >= 1 && chunks <= n && chunks < 0xFFFFFFFFu,
+              "a job cut into no chunk, or more chunks than items");
   // The last job's ticket is closed (its generation, no chunk left to claim), or this is the first.
   TIRE_ASSERT(generation_of(ticket_.load()) == generation - 1 &&
                   (static_cast<std::uint32_t>(ticket_.load()) == 0xFFFFFFFFu || generation == 1),
@@ -99,8 +100,9 @@ void WorkerPool::dispatch(std::size_t n, Call call, void* fn) {
     if (done != chunks) chunks_done_.wait(done);
     caller_waiting_.store(false, std::memory_order_relaxed);
   }
-  TIRE_ASSERT(static_cast<std::uint32_t>(ticket_.load()) == chunks && generation_of(ticket_.load()) == generation,
-              "a job finished with a chunk unclaimed, or with another job's ticket");
+  TIRE_ASSERT(
+      static_cast<std::uint32_t>(ticket_.load()) == chunks && generation_of(ticket_.load()) == generation,
+      "a job finished with a chunk unclaimed, or with another job's ticket");
   // Closes the job before the next one's fields are written: a thread still on its way into this
   // job may read those fields, and must then find no chunk left to claim under this generation
   // (with the ticket left at `chunks`, a next job with more chunks would let it claim one).

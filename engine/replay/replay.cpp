@@ -24,8 +24,8 @@ constexpr std::size_t kMaxCheckpoints = 500'000;
 constexpr std::size_t kMaxBoxes = 100'000;
 constexpr std::size_t kMaxSpawns = LevelLimits::max_tires;
 constexpr std::size_t kMaxRestarts = 10'000;
-constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, ReplayLimits::max_json_values, LevelLimits::max_string_bytes,
-                                   "a replay"};
+constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, ReplayLimits::max_json_values,
+                                   LevelLimits::max_string_bytes, "a replay"};
 
 bool is_hex(const std::string& s, std::size_t length) {
   return s.size() == length && std::all_of(s.begin(), s.end(), [](char c) {
@@ -43,13 +43,15 @@ std::uint64_t read_tick(JsonReader& r, const json& j, const std::string& path, s
     return 0;
   }
   if (!it->is_number_unsigned() && !(it->is_number_integer() && it->get<std::int64_t>() >= 0)) {
-    r.fail(p, "must be an integer tick in [0, " + std::to_string(max) + "], got " + JsonReader::describe(*it));
+    r.fail(p,
+           "must be an integer tick in [0, " + std::to_string(max) + "], got " + JsonReader::describe(*it));
     ok = false;
     return 0;
   }
   const auto tick = it->get<std::uint64_t>();
   if (tick > max) {
-    r.fail(p, "must be at most " + std::to_string(max) + " (the replay's last tick), got " + std::to_string(tick));
+    r.fail(p, "must be at most " + std::to_string(max) + " (the replay's last tick), got " +
+                  std::to_string(tick));
     ok = false;
   }
   return tick;
@@ -59,14 +61,16 @@ bool read_flag(JsonReader& r, const json& j, const std::string& path, const char
   const auto it = j.find(key);
   if (it == j.end()) return false;
   const bool value = r.boolean(j, path, key, false);
-  if (it->is_boolean() && !value) r.fail(join_path(path, key), "must be true when present (leave it out otherwise), got false");
+  if (it->is_boolean() && !value)
+    r.fail(join_path(path, key), "must be true when present (leave it out otherwise), got false");
   return value;
 }
 
 ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, std::uint64_t ticks) {
   ReplayInput in;
   if (!r.object(j, path,
-                {"tick", "steer", "jump", "spawn", "grab", "grab_radius", "drag", "release", "set", "gravity", "restart"}))
+                {"tick", "steer", "jump", "spawn", "grab", "grab_radius", "drag", "release", "set", "gravity",
+                 "restart"}))
     return in;
   bool ok = true;
   // Inputs act before the step of their tick, so the last one that can act is ticks − 1.
@@ -89,14 +93,18 @@ ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, st
       const std::string key = r.string(*it, p, "key", "", 100, true);
       const Parameter* param = key.empty() ? nullptr : find_parameter(key);
       if (!key.empty() && !(param && param->may(by_replay)))
-        r.fail(join_path(p, "key"), "must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"" +
-                                        key + "\"");
-      else if (!key.empty()) in.set_key = key;
+        r.fail(
+            join_path(p, "key"),
+            "must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"" + key + "\"");
+      else if (!key.empty())
+        in.set_key = key;
       // A value the world can take (the parameter table's range): 10^9 substeps would never finish
       // a tick, a mass or mass scale of 0 divides by it.
       if (in.set_key)
-        in.set_value = param->integer ? r.integer(*it, p, "value", static_cast<int>(param->default_value), param->range, true)
-                                      : r.number(*it, p, "value", param->default_value, param->range, param->unit, true);
+        in.set_value =
+            param->integer
+                ? r.integer(*it, p, "value", static_cast<int>(param->default_value), param->range, true)
+                : r.number(*it, p, "value", param->default_value, param->range, param->unit, true);
       else
         in.set_value = r.number(*it, p, "value", 0.0, {-1e9, 1e9}, "", true);
     }
@@ -112,9 +120,11 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
   if (j.contains("hash")) {
     if (!j["hash"].is_string() || !is_hex(j["hash"].get<std::string>(), 16))
       r.fail(path + "/hash", "must be 16 lowercase hex digits, got " + JsonReader::describe(j["hash"]));
-    else e.hash = j["hash"].get<std::string>();
+    else
+      e.hash = j["hash"].get<std::string>();
   }
-  if (const auto it = j.find("checkpoints"); it != j.end() && r.array(*it, path + "/checkpoints", kMaxCheckpoints)) {
+  if (const auto it = j.find("checkpoints");
+      it != j.end() && r.array(*it, path + "/checkpoints", kMaxCheckpoints)) {
     std::uint64_t previous = 0;
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string p = join_path(path + "/checkpoints", i);
@@ -123,9 +133,10 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
       bool ok = true;
       ReplayCheckpoint cp{read_tick(r, c, p, ticks, ok), r.string(c, p, "hash", "", 16, true)};
       if (ok && i > 0 && cp.tick <= previous)
-        r.fail(p + "/tick", "must be after the previous checkpoint's tick " + std::to_string(previous) + ", got " +
-                                std::to_string(cp.tick));
-      if (!cp.hash.empty() && !is_hex(cp.hash, 16)) r.fail(p + "/hash", "must be 16 lowercase hex digits, got \"" + cp.hash + "\"");
+        r.fail(p + "/tick", "must be after the previous checkpoint's tick " + std::to_string(previous) +
+                                ", got " + std::to_string(cp.tick));
+      if (!cp.hash.empty() && !is_hex(cp.hash, 16))
+        r.fail(p + "/hash", "must be 16 lowercase hex digits, got \"" + cp.hash + "\"");
       previous = cp.tick;
       e.checkpoints.push_back(cp);
     }
@@ -160,7 +171,8 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
   const std::size_t before = issues.size();
   JsonReader r(issues);
   Replay replay;
-  if (!r.object(doc, "", {"format", "level", "level_sha256", "ticks", "inputs", "expect"})) return std::nullopt;
+  if (!r.object(doc, "", {"format", "level", "level_sha256", "ticks", "inputs", "expect"}))
+    return std::nullopt;
   const std::string format = r.string(doc, "", "format", "", 40, true);
   if (!format.empty() && format != kReplayFormat)
     r.fail("/format", std::string("must be \"") + kReplayFormat + "\", got \"" + format + "\"");
@@ -169,8 +181,8 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
   if (doc.contains("level_sha256") && !is_hex(replay.level_sha256, 64))
     r.fail("/level_sha256", "must be 64 lowercase hex digits (SHA-256 of the level file), got " +
                                 JsonReader::describe(doc["level_sha256"]));
-  replay.ticks = static_cast<std::uint64_t>(
-      r.integer(doc, "", "ticks", 0, {0, static_cast<double>(kMaxTicks)}, true));
+  replay.ticks =
+      static_cast<std::uint64_t>(r.integer(doc, "", "ticks", 0, {0, static_cast<double>(kMaxTicks)}, true));
   if (const auto it = doc.find("inputs"); it != doc.end() && r.array(*it, "/inputs", kMaxInputs)) {
     std::size_t spawns = 0, restarts = 0;
     replay.inputs.reserve(it->size());
@@ -182,13 +194,15 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
                                    " comes after " + std::to_string(replay.inputs[i - 1].tick));
       // Each spawn builds a tire and each restart the whole level: bounded like a level's tires.
       if (replay.inputs[i].spawn && ++spawns == kMaxSpawns + 1)
-        r.fail(path + "/spawn", "a replay may spawn at most " + std::to_string(kMaxSpawns) + " tires; this is one more");
+        r.fail(path + "/spawn",
+               "a replay may spawn at most " + std::to_string(kMaxSpawns) + " tires; this is one more");
       if (replay.inputs[i].restart && ++restarts == kMaxRestarts + 1)
         r.fail(path + "/restart", "a replay may restart the level at most " + std::to_string(kMaxRestarts) +
                                       " times; this is one more");
     }
   }
-  if (const auto it = doc.find("expect"); it != doc.end()) replay.expect = read_expect(r, *it, "/expect", replay.ticks);
+  if (const auto it = doc.find("expect"); it != doc.end())
+    replay.expect = read_expect(r, *it, "/expect", replay.ticks);
   if (issues.size() != before) return std::nullopt;
   return replay;
 }
@@ -240,7 +254,8 @@ std::string replay_to_json(const Replay& replay) {
   ojson expect = ojson::object();
   if (replay.expect.status) expect["status"] = *replay.expect.status;
   ojson checkpoints = ojson::array();
-  for (const ReplayCheckpoint& c : replay.expect.checkpoints) checkpoints.push_back({{"tick", c.tick}, {"hash", c.hash}});
+  for (const ReplayCheckpoint& c : replay.expect.checkpoints)
+    checkpoints.push_back({{"tick", c.tick}, {"hash", c.hash}});
   expect["checkpoints"] = checkpoints;
   if (replay.expect.hash) expect["hash"] = *replay.expect.hash;
   if (!replay.expect.boxes.empty()) {
@@ -254,7 +269,8 @@ std::string replay_to_json(const Replay& replay) {
   return doc.dump(1) + "\n";
 }
 
-void apply_input(const ReplayInput& in, LevelSession& session, const Level& level, double& held_steer, bool& jump) {
+void apply_input(const ReplayInput& in, LevelSession& session, const Level& level, double& held_steer,
+                 bool& jump) {
   if (in.restart) {
     session = std::move(*make_session(level));
     held_steer = 0.0;
@@ -284,9 +300,11 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
   std::vector<const ReplayBox*> boxes;
   boxes.reserve(replay.expect.boxes.size());
   for (const ReplayBox& b : replay.expect.boxes) boxes.push_back(&b);
-  std::stable_sort(boxes.begin(), boxes.end(), [](const ReplayBox* a, const ReplayBox* b) { return a->tick < b->tick; });
+  std::stable_sort(boxes.begin(), boxes.end(),
+                   [](const ReplayBox* a, const ReplayBox* b) { return a->tick < b->tick; });
   const auto check = [&](std::uint64_t tick) {
-    while (next_checkpoint < replay.expect.checkpoints.size() && replay.expect.checkpoints[next_checkpoint].tick == tick) {
+    while (next_checkpoint < replay.expect.checkpoints.size() &&
+           replay.expect.checkpoints[next_checkpoint].tick == tick) {
       const ReplayCheckpoint& want = replay.expect.checkpoints[next_checkpoint++];
       const std::string got = to_hex(session->state_hash());
       out.checkpoints.push_back({tick, got});
@@ -294,8 +312,8 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
         if (!out.first_divergent_tick) out.last_matching_tick = tick;
       } else if (!out.first_divergent_tick) {
         out.first_divergent_tick = tick;
-        out.failures.push_back("state diverged at tick " + std::to_string(tick) + ": hash " + got + ", expected " +
-                               want.hash + " (it still matched at tick " +
+        out.failures.push_back("state diverged at tick " + std::to_string(tick) + ": hash " + got +
+                               ", expected " + want.hash + " (it still matched at tick " +
                                std::to_string(out.last_matching_tick.value_or(0)) + ")");
       }
     }
@@ -304,14 +322,15 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
       ++out.box_checks;
       if (b.tick != tick) continue;
       if (b.tire >= session->world().tires().size()) {
-        out.failures.push_back("tick " + std::to_string(tick) + ": no tire " + std::to_string(b.tire) + " (there are " +
-                               std::to_string(session->world().tires().size()) + ")");
+        out.failures.push_back("tick " + std::to_string(tick) + ": no tire " + std::to_string(b.tire) +
+                               " (there are " + std::to_string(session->world().tires().size()) + ")");
         continue;
       }
       const Vec2 c = session->world().tires()[b.tire].centroid();
       if (c.x < b.min.x || c.x > b.max.x || c.y < b.min.y || c.y > b.max.y)
-        out.failures.push_back("tick " + std::to_string(tick) + ": tire " + std::to_string(b.tire) + " centroid (" +
-                               std::to_string(c.x) + ", " + std::to_string(c.y) + ") is outside its box");
+        out.failures.push_back("tick " + std::to_string(tick) + ": tire " + std::to_string(b.tire) +
+                               " centroid (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
+                               ") is outside its box");
     }
   };
   check(0);
@@ -333,7 +352,8 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
   return out;
 }
 
-ReplayRecorder::ReplayRecorder(std::string level_path, std::string level_sha256, std::uint64_t checkpoint_every)
+ReplayRecorder::ReplayRecorder(std::string level_path, std::string level_sha256,
+                               std::uint64_t checkpoint_every)
     : checkpoint_every_(checkpoint_every) {
   replay_.level = std::move(level_path);
   replay_.level_sha256 = std::move(level_sha256);

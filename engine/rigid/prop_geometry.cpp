@@ -8,9 +8,7 @@
 
 namespace tire {
 
-Pose Pose::make(Vec2 position, double angle) {
-  return {position, angle, std::cos(angle), std::sin(angle)};
-}
+Pose Pose::make(Vec2 position, double angle) { return {position, angle, std::cos(angle), std::sin(angle)}; }
 
 PropGeometry PropGeometry::from_spec(const PropSpec& spec) {
   PropGeometry g;
@@ -21,12 +19,8 @@ PropGeometry PropGeometry::from_spec(const PropSpec& spec) {
       g.vertices = {{-h.x, -h.y}, {h.x, -h.y}, {h.x, h.y}, {-h.x, h.y}};
       break;
     }
-    case PropShape::polygon:
-      g.vertices = spec.points;
-      break;
-    case PropShape::circle:
-      g.radius = spec.radius;
-      return g;
+    case PropShape::polygon: g.vertices = spec.points; break;
+    case PropShape::circle: g.radius = spec.radius; return g;
     case PropShape::chain:
       g.vertices = spec.points;
       g.loop = spec.loop;
@@ -76,7 +70,8 @@ std::optional<SurfaceContact> circle_contact(double r, Vec2 from, Vec2 to) {
   }
   const double d = std::sqrt(d2);
   // At the exact centre there is no nearest direction: use the side it came from.
-  const Vec2 n = d > 0.0 ? to * (1.0 / d) : (length(from) > 0.0 ? from * (1.0 / length(from)) : Vec2{0.0, 1.0});
+  const Vec2 n =
+      d > 0.0 ? to * (1.0 / d) : (length(from) > 0.0 ? from * (1.0 / length(from)) : Vec2{0.0, 1.0});
   return SurfaceContact{n, r - d};
 }
 
@@ -95,7 +90,8 @@ std::optional<SurfaceContact> polygon_contact(const PropGeometry& g, Vec2 from, 
     if (s_from >= 0.0) ++outside_from, from_edge = i;
   }
   if (inside_to) {
-    if (outside_from == 0) return SurfaceContact{g.normals[best_edge], -best_to};  // started inside: least overlap
+    if (outside_from == 0)
+      return SurfaceContact{g.normals[best_edge], -best_to};  // started inside: least overlap
     if (outside_from == 1)  // came in through the one edge it was outside of
       return SurfaceContact{g.normals[from_edge], -dot(g.normals[from_edge], to - g.vertices[from_edge])};
   } else if (outside_from == 0) {
@@ -159,13 +155,10 @@ std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Ve
 
 std::optional<SurfaceContact> local_contact(const PropGeometry& g, Vec2 from, Vec2 to) {
   switch (g.shape) {
-    case PropShape::circle:
-      return circle_contact(g.radius, from, to);
+    case PropShape::circle: return circle_contact(g.radius, from, to);
     case PropShape::box:
-    case PropShape::polygon:
-      return polygon_contact(g, from, to);
-    case PropShape::chain:
-      return chain_contact(g, from, to);
+    case PropShape::polygon: return polygon_contact(g, from, to);
+    case PropShape::chain: return chain_contact(g, from, to);
   }
   return std::nullopt;
 }

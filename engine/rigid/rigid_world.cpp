@@ -25,8 +25,10 @@ class CollectFixtures final : public b2QueryCallback {
       : obstacles_(obstacles), props_(props) {}
   bool ReportFixture(b2Fixture* fixture) override {
     const std::uintptr_t tag = fixture->GetUserData().pointer;
-    if (tag & kPropTag) props_.push_back(static_cast<std::uint32_t>(tag & ~kPropTag));
-    else obstacles_.push_back(static_cast<std::uint32_t>(tag));
+    if (tag & kPropTag)
+      props_.push_back(static_cast<std::uint32_t>(tag & ~kPropTag));
+    else
+      obstacles_.push_back(static_cast<std::uint32_t>(tag));
     return true;  // every candidate
   }
 
@@ -116,8 +118,10 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
       fixture.shape = &circle;
       break;
     case PropShape::chain:
-      if (spec.loop) chain.CreateLoop(points.data(), static_cast<int32>(points.size()));
-      else chain.CreateChain(points.data(), static_cast<int32>(points.size()), points.front(), points.back());
+      if (spec.loop)
+        chain.CreateLoop(points.data(), static_cast<int32>(points.size()));
+      else
+        chain.CreateChain(points.data(), static_cast<int32>(points.size()), points.front(), points.back());
       fixture.shape = &chain;
       break;
   }
@@ -180,16 +184,14 @@ void advance_waypoint(Prop& p) {
     return;
   }
   switch (path.mode) {
-    case PathMode::loop:
-      p.next_waypoint = static_cast<std::size_t>((next + n) % n);
-      break;
+    case PathMode::loop: p.next_waypoint = static_cast<std::size_t>((next + n) % n); break;
     case PathMode::ping_pong:
       p.direction = -p.direction;
-      if (n > 1) p.next_waypoint = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(p.next_waypoint) + p.direction);
+      if (n > 1)
+        p.next_waypoint =
+            static_cast<std::size_t>(static_cast<std::ptrdiff_t>(p.next_waypoint) + p.direction);
       break;
-    case PathMode::once:
-      path.running = false;
-      break;
+    case PathMode::once: path.running = false; break;
   }
 }
 
@@ -224,8 +226,8 @@ void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles
   obstacles.clear();
   props.clear();
   // Widen by a float ulp's worth so rounding to float never drops a touching shape.
-  const double scale = std::max({std::abs(region.min.x), std::abs(region.min.y), std::abs(region.max.x),
-                                 std::abs(region.max.y)});
+  const double scale = std::max(
+      {std::abs(region.min.x), std::abs(region.min.y), std::abs(region.max.x), std::abs(region.max.y)});
   const Aabb r = region.expanded(1e-3 + 1e-6 * scale);
   b2AABB aabb;
   aabb.lowerBound = to_b2(r.min);
@@ -312,7 +314,8 @@ void RigidWorld::end_tick(double dt) {
     bodies_[i]->ApplyLinearImpulseToCenter(to_b2(p.impulse), true);
     bodies_[i]->ApplyAngularImpulse(static_cast<float>(p.angular_impulse), true);
   }
-  if (needs_stepping()) world_->Step(static_cast<float>(dt), kBox2dVelocityIterations, kBox2dPositionIterations);
+  if (needs_stepping())
+    world_->Step(static_cast<float>(dt), kBox2dVelocityIterations, kBox2dPositionIterations);
 }
 
 void RigidWorld::hash_into(StateHash& h) const {

@@ -24,12 +24,9 @@ constexpr double kTickTolerance = 1e-9;
 
 const char* to_string(ScriptStatus status) {
   switch (status) {
-    case ScriptStatus::running:
-      return "running";
-    case ScriptStatus::won:
-      return "won";
-    case ScriptStatus::lost:
-      return "lost";
+    case ScriptStatus::running: return "running";
+    case ScriptStatus::won: return "won";
+    case ScriptStatus::lost: return "lost";
   }
   return "running";
 }
@@ -171,15 +168,9 @@ void ScriptRunner::run(const Action& action, ScriptHost& host) {
                  [&](const SetGravity& a) { host.set_gravity(a.gravity); },
                  [&](const ApplyImpulse& a) {
                    switch (a.target) {
-                     case ImpulseTarget::player:
-                       host.apply_impulse_to_player(a.impulse);
-                       break;
-                     case ImpulseTarget::all_tires:
-                       host.apply_impulse_to_all_tires(a.impulse);
-                       break;
-                     case ImpulseTarget::prop:
-                       host.apply_impulse_to_prop(a.prop, a.impulse);
-                       break;
+                     case ImpulseTarget::player: host.apply_impulse_to_player(a.impulse); break;
+                     case ImpulseTarget::all_tires: host.apply_impulse_to_all_tires(a.impulse); break;
+                     case ImpulseTarget::prop: host.apply_impulse_to_prop(a.prop, a.impulse); break;
                    }
                  },
                  [&](const SetParameter& a) { host.set_parameter(a.key, a.value); },

@@ -50,14 +50,16 @@ std::optional<TireId> LevelSession::grab(Vec2 point, double radius) {
   double best = radius * radius;
   for (const Tire& t : world_.tires())
     for (std::uint32_t i = 0; i < t.n; ++i)
-      if (const double d2 = length_squared(t.particles.x[i] - point); d2 < best) best = d2, chosen = &t, particle = i;
+      if (const double d2 = length_squared(t.particles.x[i] - point); d2 < best)
+        best = d2, chosen = &t, particle = i;
   if (!chosen) {
     for (const Tire& t : world_.tires()) {
       if (length(t.centroid() - point) >= t.spec.outer_radius) continue;
       chosen = &t;
       double nearest = 1e300;
       for (std::uint32_t i = 0; i < t.n; ++i)
-        if (const double d2 = length_squared(t.particles.x[i] - point); d2 < nearest) nearest = d2, particle = i;
+        if (const double d2 = length_squared(t.particles.x[i] - point); d2 < nearest)
+          nearest = d2, particle = i;
       break;
     }
   }

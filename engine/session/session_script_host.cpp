@@ -37,18 +37,23 @@ void SessionScriptHost::apply_impulse_to_player(Vec2 impulse) {
 }
 
 void SessionScriptHost::apply_impulse_to_all_tires(Vec2 impulse) {
-  for (std::size_t i = 0; i < world_.tires().size(); ++i) world_.apply_impulse_to_tire(world_.tires()[i].id, impulse);
+  for (std::size_t i = 0; i < world_.tires().size(); ++i)
+    world_.apply_impulse_to_tire(world_.tires()[i].id, impulse);
 }
 
 void SessionScriptHost::apply_impulse_to_prop(std::string_view name, Vec2 impulse) {
   world_.rigid().apply_impulse_now(name, impulse);
 }
 
-void SessionScriptHost::set_parameter(std::string_view key, double value) { world_.set_parameter(key, value); }
+void SessionScriptHost::set_parameter(std::string_view key, double value) {
+  world_.set_parameter(key, value);
+}
 void SessionScriptHost::path_command(std::string_view prop, PathCommand command) {
   world_.rigid().path_command(prop, command);
 }
-void SessionScriptHost::show_message(std::string_view text, double seconds) { session_.show_message(text, seconds); }
+void SessionScriptHost::show_message(std::string_view text, double seconds) {
+  session_.show_message(text, seconds);
+}
 void SessionScriptHost::set_checkpoint(Vec2 position) { session_.set_checkpoint(position); }
 void SessionScriptHost::next_level() { session_.request_next_level(); }
 

@@ -13,7 +13,9 @@ namespace {
 
 // The unknowns, block by block: block i holds tread particle i (x, y) then rim particle i (x, y),
 // so every constraint of the tire couples a block to itself or to a neighbouring block.
-std::uint32_t block_of(std::uint32_t particle, std::uint32_t n) { return particle < n ? particle : particle - n; }
+std::uint32_t block_of(std::uint32_t particle, std::uint32_t n) {
+  return particle < n ? particle : particle - n;
+}
 std::size_t offset_of(std::uint32_t particle, std::uint32_t n) { return particle < n ? 0 : 2; }
 std::size_t dof_of(std::uint32_t particle, std::uint32_t n) {
   return CyclicBlockCholesky::kBlock * block_of(particle, n) + offset_of(particle, n);
@@ -136,8 +138,9 @@ void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, b
   rows_.push_back(row);
 }
 
-GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle,
-                                                 Vec2 normal, double plane, const ContactPair& pair, std::int32_t prop,
+GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepContext& ctx,
+                                                 std::uint32_t particle, Vec2 normal, double plane,
+                                                 const ContactPair& pair, std::int32_t prop,
                                                  Vec2 surface_velocity) const {
   Contact c;
   c.particle = particle;
@@ -195,8 +198,10 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
       }
     }
     if (!hit || !(hit->depth > ctx.config->contact_slop)) continue;
-    if (existing >= 0 && !(hit->depth > depth_[static_cast<std::size_t>(existing)])) continue;  // keep the deeper
-    const Contact c = make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity);
+    if (existing >= 0 && !(hit->depth > depth_[static_cast<std::size_t>(existing)]))
+      continue;  // keep the deeper
+    const Contact c =
+        make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity);
     if (existing >= 0) {
       contacts_[static_cast<std::size_t>(existing)] = c;
     } else {
@@ -260,9 +265,12 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     for (std::size_t q = 0; q <= r; ++q) {
       double v = s[r][q];
       for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
-      if (q < r) s[r][q] = v / s[q][q];
-      else if (v > 0.0) s[r][r] = std::sqrt(v);
-      else return false;
+      if (q < r)
+        s[r][q] = v / s[q][q];
+      else if (v > 0.0)
+        s[r][r] = std::sqrt(v);
+      else
+        return false;
     }
   }
   for (std::size_t r = 0; r < m; ++r) {

@@ -1,14 +1,15 @@
 #include "tire/tire/soft_contact.h"
 
-#include "tire/xpbd/area_constraint.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "tire/xpbd/area_constraint.h"
+
 namespace tire {
 
-void TirePairFinder::find(const std::vector<Tire>& tires, double dt, double gravity, std::vector<TirePair>& out) {
+void TirePairFinder::find(const std::vector<Tire>& tires, double dt, double gravity,
+                          std::vector<TirePair>& out) {
   out.clear();
   const auto n = static_cast<std::uint32_t>(tires.size());
   bounds_.resize(n);
@@ -72,9 +73,12 @@ std::uint32_t wedge_edge(const Vec2* x, std::uint32_t n, Vec2 hub, Vec2 d, Guess
   auto k = static_cast<std::uint32_t>(turn * n) % n;
   for (std::uint32_t step = 0; step < n; ++step) {
     const Vec2 a = x[k] - hub, b = x[(k + 1) % n] - hub;
-    if (cross(a, d) < 0.0) k = (k + n - 1) % n;       // d is before edge k: step back
-    else if (cross(d, b) < 0.0) k = (k + 1) % n;      // d is past edge k: step on
-    else return k;
+    if (cross(a, d) < 0.0)
+      k = (k + n - 1) % n;  // d is before edge k: step back
+    else if (cross(d, b) < 0.0)
+      k = (k + 1) % n;  // d is past edge k: step on
+    else
+      return k;
   }
   return k;
 }
@@ -123,7 +127,7 @@ void push_out(Tire& a, const Ring& ring, double mu, double* soft_lambda, double 
     xb[k1] -= n * (wb[k1] * t * dl);
     if (ring.on_tire) {
       if (n.y <= -ground_normal_y) ring.on_tire[k] = ring.on_tire[k1] = 1;  // the ring's tire rests on a
-      if (n.y >= ground_normal_y) a.on_tire[i] = 1;                        // a rests on the ring's tire
+      if (n.y >= ground_normal_y) a.on_tire[i] = 1;                         // a rests on the ring's tire
     }
     if (!soft_lambda) continue;
     soft_lambda[i] += dl;
@@ -141,8 +145,8 @@ void push_out(Tire& a, const Ring& ring, double mu, double* soft_lambda, double 
 }
 
 Ring tread_of(Tire& t) {
-  return {t.particles.x.data(), t.particles.x_prev.data(), t.particles.w.data(), t.n, t.tread_hub, t.tread_reach,
-          t.on_tire.data(), Guess::pseudo_angle};
+  return {t.particles.x.data(), t.particles.x_prev.data(), t.particles.w.data(), t.n, t.tread_hub,
+          t.tread_reach,        t.on_tire.data(),          Guess::pseudo_angle};
 }
 
 }  // namespace
@@ -181,8 +185,8 @@ void keep_rim_inside_tread(Tire& t) {
     const double e2 = length_squared(e);
     if (e2 <= 0.0) continue;
     const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward
-    const double C = -dot(normal, p - x[k]);  // ≥ 0 inside
-    if (C >= 0.0 || -C > 2.0 * t.segment_length) continue;  // deeper: lost shape, not a contact
+    const double C = -dot(normal, p - x[k]);                      // ≥ 0 inside
+    if (C >= 0.0 || -C > 2.0 * t.segment_length) continue;        // deeper: lost shape, not a contact
     const double s = std::clamp(dot(p - x[k], e) / e2, 0.0, 1.0);
     const double w_sum = w[j] + w[k] * (1.0 - s) * (1.0 - s) + w[k1] * s * s;
     if (w_sum <= 0.0) continue;
@@ -208,8 +212,14 @@ bool rim_can_hold_tread(const Tire& t) {
 
 void keep_tread_outside_rim(Tire& t) {
   const std::uint32_t n = t.n;
-  const Ring rim{t.particles.x.data() + n, t.particles.x_prev.data() + n, t.particles.w.data() + n, n, t.rim_hub,
-                 t.rim_reach, nullptr, Guess::exact_angle};
+  const Ring rim{t.particles.x.data() + n,
+                 t.particles.x_prev.data() + n,
+                 t.particles.w.data() + n,
+                 n,
+                 t.rim_hub,
+                 t.rim_reach,
+                 nullptr,
+                 Guess::exact_angle};
   // Within one substep a particle gets about a segment inside (the anti-tunneling clamp); much
   // deeper is a ring that lost its shape, not a contact.
   push_out(t, rim, 0.0, nullptr, 0.0, 2.0 * t.segment_length);

@@ -9,11 +9,15 @@
 namespace tire {
 
 Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology> topology_)
-    : id(id_), spec(spec_), spawn_mass(spec_.mass), n(static_cast<std::uint32_t>(spec_.segments)),
+    : id(id_),
+      spec(spec_),
+      spawn_mass(spec_.mass),
+      n(static_cast<std::uint32_t>(spec_.segments)),
       segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
   TIRE_ASSERT(spec.segments >= 3, "a tire ring of fewer than three segments");
   TIRE_ASSERT(spec.mass > 0.0 && std::isfinite(spec.mass), "a tire's mass is not positive and finite");
-  TIRE_ASSERT(spec.inner_radius > 0.0 && spec.inner_radius < spec.outer_radius, "a tire's rim is not inside its tread");
+  TIRE_ASSERT(spec.inner_radius > 0.0 && spec.inner_radius < spec.outer_radius,
+              "a tire's rim is not inside its tread");
   particles.resize(2 * n);
   contacts.resize(2 * n);
   contact_mask.resize((2 * n + 63) / 64);
@@ -38,13 +42,16 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   std::vector<double> rest_length(layout.size());
   for (std::size_t k = 0; k < layout.size(); ++k)
     rest_length[k] = length(particles.x[layout.pairs()[k].b] - particles.x[layout.pairs()[k].a]);
-  const double compliance[TireTopology::group_count] = {spec.compliance.outer, spec.compliance.inner, spec.compliance.spoke};
+  const double compliance[TireTopology::group_count] = {spec.compliance.outer, spec.compliance.inner,
+                                                        spec.compliance.spoke};
   distance = DistanceConstraintSet(topology->distance(), rest_length, compliance);
   area_constraint.rest_area = polygon_area(particles.x.data(), n);
   rim_area_constraint.rest_area = polygon_area(particles.x.data() + n, n);
-  TIRE_ASSERT(distance.size() == (spec.spokes == SpokePattern::cross ? 5u : 3u) * n, "a ring or a spoke is missing");
+  TIRE_ASSERT(distance.size() == (spec.spokes == SpokePattern::cross ? 5u : 3u) * n,
+              "a ring or a spoke is missing");
   TIRE_ASSERT(sizes_consistent(), "a tire built with arrays of the wrong size");
-  TIRE_ASSERT(area_constraint.rest_area > 0.0 && rim_area_constraint.rest_area > 0.0, "a tire built clockwise");
+  TIRE_ASSERT(area_constraint.rest_area > 0.0 && rim_area_constraint.rest_area > 0.0,
+              "a tire built clockwise");
 }
 
 void Tire::reset() {
@@ -81,7 +88,8 @@ Vec2 mean(const std::vector<Vec2>& values) {
 }  // namespace
 
 void Tire::set_compliance(const TireCompliance& c) {
-  TIRE_ASSERT(c.outer >= 0.0 && c.inner >= 0.0 && c.spoke >= 0.0 && c.pressure >= 0.0, "a negative compliance");
+  TIRE_ASSERT(c.outer >= 0.0 && c.inner >= 0.0 && c.spoke >= 0.0 && c.pressure >= 0.0,
+              "a negative compliance");
   spec.compliance = c;
   distance.set_group_compliance(TireTopology::outer_ring, c.outer);
   distance.set_group_compliance(TireTopology::inner_ring, c.inner);
@@ -152,8 +160,8 @@ bool Tire::sizes_consistent() const {
     return false;
   for (const DistanceConstraint& c : distance.constraints())
     if (c.a >= count || c.b >= count) return false;
-  return area_constraint.first + area_constraint.count <= count && rim_area_constraint.first + rim_area_constraint.count <= count &&
-         grab_particle < count;
+  return area_constraint.first + area_constraint.count <= count &&
+         rim_area_constraint.first + rim_area_constraint.count <= count && grab_particle < count;
 }
 
 bool Tire::is_finite() const {

@@ -1,11 +1,10 @@
 #include "tire/tire/tire_solver.h"
 
-#include "tire/tire/soft_contact.h"
-
 #include <algorithm>
 #include <cmath>
 
 #include "tire/math/check.h"
+#include "tire/tire/soft_contact.h"
 
 namespace tire {
 
@@ -53,8 +52,8 @@ void predict(Tire& t, const SubstepContext& ctx) {
 }
 
 bool path_near(Vec2 a, Vec2 b, const Aabb& box) {
-  return !(std::max(a.x, b.x) < box.min.x || std::min(a.x, b.x) > box.max.x || std::max(a.y, b.y) < box.min.y ||
-           std::min(a.y, b.y) > box.max.y);
+  return !(std::max(a.x, b.x) < box.min.x || std::min(a.x, b.x) > box.max.x ||
+           std::max(a.y, b.y) < box.min.y || std::min(a.y, b.y) > box.max.y);
 }
 
 Aabb world_bounds(const Aabb& local, const Pose& pose) {
@@ -124,8 +123,8 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
   if (prop.is_dynamic()) {
     const Vec2 r = x - prop.center_at(t_end);
     const double rn = cross(r, c.normal), rt = dot(r, c.normal);  // r × n and r × t, t = perp(n)
-    const double mob_n = prop.mobility(-c.normal), mob_t = std::min(prop.mobility(perp(c.normal)),
-                                                                    prop.mobility(-perp(c.normal)));
+    const double mob_n = prop.mobility(-c.normal),
+                 mob_t = std::min(prop.mobility(perp(c.normal)), prop.mobility(-perp(c.normal)));
     normal_share = w / (w + mob_n * (prop.inverse_mass + rn * rn * prop.inverse_inertia));
     tangent_share = w / (w + mob_t * (prop.inverse_mass + rt * rt * prop.inverse_inertia));
   }
@@ -135,7 +134,8 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
                   tangent_share);
   rec.surface_velocity = surface_velocity;
   rec.prop = static_cast<std::int32_t>(frame.prop);
-  if (prop.is_dynamic()) t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end});
+  if (prop.is_dynamic())
+    t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end});
 }
 
 void solve_contacts(Tire& t, const SubstepContext& ctx) {
@@ -180,7 +180,8 @@ void apply_rolling_resistance(Tire& t, RigidMotion& m, double h) {
   const double normal_force = t.particle_mass() * lambda_sum / (h * h);
   const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / m.inertia;
   const double change = std::abs(m.omega) <= max_change ? -m.omega : -std::copysign(max_change, m.omega);
-  for (std::size_t i = 0; i < t.particles.size(); ++i) t.particles.v[i] += perp(t.particles.x[i] - m.centroid) * change;
+  for (std::size_t i = 0; i < t.particles.size(); ++i)
+    t.particles.v[i] += perp(t.particles.x[i] - m.centroid) * change;
   m.omega += change;
 }
 
@@ -201,7 +202,8 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
     const ContactRecord& c = t.contacts[i];
     const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
     if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
-      t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
+      t.prop_impulses.push_back(
+          {static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
     if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
   });
   // The global method damps inside its solve (XPBD eq. 26); Gauss–Seidel damps here.
@@ -223,7 +225,8 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   TIRE_ASSERT(config.dt > 0.0 && std::isfinite(config.dt), "the tick is not a positive length of time");
   TIRE_ASSERT(t.sizes_consistent(), "a tire's arrays no longer match its particle count");
   const double h = config.dt / config.substeps;
-  if (config.method == SolverMethod::gauss_seidel) t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
+  if (config.method == SolverMethod::gauss_seidel)
+    t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
@@ -288,7 +291,8 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
     for (std::uint32_t i = first; i < first + t.n; ++i) hub += p.x[i];
     hub = hub / static_cast<double>(t.n);
     double reach2 = 0.0;
-    for (std::uint32_t i = first; i < first + t.n; ++i) reach2 = std::max(reach2, length_squared(p.x[i] - hub));
+    for (std::uint32_t i = first; i < first + t.n; ++i)
+      reach2 = std::max(reach2, length_squared(p.x[i] - hub));
     reach = std::sqrt(reach2);
   };
   // The tread against its own rim, once per substep: it only matters when a load crushes the tire,
@@ -305,7 +309,8 @@ void end_substep(Tire& t, const SubstepContext& ctx) {
   update_velocities(t, ctx);
   // A tire that started the substep finite ends it finite. (One that did not, say a NaN put in
   // from outside, is the world's divergence guard's to reset after the tick.)
-  TIRE_ASSERT(t.is_finite() || !std::all_of(t.particles.x_prev.begin(), t.particles.x_prev.end(), [](Vec2 x) { return is_finite(x); }),
+  TIRE_ASSERT(t.is_finite() || !std::all_of(t.particles.x_prev.begin(), t.particles.x_prev.end(),
+                                            [](Vec2 x) { return is_finite(x); }),
               "a substep turned finite positions into NaN or Inf");
 }
 

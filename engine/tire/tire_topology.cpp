@@ -8,8 +8,8 @@ namespace {
 
 // Appends ring edges (i, i+1) of a ring starting at `first`: even edges, then odd ones, so that
 // consecutive constraints share no particle and the CPU can overlap their square roots.
-void add_ring(std::vector<DistanceLayout::Pair>& pairs, std::vector<std::uint32_t>& group, std::uint32_t first,
-              std::uint32_t n, std::uint32_t g) {
+void add_ring(std::vector<DistanceLayout::Pair>& pairs, std::vector<std::uint32_t>& group,
+              std::uint32_t first, std::uint32_t n, std::uint32_t g) {
   for (std::uint32_t parity = 0; parity < 2; ++parity)
     for (std::uint32_t i = parity; i < n; i += 2) {
       pairs.push_back({first + i, first + (i + 1) % n});

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <thread>
 #include <cmath>
+#include <thread>
 
 #include "tire/math/check.h"
 #include "tire/math/state_hash.h"
@@ -19,7 +19,10 @@ constexpr std::uint32_t kColors = 64;
 }  // namespace
 
 World::World(const SolverConfig& config, Vec2 gravity)
-    : config_(config), gravity_(gravity), rigid_(gravity), threads_(std::max(1u, std::thread::hardware_concurrency())) {
+    : config_(config),
+      gravity_(gravity),
+      rigid_(gravity),
+      threads_(std::max(1u, std::thread::hardware_concurrency())) {
   color_begin_.reserve(66);  // at most 64 colours and the overflow one, plus the end
 }
 World::~World() = default;
@@ -317,8 +320,10 @@ void World::solve_tire_pairs() {
         solve_tire_contact(tires_[first[k].a], tires_[first[k].b], config_.ground_normal_y);
     };
     const std::size_t count = color_begin_[c + 1] - color_begin_[c];
-    if (c < kColors) for_tires(count, solve);
-    else solve(0, count);  // the overflow colour: its pairs may share a tire
+    if (c < kColors)
+      for_tires(count, solve);
+    else
+      solve(0, count);  // the overflow colour: its pairs may share a tire
   }
 }
 
@@ -386,12 +391,14 @@ void World::color_pairs() {
   for (const std::uint8_t c : pair_color_) ++color_begin_[c + 1u];
   for (std::uint32_t c = 0; c < color_count; ++c) color_begin_[c + 1] += color_begin_[c];
   colored_pairs_.resize(tire_pairs_.size());
-  for (std::size_t k = 0; k < tire_pairs_.size(); ++k) colored_pairs_[color_begin_[pair_color_[k]]++] = tire_pairs_[k];
+  for (std::size_t k = 0; k < tire_pairs_.size(); ++k)
+    colored_pairs_[color_begin_[pair_color_[k]]++] = tire_pairs_[k];
   // The scatter moved each start to the next colour's start: shift back.
   for (std::uint32_t c = color_count; c > 0; --c) color_begin_[c] = color_begin_[c - 1];
   color_begin_[0] = 0;
   TIRE_ASSERT(color_begin_.back() == tire_pairs_.size(), "the colours do not hold every tire pair");
-  TIRE_ASSERT(colors_share_no_tire(), "two pairs of one parallel colour share a tire: solving them would race");
+  TIRE_ASSERT(colors_share_no_tire(),
+              "two pairs of one parallel colour share a tire: solving them would race");
 }
 
 bool World::colors_share_no_tire() {

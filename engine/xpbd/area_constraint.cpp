@@ -25,7 +25,8 @@ void polygon_area_gradient(const Vec2* x, std::uint32_t count, Vec2* grad) {
 
 void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, const double* w, double inv_h2) {
   TIRE_ASSERT(c.count >= 3, "an area constraint on fewer than three vertices");
-  TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance), "an area compliance is negative, NaN or infinite");
+  TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance),
+              "an area compliance is negative, NaN or infinite");
   TIRE_ASSERT(inv_h2 > 0.0 && std::isfinite(inv_h2), "1/h² is not positive and finite");
   Vec2* p = x + c.first;
   const double* wp = w + c.first;
@@ -60,7 +61,8 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
   }
 }
 
-void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h) {
+void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau,
+                          double h) {
   TIRE_ASSERT(c.count >= 3, "an area constraint on fewer than three vertices");
   TIRE_ASSERT(h > 0.0 && tau >= 0.0, "a negative damping time or a substep that is not positive");
   const Vec2* p = x + c.first;

@@ -141,7 +141,8 @@ void CyclicBlockCholesky::reserve(std::size_t blocks) {
 }
 
 void CyclicBlockCholesky::reset(std::size_t blocks) {
-  TIRE_ASSERT(blocks >= 3 && blocks <= diag_.size(), "a cyclic block matrix needs 3 blocks or more, within reserve()");
+  TIRE_ASSERT(blocks >= 3 && blocks <= diag_.size(),
+              "a cyclic block matrix needs 3 blocks or more, within reserve()");
   blocks_ = blocks;
   for (std::size_t k = 0; k < blocks; ++k) {
     diag_[k].fill(0.0);
@@ -160,13 +161,17 @@ bool CyclicBlockCholesky::factor() {
     // Block 0's row: K_{0,j} is K_{1,0}ᵀ at j = 1 and the wrap K_{0,P−1} at j = P−1, zero between;
     // here transposed: K_{1,0} and K_{0,P−1}ᵀ.
     Block4& b = border_[j];
-    if (j == 1) b = transpose(couple_[0]);
-    else if (j == p - 1) b = couple_[p - 1];
-    else b.fill(0.0);
-    if (j > 1) subtract_abt(b, couple_[j - 1], border_[j - 1]);  // (L_{0,j−1} L_{j,j−1}ᵀ)ᵀ = L_{j,j−1} L_{0,j−1}ᵀ
-    lower_solve_rows(diag_[j], b);                               // L_{0,j}ᵀ = L_jj⁻¹ (K_{0,j} − …)ᵀ
-    if (j + 1 < p) lower_solve_rows(diag_[j], couple_[j]);        // L_{j+1,j}ᵀ = L_jj⁻¹ K_{j+1,j}ᵀ
-    subtract_abt(diag_[0], b, b);                                 // K_00 − Σ L_{0,j} L_{0,j}ᵀ
+    if (j == 1)
+      b = transpose(couple_[0]);
+    else if (j == p - 1)
+      b = couple_[p - 1];
+    else
+      b.fill(0.0);
+    if (j > 1)
+      subtract_abt(b, couple_[j - 1], border_[j - 1]);  // (L_{0,j−1} L_{j,j−1}ᵀ)ᵀ = L_{j,j−1} L_{0,j−1}ᵀ
+    lower_solve_rows(diag_[j], b);                      // L_{0,j}ᵀ = L_jj⁻¹ (K_{0,j} − …)ᵀ
+    if (j + 1 < p) lower_solve_rows(diag_[j], couple_[j]);  // L_{j+1,j}ᵀ = L_jj⁻¹ K_{j+1,j}ᵀ
+    subtract_abt(diag_[0], b, b);                           // K_00 − Σ L_{0,j} L_{0,j}ᵀ
   }
   return cholesky(diag_[0]);
 }

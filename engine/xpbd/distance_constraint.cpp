@@ -17,7 +17,8 @@ DistanceLayout::DistanceLayout(std::vector<Pair> pairs, std::vector<std::uint32_
   TIRE_ASSERT(group_.size() == pairs_.size(), "a distance constraint without a compliance group");
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     TIRE_ASSERT(pairs_[k].a != pairs_[k].b, "a distance constraint joins a particle to itself");
-    particle_count_ = std::max<std::size_t>(particle_count_, std::max(pairs_[k].a, pairs_[k].b) + std::size_t{1});
+    particle_count_ =
+        std::max<std::size_t>(particle_count_, std::max(pairs_[k].a, pairs_[k].b) + std::size_t{1});
     group_count_ = std::max<std::size_t>(group_count_, group_[k] + std::size_t{1});
   }
   slot_.assign(pairs_.size(), 0);
@@ -44,7 +45,8 @@ DistanceLayout::DistanceLayout(std::vector<Pair> pairs, std::vector<std::uint32_
     // real lane from looking like a copy of lane 0 to the scalar path (is_copy).
     for (std::uint32_t l = 1; l < count; ++l)
       for (std::uint32_t m = 0; m < l; ++m)
-        TIRE_ASSERT(open.a[l] != open.a[m] && open.a[l] != open.b[m] && open.b[l] != open.a[m] && open.b[l] != open.b[m],
+        TIRE_ASSERT(open.a[l] != open.a[m] && open.a[l] != open.b[m] && open.b[l] != open.a[m] &&
+                        open.b[l] != open.b[m],
                     "two lanes of a batch share a particle");
     // A batch that is not full repeats its first lane: the copy computes and writes exactly what
     // lane 0 does, so the vector path needs no lane count (the scalar path skips copies).
@@ -90,8 +92,10 @@ DistanceConstraintSet::DistanceConstraintSet(const std::vector<DistanceConstrain
   group.reserve(constraints.size());
   rest_length.reserve(constraints.size());
   for (const DistanceConstraint& c : constraints) {
-    TIRE_ASSERT(c.rest_length >= 0.0 && std::isfinite(c.rest_length), "a rest length is negative, NaN or infinite");
-    TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance), "a compliance is negative, NaN or infinite");
+    TIRE_ASSERT(c.rest_length >= 0.0 && std::isfinite(c.rest_length),
+                "a rest length is negative, NaN or infinite");
+    TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance),
+                "a compliance is negative, NaN or infinite");
     const auto it = std::find(compliance_.begin(), compliance_.end(), c.compliance);
     group.push_back(static_cast<std::uint32_t>(it - compliance_.begin()));
     if (it == compliance_.end()) compliance_.push_back(c.compliance);
@@ -102,7 +106,8 @@ DistanceConstraintSet::DistanceConstraintSet(const std::vector<DistanceConstrain
 }
 
 DistanceConstraintSet::DistanceConstraintSet(std::shared_ptr<const DistanceLayout> layout,
-                                             std::span<const double> rest_length, std::span<const double> compliance)
+                                             std::span<const double> rest_length,
+                                             std::span<const double> compliance)
     : compliance_(compliance.begin(), compliance.end()) {
   TIRE_ASSERT(layout && compliance_.size() == layout->group_count(), "a compliance per group of the layout");
   for (double c : compliance_)
@@ -112,12 +117,14 @@ DistanceConstraintSet::DistanceConstraintSet(std::shared_ptr<const DistanceLayou
   adopt(std::move(layout), rest_length);
 }
 
-void DistanceConstraintSet::adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length) {
+void DistanceConstraintSet::adopt(std::shared_ptr<const DistanceLayout> layout,
+                                  std::span<const double> rest_length) {
   TIRE_ASSERT(rest_length.size() == layout->size(), "a rest length per constraint of the layout");
   layout_ = std::move(layout);
   state_.assign(layout_->batch_count(), LaneState{});
   const std::vector<std::uint32_t>& slot = layout_->slot();
-  for (std::size_t k = 0; k < slot.size(); ++k) state_[slot[k] / kLanes].rest_length[slot[k] % kLanes] = rest_length[k];
+  for (std::size_t k = 0; k < slot.size(); ++k)
+    state_[slot[k] / kLanes].rest_length[slot[k] % kLanes] = rest_length[k];
   // A lane that repeats lane 0 repeats its rest length too (is_copy).
   const std::vector<DistanceLayout::Lanes>& batches = layout_->batches();
   for (std::size_t i = 0; i < batches.size(); ++i)
@@ -143,7 +150,8 @@ void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count,
 
 void DistanceConstraintSet::set_group_compliance(std::size_t g, double compliance) {
   TIRE_ASSERT(compliance >= 0.0 && std::isfinite(compliance), "a compliance is negative, NaN or infinite");
-  TIRE_ASSERT(g < compliance_.size() && pending_.empty(), "no such group, or compliances set by range and not yet prepared");
+  TIRE_ASSERT(g < compliance_.size() && pending_.empty(),
+              "no such group, or compliances set by range and not yet prepared");
   compliance_[g] = compliance;
 }
 
@@ -258,7 +266,7 @@ void damp_scalar(const B& batch, const P& q, const Vec2* x, Vec2* v) {
 #ifdef TIRE_HAVE_AVX_PATH
 // Four particles' (x, y) → (x0 x1 x2 x3), (y0 y1 y2 y3).
 __attribute__((target("avx"))) inline void gather(const Vec2* x, const std::uint32_t* idx, __m256d& px,
-                                                   __m256d& py) {
+                                                  __m256d& py) {
   const __m128d p0 = _mm_loadu_pd(&x[idx[0]].x), p1 = _mm_loadu_pd(&x[idx[1]].x);
   const __m128d p2 = _mm_loadu_pd(&x[idx[2]].x), p3 = _mm_loadu_pd(&x[idx[3]].x);
   const __m256d t02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p0), p2, 1);  // x0 y0 x2 y2
@@ -268,7 +276,8 @@ __attribute__((target("avx"))) inline void gather(const Vec2* x, const std::uint
 }
 
 // Writes lane l's (px, py) to x[idx[l]]. A copy of lane 0 writes what lane 0 wrote.
-__attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t* idx, __m256d px, __m256d py) {
+__attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t* idx, __m256d px,
+                                                   __m256d py) {
   const __m256d t02 = _mm256_unpacklo_pd(px, py);  // x0 y0 x2 y2
   const __m256d t13 = _mm256_unpackhi_pd(px, py);  // x1 y1 x3 y3
   _mm_storeu_pd(&x[idx[0]].x, _mm256_castpd256_pd128(t02));
@@ -279,7 +288,7 @@ __attribute__((target("avx"))) inline void scatter(Vec2* x, const std::uint32_t*
 
 template <typename B, typename S, typename P>
 __attribute__((target("avx"))) void solve_avx(const B* batches, S* states, const std::uint32_t* params_of,
-                                               const P* params, std::size_t n, Vec2* x) {
+                                              const P* params, std::size_t n, Vec2* x) {
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   for (std::size_t k = 0; k < n; ++k) {
     const B& batch = batches[k];
@@ -292,10 +301,10 @@ __attribute__((target("avx"))) void solve_avx(const B* batches, S* states, const
     const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
     const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
     const __m256d lambda = _mm256_load_pd(s.lambda);
-    const __m256d delta_lambda = _mm256_mul_pd(
-        _mm256_sub_pd(_mm256_sub_pd(_mm256_load_pd(s.rest_length), len),
-                      _mm256_mul_pd(_mm256_set1_pd(q.alpha_tilde), lambda)),
-        _mm256_set1_pd(q.inv_denominator));
+    const __m256d delta_lambda =
+        _mm256_mul_pd(_mm256_sub_pd(_mm256_sub_pd(_mm256_load_pd(s.rest_length), len),
+                                    _mm256_mul_pd(_mm256_set1_pd(q.alpha_tilde), lambda)),
+                      _mm256_set1_pd(q.inv_denominator));
     _mm256_store_pd(s.lambda, _mm256_add_pd(lambda, delta_lambda));
     const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
     const __m256d sa = _mm256_mul_pd(_mm256_set1_pd(q.w_a), delta_lambda);
@@ -306,8 +315,8 @@ __attribute__((target("avx"))) void solve_avx(const B* batches, S* states, const
 }
 
 template <typename B, typename P>
-__attribute__((target("avx"))) void damp_avx(const B* batches, const std::uint32_t* params_of, const P* params,
-                                              std::size_t n, const Vec2* x, Vec2* v) {
+__attribute__((target("avx"))) void damp_avx(const B* batches, const std::uint32_t* params_of,
+                                             const P* params, std::size_t n, const Vec2* x, Vec2* v) {
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   for (std::size_t k = 0; k < n; ++k) {
     const B& batch = batches[k];
@@ -321,7 +330,8 @@ __attribute__((target("avx"))) void damp_avx(const B* batches, const std::uint32
     const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
     const __m256d inv_len = _mm256_and_pd(_mm256_div_pd(one, len), _mm256_cmp_pd(len, zero, _CMP_GT_OQ));
     const __m256d nx = _mm256_mul_pd(dx, inv_len), ny = _mm256_mul_pd(dy, inv_len);
-    const __m256d rate = _mm256_add_pd(_mm256_mul_pd(nx, _mm256_sub_pd(vbx, vax)), _mm256_mul_pd(ny, _mm256_sub_pd(vby, vay)));
+    const __m256d rate =
+        _mm256_add_pd(_mm256_mul_pd(nx, _mm256_sub_pd(vbx, vax)), _mm256_mul_pd(ny, _mm256_sub_pd(vby, vay)));
     const __m256d impulse = _mm256_mul_pd(rate, _mm256_set1_pd(q.damping));
     const __m256d sa = _mm256_mul_pd(_mm256_set1_pd(q.w_a), impulse);
     const __m256d sb = _mm256_mul_pd(_mm256_set1_pd(q.w_b), impulse);
@@ -336,7 +346,8 @@ const bool kCpuHasAvx = __builtin_cpu_supports("avx");
 }  // namespace
 
 void DistanceConstraintSet::solve(Vec2* x) {
-  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(), "solve() before prepare(), or after a change it has not seen");
+  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(),
+              "solve() before prepare(), or after a change it has not seen");
   const DistanceLayout& layout = *layout_;
   const std::size_t n = layout.batch_count();
   const DistanceLayout::Lanes* batches = layout.batches().data();
@@ -352,14 +363,17 @@ void DistanceConstraintSet::solve(Vec2* x) {
     for (std::size_t k = 0; k < n; ++k) solve_scalar(batches[k], state_[k], params_[class_of[k]], x);
 #ifndef NDEBUG
   TIRE_ASSERT(!finite_before || std::all_of(state_.begin(), state_.end(),
-                                            [](const LaneState& s) { return std::all_of(std::begin(s.lambda), std::end(s.lambda),
-                                                                                        [](double l) { return std::isfinite(l); }); }),
+                                            [](const LaneState& s) {
+                                              return std::all_of(std::begin(s.lambda), std::end(s.lambda),
+                                                                 [](double l) { return std::isfinite(l); });
+                                            }),
               "a sweep from finite positions left a multiplier NaN or infinite");
 #endif
 }
 
 void DistanceConstraintSet::damp(const Vec2* x, Vec2* v) {
-  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(), "damp() before prepare(), or after a change it has not seen");
+  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(),
+              "damp() before prepare(), or after a change it has not seen");
   const DistanceLayout& layout = *layout_;
   const std::size_t n = layout.batch_count();
   const DistanceLayout::Lanes* batches = layout.batches().data();

@@ -1,14 +1,14 @@
 // The smallest program that uses the engine: load a level, roll the player right for two
 // seconds, print where it got to and the state hash.
 //   minimal LEVEL.json [TICKS]
+#include <tire/io/level.h>               // load_level_file, make_session
+#include <tire/math/state_hash.h>        // to_hex
+#include <tire/session/level_session.h>  // LevelSession: the World and the level's script
+
 #include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <string_view>
-
-#include <tire/io/level.h>                 // load_level_file, make_session
-#include <tire/math/state_hash.h>          // to_hex
-#include <tire/session/level_session.h>    // LevelSession: the World and the level's script
 
 int main(int argc, char** argv) {
   if (argc < 2 || argc > 3) {

@@ -131,7 +131,8 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   CHECK(session.world().tires()[0].spec.mass == Approx(5.0));
 }
 
-TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside the table's ranges", "[unit][game]") {
+TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside the table's ranges",
+          "[unit][game]") {
   // Every key is a row of the table that the panel may set, and every such row is a key.
   std::vector<std::string> expected;
   for (const tire::Parameter& p : tire::parameters())
@@ -139,7 +140,8 @@ TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside
   CHECK(tuning_keys() == expected);
   // A fresh Tuning holds the table's defaults.
   const Tuning defaults;
-  for (const tire::Parameter* p : tuning_parameters()) CHECK(tuning_value(defaults, p->key) == p->default_value);
+  for (const tire::Parameter* p : tuning_parameters())
+    CHECK(tuning_value(defaults, p->key) == p->default_value);
   for (const tire::Parameter* p : tuning_parameters()) {
     INFO(p->key);
     // Each has a slider of its own, in one of the panel's sections, that never leaves the range.

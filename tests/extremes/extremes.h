@@ -84,13 +84,17 @@ inline double elastic_energy(const Tire& t) {
   double u = 0.0;
   for (const DistanceConstraint& c : t.distance.constraints()) {
     const double C = length(t.particles.x[c.b] - t.particles.x[c.a]) - c.rest_length;
-    if (c.compliance > 0.0) u += 0.5 * C * C / c.compliance;
-    else if (std::abs(C) > 1e-9) return kInf;
+    if (c.compliance > 0.0)
+      u += 0.5 * C * C / c.compliance;
+    else if (std::abs(C) > 1e-9)
+      return kInf;
   }
   const AreaConstraint& a = t.area_constraint;
   const double C = t.area() - a.pressure * a.rest_area;
-  if (a.compliance > 0.0) u += 0.5 * C * C / a.compliance;
-  else if (std::abs(C) > 1e-9) return kInf;
+  if (a.compliance > 0.0)
+    u += 0.5 * C * C / a.compliance;
+  else if (std::abs(C) > 1e-9)
+    return kInf;
   return u;
 }
 
@@ -241,20 +245,23 @@ class Probe {
     if (budget_ < e0_ + u0_) out << ", capped by the earlier budget";
     out << ", ground-referenced; at t=" << fmt("%.3f", tick_time(max_gain_tick_)) << " s)";
     out << ", area [" << fmt("%.3f", area_min_) << ", " << fmt("%.3f", area_max_) << "] after "
-        << fmt("%g", bounds_.after) << " s (bounds [" << fmt("%g", bounds_.lo) << ", " << fmt("%g", bounds_.hi)
-        << "]; whole run [" << fmt("%.3f", area_all_min_) << ", " << fmt("%.3f", area_all_max_) << "])";
-    out << ", max strain " << fmt("%.2f", 100.0 * strain_max_) << "% at t=" << fmt("%.3f", tick_time(strain_max_tick_))
-        << " s";
+        << fmt("%g", bounds_.after) << " s (bounds [" << fmt("%g", bounds_.lo) << ", "
+        << fmt("%g", bounds_.hi) << "]; whole run [" << fmt("%.3f", area_all_min_) << ", "
+        << fmt("%.3f", area_all_max_) << "])";
+    out << ", max strain " << fmt("%.2f", 100.0 * strain_max_)
+        << "% at t=" << fmt("%.3f", tick_time(strain_max_tick_)) << " s";
     if (!samples_.empty()) {
       double stiff = 0.0;
       for (const Tire& t : world_.tires()) stiff = std::max(stiff, max_strain(t, kStiffCompliance));
       out << ", final max strain " << fmt("%.2f", 100.0 * samples_.back().strain) << "% (stiff constraints "
           << fmt("%.2f", 100.0 * stiff) << "%)";
-      if (stiff > kTangledStrain) out << " SUSPECT: a stiff ring or spoke is left folded/tangled (not asserted)";
+      if (stiff > kTangledStrain)
+        out << " SUSPECT: a stiff ring or spoke is left folded/tangled (not asserted)";
     }
     out << ", NaN " << (finite() ? std::string("none") : "at tick " + std::to_string(first_nonfinite_));
-    out << ", guard " << (guard_count() == 0 ? std::string("none")
-                                             : std::to_string(guard_count()) + "x, first: " + world_.warnings().front());
+    out << ", guard "
+        << (guard_count() == 0 ? std::string("none")
+                               : std::to_string(guard_count()) + "x, first: " + world_.warnings().front());
     out << notes_;
     return out.str();
   }
@@ -286,8 +293,10 @@ class Probe {
     if (samples_.empty()) return;
     std::vector<std::uint64_t> marks;
     const std::uint64_t first = samples_.front().tick, last = samples_.back().tick;
-    for (int r = 0; r <= rows; ++r) marks.push_back(first + (last - first) * static_cast<std::uint64_t>(r) / static_cast<std::uint64_t>(rows));
-    std::vector<std::uint64_t> worst = {max_gain_tick_, area_min_tick_,   area_max_tick_,
+    for (int r = 0; r <= rows; ++r)
+      marks.push_back(first +
+                      (last - first) * static_cast<std::uint64_t>(r) / static_cast<std::uint64_t>(rows));
+    std::vector<std::uint64_t> worst = {max_gain_tick_,   area_min_tick_,   area_max_tick_,
                                         strain_max_tick_, first_nonfinite_, first_warning_tick_};
     worst.insert(worst.end(), extra_marks_.begin(), extra_marks_.end());
     for (const std::uint64_t k : worst)
@@ -297,13 +306,15 @@ class Probe {
     std::sort(marks.begin(), marks.end());
     marks.erase(std::unique(marks.begin(), marks.end()), marks.end());
     std::cout << "  timeline of " << name_ << " (budget " << fmt("%.6g", budget_) << " J):\n"
-              << "      tick    time(s)        energy(J)   gain(% scale)   area_min   area_max  strain(%)  prop v(m/s)  finite\n";
+              << "      tick    time(s)        energy(J)   gain(% scale)   area_min   area_max  strain(%)  "
+                 "prop v(m/s)  finite\n";
     for (const Sample& s : samples_) {
       if (!std::binary_search(marks.begin(), marks.end(), s.tick)) continue;
       char row[200];
       std::snprintf(row, sizeof row, "  %8llu %10.4f %16.6g %15.4f %10.4f %10.4f %10.3f %12.4g  %s\n",
-                    static_cast<unsigned long long>(s.tick), s.time, s.energy, 100.0 * (s.energy - budget_) / scale_,
-                    s.area_min, s.area_max, 100.0 * s.strain, s.prop_speed, s.finite ? "yes" : "NO");
+                    static_cast<unsigned long long>(s.tick), s.time, s.energy,
+                    100.0 * (s.energy - budget_) / scale_, s.area_min, s.area_max, 100.0 * s.strain,
+                    s.prop_speed, s.finite ? "yes" : "NO");
       std::cout << row;
     }
     std::cout.flush();
@@ -367,7 +378,11 @@ inline PropSpec box_prop(std::string name, Vec2 position, Vec2 size, double mass
   return p;
 }
 
-inline double tick_count(double seconds, const SolverConfig& config) { return std::ceil(seconds / config.dt - 1e-9); }
-inline int ticks_for(double seconds, const SolverConfig& config) { return static_cast<int>(tick_count(seconds, config)); }
+inline double tick_count(double seconds, const SolverConfig& config) {
+  return std::ceil(seconds / config.dt - 1e-9);
+}
+inline int ticks_for(double seconds, const SolverConfig& config) {
+  return static_cast<int>(tick_count(seconds, config));
+}
 
 }  // namespace tire::extremes

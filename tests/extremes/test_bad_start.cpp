@@ -18,12 +18,13 @@ TEST_CASE("a tire that starts with coincident particles separates them without N
   Probe probe("coincident particles (outer 0,1,2 and inner 0) at start", world, AreaBounds{}, true);
   probe.step(ticks_for(4.0, world.config()));
   const double gap = length(t.particles.x[1] - t.particles.x[0]);
-  probe.note("final area " + fmt("%.3f", t.area_ratio()) + ", final |x1 − x0| " + fmt("%.4f", gap) + " m (rest " +
-             fmt("%.4f", t.segment_length) + ")");
+  probe.note("final area " + fmt("%.3f", t.area_ratio()) + ", final |x1 − x0| " + fmt("%.4f", gap) +
+             " m (rest " + fmt("%.4f", t.segment_length) + ")");
   probe.judge();
 }
 
-TEST_CASE("a tire that starts inside out (clockwise) does not produce NaN and recovers a sane area", "[extremes][start]") {
+TEST_CASE("a tire that starts inside out (clockwise) does not produce NaN and recovers a sane area",
+          "[extremes][start]") {
   // The default tire rests on the ground (hub y = 0.5). Before the first step every particle is
   // mirrored through the vertical line through the hub (x → 2·x_hub − x), so both rings run
   // clockwise: the signed area is −A0 while every distance constraint is at its rest length. (A
@@ -45,7 +46,8 @@ TEST_CASE("a tire that starts inside out (clockwise) does not produce NaN and re
     probe.step(1);
     if (first_positive < 0.0 && t.area_ratio() > 0.0) first_positive = world.time();
   }
-  probe.note("start area " + fmt("%.3f", start_area) + ", area first positive at t=" + fmt("%.3f", first_positive) +
-             " s, final area " + fmt("%.3f", t.area_ratio()) + ", final hub y " + fmt("%.3f", t.centroid().y) + " m");
+  probe.note("start area " + fmt("%.3f", start_area) +
+             ", area first positive at t=" + fmt("%.3f", first_positive) + " s, final area " +
+             fmt("%.3f", t.area_ratio()) + ", final hub y " + fmt("%.3f", t.centroid().y) + " m");
   probe.judge();
 }

@@ -5,7 +5,8 @@
 using namespace tire;
 using namespace tire::extremes;
 
-TEST_CASE("a tire launched at 10 km/s at a wall is clamped, stopped by the wall and stays sane", "[extremes][clamp]") {
+TEST_CASE("a tire launched at 10 km/s at a wall is clamped, stopped by the wall and stays sane",
+          "[extremes][clamp]") {
   // Ground, and a 5 cm wall at x = 5 m (100 m tall). The tire rests on the ground at x = 0 and
   // is given 1e4 m/s towards the wall; max_speed is raised to 1e5 m/s so that only the clamp
   // (one outer segment per substep: 0.112 m / (1/480 s) = 53.7 m/s) limits it.
@@ -33,16 +34,19 @@ TEST_CASE("a tire launched at 10 km/s at a wall is clamped, stopped by the wall 
       max_x = std::max(max_x, t.particles.x[k].x);
     }
   }
-  probe.note("E(launch) " + fmt("%.3g", e_launch) + " J, hub speed after tick 1 " + fmt("%.4g", speed_after_first_tick) +
-             " m/s (clamp " + fmt("%.4g", v_clamp) + "), max particle speed " + fmt("%.4g", max_particle_speed) +
-             " m/s, max particle x " + fmt("%.4f", max_x) + " m (wall at 5), final hub " + fmt("%.2f", t.centroid().x) +
-             ", " + fmt("%.3f", t.centroid().y) + " m, final area " + fmt("%.3f", t.area_ratio()));
+  probe.note("E(launch) " + fmt("%.3g", e_launch) + " J, hub speed after tick 1 " +
+             fmt("%.4g", speed_after_first_tick) + " m/s (clamp " + fmt("%.4g", v_clamp) +
+             "), max particle speed " + fmt("%.4g", max_particle_speed) + " m/s, max particle x " +
+             fmt("%.4f", max_x) + " m (wall at 5), final hub " + fmt("%.2f", t.centroid().x) + ", " +
+             fmt("%.3f", t.centroid().y) + " m, final area " + fmt("%.3f", t.area_ratio()));
   probe.judge();
   INFO(probe.line());
-  CHECK(max_x <= 5.0);  // it did not pass into or through the wall (contacts put particles on its face, x = 5)
+  CHECK(max_x <=
+        5.0);  // it did not pass into or through the wall (contacts put particles on its face, x = 5)
 }
 
-TEST_CASE("a tire falling from 10 km reaches the clamp speed and lands without instability", "[extremes][clamp]") {
+TEST_CASE("a tire falling from 10 km reaches the clamp speed and lands without instability",
+          "[extremes][clamp]") {
   // Hub at y = 10 km. It falls freely to the clamp speed (53.7 m/s after 5.5 s), then at the clamp
   // for ~180 s, lands and is watched 3 s more.
   // Energy: during the fall E(t) ≤ E(0) = M g 1e4 ≈ 981 kJ (reported); the judged scale is E when
@@ -70,17 +74,19 @@ TEST_CASE("a tire falling from 10 km reaches the clamp speed and lands without i
   Probe probe("falling from 10 km at the clamp speed", world, AreaBounds{0.2, 3.0, world.time() + 1.0});
   probe.step(ticks_for(3.0, config));
   for (const Vec2& x : t.particles.x) lowest = std::min(lowest, x.y);
-  probe.note("fall: " + std::to_string(fall_ticks) + " ticks, max E gain over E(0)=" + fmt("%.4g", e0) + " J: " +
-             fmt("%+.3g", fall_gain) + " J, speed before landing " + fmt("%.4g", speed_before_landing) +
-             " m/s; after: final hub y " + fmt("%.3f", t.centroid().y) + " m, lowest particle " + fmt("%.4f", lowest) +
-             " m, final area " + fmt("%.3f", t.area_ratio()) + ", final speed " + fmt("%.2g", length(t.velocity())) + " m/s");
+  probe.note("fall: " + std::to_string(fall_ticks) + " ticks, max E gain over E(0)=" + fmt("%.4g", e0) +
+             " J: " + fmt("%+.3g", fall_gain) + " J, speed before landing " +
+             fmt("%.4g", speed_before_landing) + " m/s; after: final hub y " + fmt("%.3f", t.centroid().y) +
+             " m, lowest particle " + fmt("%.4f", lowest) + " m, final area " + fmt("%.3f", t.area_ratio()) +
+             ", final speed " + fmt("%.2g", length(t.velocity())) + " m/s");
   probe.judge();
   INFO(probe.line());
   CHECK(fall_gain <= 0.0);
   CHECK(lowest > -0.05);  // landed on the ground, not through it
 }
 
-TEST_CASE("a tire launched at 10 km/s into a resting tire is clamped and does not pass through it", "[extremes][clamp]") {
+TEST_CASE("a tire launched at 10 km/s into a resting tire is clamped and does not pass through it",
+          "[extremes][clamp]") {
   // Soft–soft contact at the clamp: tire A rests at x = 0 and is given 1e4 m/s towards tire B,
   // resting at x = 3 m (max_speed 1e5 m/s on both, so only the clamp limits them). Watched 3 s.
   // Energy scale: E after the first tick, when the clamp has acted (≈ 14.4 kJ + 2·49 J).
@@ -102,9 +108,10 @@ TEST_CASE("a tire launched at 10 km/s into a resting tire is clamped and does no
     closest = std::min(closest, world.tires()[1].centroid().x - world.tires()[0].centroid().x);
     b_fastest = std::max(b_fastest, length(world.tires()[1].velocity()));
   }
-  probe.note("closest hub distance (B − A along x) " + fmt("%.3f", closest) + " m (touching at 1.0), B's peak speed " +
-             fmt("%.4g", b_fastest) + " m/s, final hubs x " + fmt("%.2f", world.tires()[0].centroid().x) + " / " +
-             fmt("%.2f", world.tires()[1].centroid().x) + " m");
+  probe.note("closest hub distance (B − A along x) " + fmt("%.3f", closest) +
+             " m (touching at 1.0), B's peak speed " + fmt("%.4g", b_fastest) + " m/s, final hubs x " +
+             fmt("%.2f", world.tires()[0].centroid().x) + " / " + fmt("%.2f", world.tires()[1].centroid().x) +
+             " m");
   probe.judge();
   INFO(probe.line());
   CHECK(closest > 0.0);  // A never got past B's hub

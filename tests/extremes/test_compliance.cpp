@@ -4,7 +4,8 @@
 using namespace tire;
 using namespace tire::extremes;
 
-TEST_CASE("a dropped tire stays finite, gains no energy and keeps a sane area at every compliance", "[extremes][compliance]") {
+TEST_CASE("a dropped tire stays finite, gains no energy and keeps a sane area at every compliance",
+          "[extremes][compliance]") {
   // The tire falls 0.5 m (hub from y = 1.0) onto flat ground and is watched for 4 s.
   // Energy scale: E(0) = M g y_hub = 10 kg · 9.81 · 1.0 m = 98.1 J (ground-referenced, at rest).
   // Area bounds after 1 s: [0.2, 3] while the tire can carry its own weight. Estimate: a 2D tire's
@@ -27,7 +28,10 @@ TEST_CASE("a dropped tire stays finite, gains no energy and keeps a sane area at
   }
 }
 
-TEST_CASE("a dropped tire stays finite, gains no energy and keeps a sane area with one kind at a time from rigid to very soft", "[extremes][compliance]") {
+TEST_CASE(
+    "a dropped tire stays finite, gains no energy and keeps a sane area with one kind at a time from rigid "
+    "to very soft",
+    "[extremes][compliance]") {
   // As above, with one kind (outer, inner, spoke or pressure) at the extreme and the other three at
   // their defaults. Energy scale: E(0) = 98.1 J. Area bounds [0.2, 3] after 1 s for every one: with
   // any single kind gone soft the other three still hold the shape (rigid rim + tread + air without
@@ -37,11 +41,14 @@ TEST_CASE("a dropped tire stays finite, gains no energy and keeps a sane area wi
   for (int kind = 0; kind < 4; ++kind) {
     for (const double alpha : {0.0, 1e-9, 1e-7, 1e-5, 1e-3, 1e-1, 1.0}) {
       TireSpec spec = tire_spec({0, 1.0});
-      double* slot[] = {&spec.compliance.outer, &spec.compliance.inner, &spec.compliance.spoke, &spec.compliance.pressure};
+      double* slot[] = {&spec.compliance.outer, &spec.compliance.inner, &spec.compliance.spoke,
+                        &spec.compliance.pressure};
       *slot[kind] = alpha;
       World world = ground_world();
       world.add_tire(spec);
-      Probe probe(std::string("compliance.") + kinds[kind] + "=" + fmt("%g", alpha) + " (others default), dropped 0.5 m", world);
+      Probe probe(std::string("compliance.") + kinds[kind] + "=" + fmt("%g", alpha) +
+                      " (others default), dropped 0.5 m",
+                  world);
       probe.step(ticks_for(4.0, world.config()));
       probe.note("final area " + fmt("%.3f", world.tires().front().area_ratio()) + ", final hub y " +
                  fmt("%.3f", world.tires().front().centroid().y) + " m");

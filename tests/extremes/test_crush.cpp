@@ -28,7 +28,8 @@ void crush_and_release(const std::string& name, const TireSpec& tire) {
   const Tire& t = world.tires().front();
   const auto height = [&] {
     double lo = kInf, hi = -kInf;
-    for (std::uint32_t i = 0; i < t.n; ++i) lo = std::min(lo, t.particles.x[i].y), hi = std::max(hi, t.particles.x[i].y);
+    for (std::uint32_t i = 0; i < t.n; ++i)
+      lo = std::min(lo, t.particles.x[i].y), hi = std::max(hi, t.particles.x[i].y);
     return hi - lo;
   };
   double top = -kInf;
@@ -42,9 +43,10 @@ void crush_and_release(const std::string& name, const TireSpec& tire) {
     min_height = std::min(min_height, height());
   }
   const double crushed_area = t.area_ratio();
-  crush.note("area under the box at release " + fmt("%.3f", crushed_area) + " (least " + fmt("%.3f", crush.area_all_min()) +
-             "), tread height " + fmt("%.3f", height()) + " m at release (least " + fmt("%.3f", min_height) +
-             ", rest 1.0), box bottom at y " + fmt("%.3f", world.rigid().current_pose(0).position.y - 0.16) + " m");
+  crush.note("area under the box at release " + fmt("%.3f", crushed_area) + " (least " +
+             fmt("%.3f", crush.area_all_min()) + "), tread height " + fmt("%.3f", height()) +
+             " m at release (least " + fmt("%.3f", min_height) + ", rest 1.0), box bottom at y " +
+             fmt("%.3f", world.rigid().current_pose(0).position.y - 0.16) + " m");
   crush.judge();
 
   // What the tire may have once the box is gone: the crush budget less the box's own energy now.
@@ -58,8 +60,8 @@ void crush_and_release(const std::string& name, const TireSpec& tire) {
   recover.step(ticks_for(2.0, config));
   recover.note("area at release " + fmt("%.3f", crushed_area) + ", reached 95% " +
                (recovered ? "after " + fmt("%.3f", recovery_time) + " s" : std::string("NEVER within 3 s")) +
-               ", final area " + fmt("%.3f", t.area_ratio()) + ", final tread height " + fmt("%.3f", height()) +
-               " m, final hub y " + fmt("%.3f", t.centroid().y) + " m");
+               ", final area " + fmt("%.3f", t.area_ratio()) + ", final tread height " +
+               fmt("%.3f", height()) + " m, final hub y " + fmt("%.3f", t.centroid().y) + " m");
   recover.judge();
   INFO(recover.line());
   CHECK(recovered);
@@ -68,13 +70,18 @@ void crush_and_release(const std::string& name, const TireSpec& tire) {
 
 }  // namespace
 
-TEST_CASE("a default tire crushed by a 1000 kg box recovers at least 95% of its rest area once the box is removed", "[extremes][crush]") {
+TEST_CASE(
+    "a default tire crushed by a 1000 kg box recovers at least 95% of its rest area once the box is removed",
+    "[extremes][crush]") {
   // The default tire's air (α = 1e-5 m⁴/J) and triangulated sidewall carry 9.8 kN with a large
   // but partial squash; the case reports how far it went.
   crush_and_release("default tire crushed", tire_spec({0, 0.5}));
 }
 
-TEST_CASE("a soft tire crushed flat by a 1000 kg box recovers at least 95% of its rest area once the box is removed", "[extremes][crush]") {
+TEST_CASE(
+    "a soft tire crushed flat by a 1000 kg box recovers at least 95% of its rest area once the box is "
+    "removed",
+    "[extremes][crush]") {
   // The soft tire of level 06 (air α = 1e-3 m⁴/J, spokes α = 1e-4 m/N): its air alone would need
   // ΔA·L = W·α ≈ 9.8 m³ to carry 9.8 kN, far beyond its 0.78 m², so it is flattened.
   TireSpec spec = tire_spec({0, 0.5});

@@ -23,8 +23,9 @@ struct Ratio {
   double prop;  // kg
 };
 
-constexpr Ratio kRatios[] = {{"1:1000", 0.01, 10.0}, {"1:100", 0.1, 10.0},  {"1:10", 1.0, 10.0},    {"1:1", 10.0, 10.0},
-                             {"10:1", 10.0, 1.0},    {"100:1", 10.0, 0.1}, {"1000:1", 10.0, 0.01}};
+constexpr Ratio kRatios[] = {{"1:1000", 0.01, 10.0}, {"1:100", 0.1, 10.0}, {"1:10", 1.0, 10.0},
+                             {"1:1", 10.0, 10.0},    {"10:1", 10.0, 1.0},  {"100:1", 10.0, 0.1},
+                             {"1000:1", 10.0, 0.01}};
 
 double top_of(const Tire& t) {
   double top = -kInf;
@@ -78,20 +79,22 @@ struct LaunchWatch {
     const double g = -world.gravity().y;
     const double bound = std::sqrt(std::pow(2.0 * u_max + 0.1, 2) + 2.0 * g * std::max(0.0, y_highest - y));
     if (speed - bound > worst_excess)
-      worst_excess = speed - bound, speed_at_worst = speed, bound_at_worst = bound, time_at_worst = world.time(),
-      tick_at_worst = world.tick();
+      worst_excess = speed - bound, speed_at_worst = speed, bound_at_worst = bound,
+      time_at_worst = world.time(), tick_at_worst = world.tick();
     deepest = std::max(deepest, depth_in_box(world, 0, size));
   }
   std::string text() const {
-    return "box peak speed " + fmt("%.3g", box_peak_speed) + " m/s; worst vs launch bound: " + fmt("%.3g", speed_at_worst) +
-           " m/s against " + fmt("%.3g", bound_at_worst) + " m/s at t=" + fmt("%.3f", time_at_worst) +
+    return "box peak speed " + fmt("%.3g", box_peak_speed) +
+           " m/s; worst vs launch bound: " + fmt("%.3g", speed_at_worst) + " m/s against " +
+           fmt("%.3g", bound_at_worst) + " m/s at t=" + fmt("%.3f", time_at_worst) +
            " s; deepest tire particle inside the box " + fmt("%.3f", deepest) + " m";
   }
 };
 
 }  // namespace
 
-TEST_CASE("a box from 1000 times heavier to 1000 times lighter than the tire falls on it without instability", "[extremes][mass]") {
+TEST_CASE("a box from 1000 times heavier to 1000 times lighter than the tire falls on it without instability",
+          "[extremes][mass]") {
   // The tire rests on the ground for 1 s; then a 0.8 m × 0.4 m box is dropped from 0.3 m above its
   // top, 0.1 m off centre (so that it rolls off onto the ground), and both are watched for 4 s.
   // Energy scale: E(0) when the box appears (tire + box, ground-referenced; the settled tire's
@@ -105,8 +108,8 @@ TEST_CASE("a box from 1000 times heavier to 1000 times lighter than the tire fal
     test::run(world, 60);
     const double top = top_of(world.tires().front());
     world.add_prop(box_prop("box", {0.1, top + 0.3 + 0.2}, {0.8, 0.4}, r.prop));
-    Probe probe(std::string("tire:prop ") + r.label + " (tire " + fmt("%g", r.tire) + " kg, box " + fmt("%g", r.prop) +
-                    " kg), box falls on a resting tire",
+    Probe probe(std::string("tire:prop ") + r.label + " (tire " + fmt("%g", r.tire) + " kg, box " +
+                    fmt("%g", r.prop) + " kg), box falls on a resting tire",
                 world, AreaBounds{0.2, 3.0, world.time() + 1.0});
     LaunchWatch watch;
     watch.observe(world, {0.8, 0.4});
@@ -116,8 +119,8 @@ TEST_CASE("a box from 1000 times heavier to 1000 times lighter than the tire fal
       watch.observe(world, {0.8, 0.4});
       tire_peak_speed = std::max(tire_peak_speed, length(world.tires().front().velocity()));
     }
-    probe.note("box final y " + fmt("%.3f", world.rigid().current_pose(0).position.y) + " m, tire hub peak speed " +
-               fmt("%.3g", tire_peak_speed) + " m/s, " + watch.text());
+    probe.note("box final y " + fmt("%.3f", world.rigid().current_pose(0).position.y) +
+               " m, tire hub peak speed " + fmt("%.3g", tire_peak_speed) + " m/s, " + watch.text());
     probe.mark(watch.tick_at_worst);
     const bool printed = !probe.judge();
     INFO(probe.line());
@@ -126,7 +129,9 @@ TEST_CASE("a box from 1000 times heavier to 1000 times lighter than the tire fal
   }
 }
 
-TEST_CASE("a tire from 1000 times lighter to 1000 times heavier than a resting box falls on it without instability", "[extremes][mass]") {
+TEST_CASE(
+    "a tire from 1000 times lighter to 1000 times heavier than a resting box falls on it without instability",
+    "[extremes][mass]") {
   // A 2 m × 0.5 m box settles on the ground for 1 s (Box2D alone); then a tire is dropped with its
   // bottom 0.5 m above the box's top, and both are watched for 4 s.
   // Energy scale: E(0) when the tire appears (tire + box, ground-referenced).
@@ -139,8 +144,8 @@ TEST_CASE("a tire from 1000 times lighter to 1000 times heavier than a resting b
     TireSpec spec = tire_spec({0, top + 0.5 + 0.5});
     spec.mass = r.tire;
     world.add_tire(spec);
-    Probe probe(std::string("tire:prop ") + r.label + " (tire " + fmt("%g", r.tire) + " kg, box " + fmt("%g", r.prop) +
-                    " kg), tire falls on a resting box",
+    Probe probe(std::string("tire:prop ") + r.label + " (tire " + fmt("%g", r.tire) + " kg, box " +
+                    fmt("%g", r.prop) + " kg), tire falls on a resting box",
                 world, AreaBounds{0.2, 3.0, world.time() + 1.0});
     LaunchWatch watch;
     watch.observe(world, {2.0, 0.5});

@@ -4,7 +4,8 @@
 using namespace tire;
 using namespace tire::extremes;
 
-TEST_CASE("a pile of 50 tires in a walled box settles without NaN, energy gain or crushed tires", "[extremes][pile]") {
+TEST_CASE("a pile of 50 tires in a walled box settles without NaN, energy gain or crushed tires",
+          "[extremes][pile]") {
   // Box: ground at y = 0, walls at x = ±3.5 (7 m inside, 40 m tall). 50 default tires in rows of
   // 6 at 1.1 m spacing, 1.15 m apart vertically (hubs from y = 0.6 to 9.8), each row shifted by
   // ±0.2 m so that the rows nest. Watched for 6 s.
@@ -28,7 +29,7 @@ TEST_CASE("a pile of 50 tires in a walled box settles without NaN, energy gain o
     kinetic += tire_energy(t, {0, 0});
     top = std::max(top, t.centroid().y);
   }
-  probe.note("final fastest hub " + fmt("%.3g", fastest) + " m/s, final kinetic energy " + fmt("%.3g", kinetic) +
-             " J, highest hub " + fmt("%.2f", top) + " m");
+  probe.note("final fastest hub " + fmt("%.3g", fastest) + " m/s, final kinetic energy " +
+             fmt("%.3g", kinetic) + " J, highest hub " + fmt("%.2f", top) + " m");
   probe.judge();
 }

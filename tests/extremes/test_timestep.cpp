@@ -23,7 +23,8 @@ void drop(const std::string& name, const SolverConfig& config, int segments, dou
 }
 }  // namespace
 
-TEST_CASE("a dropped tire is stable for every tick length from 1/30 s to 1/1000 s and 1 to 64 substeps", "[extremes][timestep]") {
+TEST_CASE("a dropped tire is stable for every tick length from 1/30 s to 1/1000 s and 1 to 64 substeps",
+          "[extremes][timestep]") {
   for (const int hz : {30, 60, 240, 1000}) {
     for (const int substeps : {1, 2, 8, 64}) {
       SolverConfig config;
@@ -35,5 +36,6 @@ TEST_CASE("a dropped tire is stable for every tick length from 1/30 s to 1/1000 
 }
 
 TEST_CASE("a dropped tire is stable with 6 to 256 segments per ring", "[extremes][segments]") {
-  for (const int segments : {6, 8, 28, 64, 256}) drop("segments=" + std::to_string(segments), SolverConfig{}, segments, 3.0);
+  for (const int segments : {6, 8, 28, 64, 256})
+    drop("segments=" + std::to_string(segments), SolverConfig{}, segments, 3.0);
 }

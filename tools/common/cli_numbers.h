@@ -34,7 +34,8 @@ inline CLI::Validator number_in(const tire::Range& range, bool integer = false) 
   return CLI::Validator(
       [range, integer, expected](std::string& text) -> std::string {
         const std::optional<double> v = finite_number(text);
-        if (!v || !range.contains(*v) || (integer && std::floor(*v) != *v)) return "must be " + expected + ", got " + text;
+        if (!v || !range.contains(*v) || (integer && std::floor(*v) != *v))
+          return "must be " + expected + ", got " + text;
         if (integer) text = std::to_string(static_cast<long long>(*v));  // "1e3" reaches CLI11 as "1000"
         return "";
       },

@@ -3,6 +3,8 @@
 
 TIRE_PACKAGES=(g++ cmake pkg-config libsdl2-dev libbox2d-dev nlohmann-json3-dev catch2
   libcli11-dev libimgui-dev libssl-dev)
+# What the test suite needs besides: the format check (tools/check-format).
+TIRE_TEST_PACKAGES=(clang-format)
 
 tire_missing_packages() {
   local p missing=()

@@ -20,8 +20,8 @@
 #include <string>
 
 #include "cli_numbers.h"
-#include "tire/io/level.h"
 #include "process_memory.h"
+#include "tire/io/level.h"
 #include "tire/replay/replay.h"
 #include "tire/session/level_session.h"
 
@@ -69,10 +69,16 @@ int main(int argc, char** argv) {
   using tire_tools::integer_in;
   using tire_tools::number_in;
   CLI::App cli{"tire-soak: simulated play with random inputs; fails on NaN or growing memory", "tire-soak"};
-  cli.add_option("--minutes", opt.minutes, "simulated minutes to play")->check(number_in({0, 1440, true}))->capture_default_str();
+  cli.add_option("--minutes", opt.minutes, "simulated minutes to play")
+      ->check(number_in({0, 1440, true}))
+      ->capture_default_str();
   cli.add_option("--level", opt.level, "level file to play")->capture_default_str();
-  cli.add_option("--seed", opt.seed, "seed of the random inputs")->transform(integer_in({0, 1e15}))->capture_default_str();
-  cli.add_option("--max-tires", opt.max_tires, "most tires alive at once")->transform(integer_in({1, 10000}))->capture_default_str();
+  cli.add_option("--seed", opt.seed, "seed of the random inputs")
+      ->transform(integer_in({0, 1e15}))
+      ->capture_default_str();
+  cli.add_option("--max-tires", opt.max_tires, "most tires alive at once")
+      ->transform(integer_in({1, 10000}))
+      ->capture_default_str();
   cli.add_option("--warmup", opt.warmup_minutes, "simulated minutes before memory is watched")
       ->transform(integer_in({0, 1440}))
       ->capture_default_str();
@@ -119,11 +125,12 @@ int main(int argc, char** argv) {
   double rss_baseline = -1.0, rss_max_after = 0.0, heap_baseline = -1.0, heap_max_after = 0.0;
   bool failed = false;
   const auto wall_start = std::chrono::steady_clock::now();
-  std::printf("tire-soak: %s, %.0f simulated minutes (%llu ticks), seed %llu, at most %zu spawned tires; "
-              "spawn region [%.1f, %.1f]..[%.1f, %.1f]; RSS %.1f MiB\n",
-              opt.level.c_str(), opt.minutes, static_cast<unsigned long long>(total_ticks),
-              static_cast<unsigned long long>(opt.seed), opt.max_tires, region.min.x, region.min.y, region.max.x,
-              region.max.y, rss_start);
+  std::printf(
+      "tire-soak: %s, %.0f simulated minutes (%llu ticks), seed %llu, at most %zu spawned tires; "
+      "spawn region [%.1f, %.1f]..[%.1f, %.1f]; RSS %.1f MiB\n",
+      opt.level.c_str(), opt.minutes, static_cast<unsigned long long>(total_ticks),
+      static_cast<unsigned long long>(opt.seed), opt.max_tires, region.min.x, region.min.y, region.max.x,
+      region.max.y, rss_start);
   std::fflush(stdout);
 
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
@@ -132,13 +139,15 @@ int main(int argc, char** argv) {
     tire::ReplayInput in;
     in.tick = tick;
     bool any = false;
-    if (unit(rng) < 1.0 / 90.0) in.steer = std::round(unit(rng) * 4.0 - 2.0) / 2.0, any = true, ++steers;  // -1..1 in halves
+    if (unit(rng) < 1.0 / 90.0)
+      in.steer = std::round(unit(rng) * 4.0 - 2.0) / 2.0, any = true, ++steers;  // -1..1 in halves
     if (unit(rng) < 1.0 / 150.0) in.jump = true, any = true, ++jumps;
     if (unit(rng) < 1.0 / 30.0) in.spawn = random_point(), any = true;
     if (grab_ticks_left == 0 && unit(rng) < 1.0 / 240.0 && !world->tires().empty()) {
       // Press on a random tire's tread, then drag it about for up to two seconds.
-      const tire::Tire& t = world->tires()[static_cast<std::size_t>(unit(rng) * static_cast<double>(world->tires().size()))
-                                           % world->tires().size()];
+      const tire::Tire& t =
+          world->tires()[static_cast<std::size_t>(unit(rng) * static_cast<double>(world->tires().size())) %
+                         world->tires().size()];
       in.grab = t.particles.x[0];
       drag_target = *in.grab;
       grab_ticks_left = 1 + static_cast<int>(unit(rng) * 120.0);
@@ -185,8 +194,8 @@ int main(int argc, char** argv) {
       if (!t.is_finite()) {
         ++nonfinite;
         if (nonfinite <= 5)
-          std::fprintf(stderr, "tire-soak: tick %llu: tire %u is not finite\n", static_cast<unsigned long long>(tick + 1),
-                       t.id);
+          std::fprintf(stderr, "tire-soak: tick %llu: tire %u is not finite\n",
+                       static_cast<unsigned long long>(tick + 1), t.id);
       }
     for (const std::string& w : world->warnings()) {
       ++warnings;
@@ -198,9 +207,11 @@ int main(int argc, char** argv) {
     if ((tick + 1) % ticks_per_minute == 0 || tick + 1 == total_ticks) {
       const std::uint64_t minute = (tick + 1 + ticks_per_minute - 1) / ticks_per_minute;
       const double rss = rss_mib(), heap = heap_mib();
-      if (minute == static_cast<std::uint64_t>(opt.warmup_minutes) || (opt.warmup_minutes == 0 && rss_baseline < 0))
+      if (minute == static_cast<std::uint64_t>(opt.warmup_minutes) ||
+          (opt.warmup_minutes == 0 && rss_baseline < 0))
         rss_baseline = rss, heap_baseline = heap;
-      if (rss_baseline >= 0) rss_max_after = std::max(rss_max_after, rss), heap_max_after = std::max(heap_max_after, heap);
+      if (rss_baseline >= 0)
+        rss_max_after = std::max(rss_max_after, rss), heap_max_after = std::max(heap_max_after, heap);
       double max_speed = 0.0;
       std::size_t outside = 0;  // tires whose hub is outside the level's bounding box (thrown out, falling)
       for (const tire::Tire& t : world->tires()) {
@@ -208,17 +219,22 @@ int main(int argc, char** argv) {
         const tire::Vec2 c = t.centroid();
         outside += c.x < region.world_min.x || c.x > region.world_max.x || c.y < region.world_min.y - 1.0;
         if (c.y < region.world_min.y - 1.0 && std::getenv("TIRE_SOAK_DEBUG"))
-          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t.id, c.x, c.y, t.velocity().x, t.velocity().y);
+          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t.id, c.x, c.y,
+                       t.velocity().x, t.velocity().y);
       }
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-      std::printf("minute %3llu: tick %8llu  tires %4zu  spawned %6llu  removed %6llu  lost %4llu  grabs %5llu  "
-                  "jumps %5llu  max speed %6.2f m/s  outside %3zu  status %-7s  non-finite %llu  warnings %llu  RSS %6.1f MiB  "
-                  "heap %6.1f MiB  wall %7.1f s\n",
-                  static_cast<unsigned long long>(minute), static_cast<unsigned long long>(tick + 1),
-                  world->tires().size(), static_cast<unsigned long long>(spawns),
-                  static_cast<unsigned long long>(removals), static_cast<unsigned long long>(lost),
-                  static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside, tire::to_string(session->status()),
-                  static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(warnings), rss, heap, wall);
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      std::printf(
+          "minute %3llu: tick %8llu  tires %4zu  spawned %6llu  removed %6llu  lost %4llu  grabs %5llu  "
+          "jumps %5llu  max speed %6.2f m/s  outside %3zu  status %-7s  non-finite %llu  warnings %llu  RSS "
+          "%6.1f MiB  "
+          "heap %6.1f MiB  wall %7.1f s\n",
+          static_cast<unsigned long long>(minute), static_cast<unsigned long long>(tick + 1),
+          world->tires().size(), static_cast<unsigned long long>(spawns),
+          static_cast<unsigned long long>(removals), static_cast<unsigned long long>(lost),
+          static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside,
+          tire::to_string(session->status()), static_cast<unsigned long long>(nonfinite),
+          static_cast<unsigned long long>(warnings), rss, heap, wall);
       std::fflush(stdout);
     }
   }
@@ -229,16 +245,19 @@ int main(int argc, char** argv) {
   if (nonfinite > 0 || warnings > 0) failed = true;
   if (rss_baseline >= 0 && (growth > opt.rss_slack_mib || heap_growth > opt.rss_slack_mib)) failed = true;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  std::printf("tire-soak: %s: %.1f simulated minutes in %.1f s wall; tires at end %zu (max %zu), spawned %llu, "
-              "removed %llu (and %llu lost over the walls), grabs %llu, jumps %llu, steer changes %llu; non-finite %llu, "
-              "divergence warnings %llu; "
-              "RSS start %.1f MiB, after warm-up %.1f MiB, max after %.1f MiB, end %.1f MiB (growth %.1f MiB, "
-              "allowed %.1f); heap in use start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB (growth %.1f MiB)\n",
-              failed ? "FAIL" : "ok", static_cast<double>(total_ticks) * dt / 60.0, wall, world->tires().size(),
-              max_tires_seen, static_cast<unsigned long long>(spawns), static_cast<unsigned long long>(removals),
-              static_cast<unsigned long long>(lost), static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps),
-              static_cast<unsigned long long>(steers), static_cast<unsigned long long>(nonfinite),
-              static_cast<unsigned long long>(warnings), rss_start, rss_baseline, rss_max_after, rss_end, growth,
-              opt.rss_slack_mib, heap_start, heap_baseline, heap_mib(), heap_growth);
+  std::printf(
+      "tire-soak: %s: %.1f simulated minutes in %.1f s wall; tires at end %zu (max %zu), spawned %llu, "
+      "removed %llu (and %llu lost over the walls), grabs %llu, jumps %llu, steer changes %llu; non-finite "
+      "%llu, "
+      "divergence warnings %llu; "
+      "RSS start %.1f MiB, after warm-up %.1f MiB, max after %.1f MiB, end %.1f MiB (growth %.1f MiB, "
+      "allowed %.1f); heap in use start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB (growth %.1f MiB)\n",
+      failed ? "FAIL" : "ok", static_cast<double>(total_ticks) * dt / 60.0, wall, world->tires().size(),
+      max_tires_seen, static_cast<unsigned long long>(spawns), static_cast<unsigned long long>(removals),
+      static_cast<unsigned long long>(lost), static_cast<unsigned long long>(grabs),
+      static_cast<unsigned long long>(jumps), static_cast<unsigned long long>(steers),
+      static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(warnings), rss_start,
+      rss_baseline, rss_max_after, rss_end, growth, opt.rss_slack_mib, heap_start, heap_baseline, heap_mib(),
+      heap_growth);
   return failed ? 1 : 0;
 }

@@ -8,10 +8,9 @@
 #include <memory>
 #include <string_view>
 
-
 #include "commands.h"
-#include "tire/io/level.h"
 #include "process_memory.h"
+#include "tire/io/level.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/world/world.h"
 
@@ -61,7 +60,9 @@ class WorldScene final : public Steppable {
 // divergence guard, no Box2D stepping, nothing else). The floor for "flat-level".
 class BareTireScene final : public Steppable {
  public:
-  BareTireScene() : rigid_({0.0, -9.81}), tire_(0, spec()) { rigid_.add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}}); }
+  BareTireScene() : rigid_({0.0, -9.81}), tire_(0, spec()) {
+    rigid_.add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
+  }
   void step(const tire::TickInput& input) override {
     tire_.control = {input.steer, input.jump};
     tire::begin_tick(tire_, config_, rigid_);
@@ -162,22 +163,38 @@ std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int subste
 }
 
 const Scene kScenes[] = {
-    {"prototype", "1 tire, 28 segments, radial spokes, 1 substep x 22 iterations, resting",
-     [] { return prototype_world(tire::SpokePattern::radial, 1, 22); }, {}},
-    {"prototype-rolling", "as prototype, steering +1 (friction and drive active)",
-     [] { return prototype_world(tire::SpokePattern::radial, 1, 22); }, {1.0, false}},
-    {"default-tire", "1 tire, 28 segments, cross spokes, 8 substeps x 1 iteration (the default level)",
-     [] { return prototype_world(tire::SpokePattern::cross, 8, 1); }, {1.0, false}},
-    {"global-tire", "as default-tire, solved by the global method at its default settings (4 substeps x 1 iteration)",
-     [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); }, {1.0, false}},
-    {"global-tire-2x1", "as global-tire, at 2 substeps x 1 iteration",
-     [] { return prototype_world(tire::SpokePattern::cross, 2, 1, tire::SolverMethod::global); }, {1.0, false}},
-    {"global-tire-resting", "as global-tire, resting (no steering)",
-     [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); }, {}},
-    {"bare-tire", "1 default tire on a ground box, stepped by the tire solver alone (no World, no level)",
-     [] { return std::make_unique<BareTireScene>(); }, {}},
-    {"flat-level", "the same tire and ground loaded as a level and stepped by the World",
-     [] { return flat_level(); }, {}},
+    {"prototype",
+     "1 tire, 28 segments, radial spokes, 1 substep x 22 iterations, resting",
+     [] { return prototype_world(tire::SpokePattern::radial, 1, 22); },
+     {}},
+    {"prototype-rolling",
+     "as prototype, steering +1 (friction and drive active)",
+     [] { return prototype_world(tire::SpokePattern::radial, 1, 22); },
+     {1.0, false}},
+    {"default-tire",
+     "1 tire, 28 segments, cross spokes, 8 substeps x 1 iteration (the default level)",
+     [] { return prototype_world(tire::SpokePattern::cross, 8, 1); },
+     {1.0, false}},
+    {"global-tire",
+     "as default-tire, solved by the global method at its default settings (4 substeps x 1 iteration)",
+     [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); },
+     {1.0, false}},
+    {"global-tire-2x1",
+     "as global-tire, at 2 substeps x 1 iteration",
+     [] { return prototype_world(tire::SpokePattern::cross, 2, 1, tire::SolverMethod::global); },
+     {1.0, false}},
+    {"global-tire-resting",
+     "as global-tire, resting (no steering)",
+     [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); },
+     {}},
+    {"bare-tire",
+     "1 default tire on a ground box, stepped by the tire solver alone (no World, no level)",
+     [] { return std::make_unique<BareTireScene>(); },
+     {}},
+    {"flat-level",
+     "the same tire and ground loaded as a level and stepped by the World",
+     [] { return flat_level(); },
+     {}},
     {"pile-1", "1 tire in a walled box", [] { return pile(1); }, {}},
     {"pile-10", "10 tires piled in a walled box, soft-soft contacts on", [] { return pile(10); }, {}},
     {"pile-100", "100 tires piled in a walled box", [] { return pile(100); }, {}},
@@ -191,7 +208,7 @@ constexpr double kPrototypeUsPerFrame = 88.0;
 // The q-quantile of `v` (nearest rank), q in [0, 1].
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
-  const auto i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size()))) ;
+  const auto i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
   return v[std::min(v.size() - 1, i == 0 ? 0 : i - 1)];
 }
 
@@ -203,15 +220,17 @@ using tire_tools::rss_mib;
 
 int bench(const BenchOptions& options) {
   for (const std::string& name : options.scenes) {
-    if (std::none_of(std::begin(kScenes), std::end(kScenes), [&](const Scene& s) { return name == s.name; })) {
+    if (std::none_of(std::begin(kScenes), std::end(kScenes),
+                     [&](const Scene& s) { return name == s.name; })) {
       std::cerr << "tirectl bench: unknown scene \"" << name << "\"; scenes:";
       for (const Scene& s : kScenes) std::cerr << " " << s.name;
       std::cerr << "\n";
       return 2;
     }
   }
-  std::cout << "scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,"
-               "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype\n";
+  std::cout
+      << "scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,"
+         "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype\n";
   using Clock = std::chrono::steady_clock;
   std::vector<double> step_ms;
   for (const Scene& scene : kScenes) {
@@ -230,7 +249,8 @@ int bench(const BenchOptions& options) {
     const auto scene_start = Clock::now();
     for (int s = 0;; ++s) {
       if (options.steps > 0 ? s >= options.steps
-                            : s >= 30 && std::chrono::duration<double>(Clock::now() - scene_start).count() >= options.seconds)
+                            : s >= 30 && std::chrono::duration<double>(Clock::now() - scene_start).count() >=
+                                             options.seconds)
         break;
       const auto start = Clock::now();
       world->step(scene.input);
@@ -238,9 +258,12 @@ int bench(const BenchOptions& options) {
       // A long run's progress on stderr: is the step time steady, is memory flat?
       if (options.report_every > 0 && (s + 1) % options.report_every == 0) {
         const std::vector<double> window(step_ms.end() - options.report_every, step_ms.end());
-        std::fprintf(stderr, "%s: step %d, %.0f s: median %.3f ms, p99 %.3f ms over the last %d; RSS %.1f MiB, heap %.1f MiB\n",
+        std::fprintf(stderr,
+                     "%s: step %d, %.0f s: median %.3f ms, p99 %.3f ms over the last %d; RSS %.1f MiB, heap "
+                     "%.1f MiB\n",
                      scene.name, s + 1, std::chrono::duration<double>(Clock::now() - scene_start).count(),
-                     quantile(window, 0.5), quantile(window, 0.99), options.report_every, rss_mib(), heap_mib());
+                     quantile(window, 0.5), quantile(window, 0.99), options.report_every, rss_mib(),
+                     heap_mib());
       }
     }
     const tire::Tire& t = world->first_tire();
@@ -248,13 +271,14 @@ int bench(const BenchOptions& options) {
     const double median = quantile(step_ms, 0.5);
     double mean = 0.0;
     for (const double ms : step_ms) mean += ms / static_cast<double>(step_ms.size());
-    std::cout << scene.name << "," << tires << "," << tires * t.particle_count() << "," << world->contacts() << ","
-              << world->tire_pairs() << "," << world->threads() << "," << t.segments() << ","
+    std::cout << scene.name << "," << tires << "," << tires * t.particle_count() << "," << world->contacts()
+              << "," << world->tire_pairs() << "," << world->threads() << "," << t.segments() << ","
               << world->config().substeps << "," << world->config().iterations << "," << step_ms.size() << ","
               << median << "," << quantile(step_ms, 0.99) << "," << mean << ","
               << median * 1000.0 / static_cast<double>(tires) << "," << peak_rss_mib() << ",";
     // The prototype's figure is for its own scene only.
-    if (std::string_view(scene.name).starts_with("prototype")) std::cout << kPrototypeUsPerFrame / (median * 1000.0);
+    if (std::string_view(scene.name).starts_with("prototype"))
+      std::cout << kPrototypeUsPerFrame / (median * 1000.0);
     std::cout << std::endl;  // a row at a time: long runs show progress
   }
   return 0;

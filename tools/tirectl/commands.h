@@ -21,8 +21,8 @@ int run(const RunOptions& options);
 
 struct ReplayOptions {
   std::vector<std::string> files;
-  bool update = false;               // rewrite the expectations from this run
-  bool allow_level_change = false;   // run even if the level's content hash changed
+  bool update = false;              // rewrite the expectations from this run
+  bool allow_level_change = false;  // run even if the level's content hash changed
 };
 int replay(const ReplayOptions& options);
 
@@ -39,12 +39,12 @@ int schema(const SchemaOptions& options);
 
 struct BenchOptions {
   std::vector<std::string> scenes;  // empty: all
-  int threads = 0;        // 0: the world's default (the hardware's)
-  int steps = 0;          // timed steps per scene; 0: at least 30, for `seconds`
-  double seconds = 2.0;   // timing budget per scene when `steps` is 0
-  int warmup = 120;       // untimed steps first: the pile settles, caches warm
-  int report_every = 0;   // >0: every this many steps, a progress line on stderr (time, RSS, heap)
-  std::string schedule = "fused";  // World::step's schedule: fused (the default) or plain
+  int threads = 0;                  // 0: the world's default (the hardware's)
+  int steps = 0;                    // timed steps per scene; 0: at least 30, for `seconds`
+  double seconds = 2.0;             // timing budget per scene when `steps` is 0
+  int warmup = 120;                 // untimed steps first: the pile settles, caches warm
+  int report_every = 0;             // >0: every this many steps, a progress line on stderr (time, RSS, heap)
+  std::string schedule = "fused";   // World::step's schedule: fused (the default) or plain
 };
 int bench(const BenchOptions& options);
 

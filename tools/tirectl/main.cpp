@@ -16,21 +16,26 @@ int main(int argc, char** argv) {
   CLI::App* run_cmd = app.add_subcommand("run", "Step a level headless and print its final state as JSON");
   run_cmd->add_option("level", run.level, "Level file (JSON)")->required();
   run_cmd->add_option("--ticks", run.ticks, "Fixed ticks to step")->transform(integer_in({0, 1e8}));
-  run_cmd->add_option("--set", run.overrides, "Override a numeric key by dotted path, e.g. solver.substeps=16");
-  run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")->check(number_in({-1, 1}));
+  run_cmd->add_option("--set", run.overrides,
+                      "Override a numeric key by dotted path, e.g. solver.substeps=16");
+  run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")
+      ->check(number_in({-1, 1}));
   run_cmd->add_option("--jump-at", run.jump_at, "Ask the player to jump at this tick (repeatable)")
       ->transform(integer_in({0, 1e8}));
-  run_cmd->add_option("--trace", run.trace_every, "Every N ticks, print a readable line about the player on stderr")
+  run_cmd
+      ->add_option("--trace", run.trace_every,
+                   "Every N ticks, print a readable line about the player on stderr")
       ->transform(integer_in({1, 1e8}));
 
   run_cmd->add_option("--input", run.input, "Drive the player with the inputs of this replay file");
   run_cmd->add_option("--record", run.record, "Record the run as a replay file (written atomically)");
 
   tirectl::ReplayOptions replay;
-  CLI::App* replay_cmd =
-      app.add_subcommand("replay", "Run replays headless and check their expectations (exit 0 pass, 1 fail, 2 bad input)");
+  CLI::App* replay_cmd = app.add_subcommand(
+      "replay", "Run replays headless and check their expectations (exit 0 pass, 1 fail, 2 bad input)");
   replay_cmd->add_option("files", replay.files, "Replay files (JSON)")->required();
-  replay_cmd->add_flag("--update", replay.update, "Rewrite each replay's expectations from this run, saying what changed");
+  replay_cmd->add_flag("--update", replay.update,
+                       "Rewrite each replay's expectations from this run, saying what changed");
   replay_cmd->add_flag("--allow-level-change", replay.allow_level_change,
                        "Run a replay even if its level's content changed since it was recorded");
 
@@ -43,22 +48,27 @@ int main(int argc, char** argv) {
       "schema", "Print levels/schema.json as the parameter table generates it; --check or --write the file");
   schema_cmd->add_option("file", schema.file, "The committed schema, whose hand-written parts are kept")
       ->capture_default_str();
-  CLI::Option* check_flag =
-      schema_cmd->add_flag("--check", schema.check, "Exit 1, saying where, when the file differs from the generated schema");
-  schema_cmd->add_flag("--write", schema.write, "Rewrite the file from the parameter table")->excludes(check_flag);
+  CLI::Option* check_flag = schema_cmd->add_flag(
+      "--check", schema.check, "Exit 1, saying where, when the file differs from the generated schema");
+  schema_cmd->add_flag("--write", schema.write, "Rewrite the file from the parameter table")
+      ->excludes(check_flag);
 
   tirectl::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Time the performance scenes; CSV on stdout");
   bench_cmd->add_option("--scene", bench.scenes, "Only these scenes (repeatable; default all)");
   bench_cmd->add_option("--threads", bench.threads, "Threads to step with (default: the hardware's)")
       ->transform(integer_in({1, 256}));
-  bench_cmd->add_option("--steps", bench.steps, "Timed steps per scene (default: as many as --seconds allow, at least 30)")
+  bench_cmd
+      ->add_option("--steps", bench.steps,
+                   "Timed steps per scene (default: as many as --seconds allow, at least 30)")
       ->transform(integer_in({1, 1e7}));
   bench_cmd->add_option("--seconds", bench.seconds, "Timing budget per scene when --steps is not given")
       ->check(number_in({0, 3600}));
-  bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")->transform(integer_in({0, 1e6}));
-  bench_cmd->add_option("--report-every", bench.report_every,
-                        "Every N timed steps, print the recent median and p99, RSS and heap in use to stderr")
+  bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")
+      ->transform(integer_in({0, 1e6}));
+  bench_cmd
+      ->add_option("--report-every", bench.report_every,
+                   "Every N timed steps, print the recent median and p99, RSS and heap in use to stderr")
       ->transform(integer_in({1, 1e7}));
   bench_cmd
       ->add_option("--schedule", bench.schedule,

@@ -1,10 +1,11 @@
 // tirectl replay: run each replay headless through World::step and check what it expects.
+#include "tire/replay/replay.h"
+
 #include <filesystem>
 #include <iostream>
 
 #include "commands.h"
 #include "tire/io/file_io.h"
-#include "tire/replay/replay.h"
 
 namespace tirectl {
 
@@ -30,8 +31,9 @@ int check_one(const std::string& file, const ReplayOptions& options) {
   if (sha != replay.level_sha256) {
     if (!options.allow_level_change && !options.update) {
       std::cerr << file << ": refused: " << level_path.string()
-                << " has changed since this replay was recorded (SHA-256 " << sha.substr(0, 12) << "…, recorded on "
-                << replay.level_sha256.substr(0, 12) << "…); run with --allow-level-change to run it anyway, or "
+                << " has changed since this replay was recorded (SHA-256 " << sha.substr(0, 12)
+                << "…, recorded on " << replay.level_sha256.substr(0, 12)
+                << "…); run with --allow-level-change to run it anyway, or "
                 << "--update to record new expectations\n";
       return kFail;
     }
@@ -46,7 +48,8 @@ int check_one(const std::string& file, const ReplayOptions& options) {
   // fills with the real hashes.
   tire::Replay to_run = replay;
   if (options.update && to_run.expect.checkpoints.empty())
-    for (std::uint64_t t = 30; t <= replay.ticks; t += 30) to_run.expect.checkpoints.push_back({t, "0000000000000000"});
+    for (std::uint64_t t = 30; t <= replay.ticks; t += 30)
+      to_run.expect.checkpoints.push_back({t, "0000000000000000"});
   const tire::ReplayOutcome outcome = tire::run_replay(to_run, *level.level);
 
   if (options.update) {
@@ -61,7 +64,8 @@ int check_one(const std::string& file, const ReplayOptions& options) {
     if (replay.expect.hash != updated.expect.hash) changes.push_back("final hash → " + outcome.hash);
     std::size_t moved = 0;
     for (std::size_t i = 0; i < updated.expect.checkpoints.size(); ++i)
-      moved += i >= replay.expect.checkpoints.size() || replay.expect.checkpoints[i].hash != updated.expect.checkpoints[i].hash;
+      moved += i >= replay.expect.checkpoints.size() ||
+               replay.expect.checkpoints[i].hash != updated.expect.checkpoints[i].hash;
     if (moved) changes.push_back(std::to_string(moved) + " checkpoint hash(es)");
     if (changes.empty()) {
       std::cout << file << ": up to date\n";

@@ -1,15 +1,15 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "commands.h"
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
-#include "tire/replay/replay.h"
 #include "tire/math/state_hash.h"
+#include "tire/replay/replay.h"
 #include "tire/world/world.h"
 
 namespace tirectl {
@@ -35,21 +35,19 @@ nlohmann::ordered_json summary(const tire::LevelSession& session) {
     const tire::Pose pose = rigid.current_pose(i);
     props.push_back({{"name", p.spec.name}, {"position", vec(pose.position)}, {"angle", pose.angle}});
   }
-  return {{"ticks", world.tick()},
-          {"time", world.time()},
-          {"status", tire::to_string(session.status())},
-          {"tires", tires},
-          {"props", props},
-          {"hash", tire::to_hex(session.state_hash())}};
+  return {{"ticks", world.tick()}, {"time", world.time()}, {"status", tire::to_string(session.status())},
+          {"tires", tires},        {"props", props},       {"hash", tire::to_hex(session.state_hash())}};
 }
 
 void trace(const tire::World& world) {
   const tire::Tire* p = world.player();
   if (!p) return;
   const tire::Vec2 c = p->centroid(), v = p->velocity();
-  std::fprintf(stderr, "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s\n",
-               world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
-               p->grounded() ? "grounded" : "in the air");
+  std::fprintf(
+      stderr,
+      "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s\n",
+      world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
+      p->grounded() ? "grounded" : "in the air");
 }
 
 }  // namespace
@@ -83,7 +81,8 @@ int run(const RunOptions& options) {
         jump.jump = true;
         inputs.push_back(jump);
       }
-    std::stable_sort(inputs.begin(), inputs.end(), [](const auto& a, const auto& b) { return a.tick < b.tick; });
+    std::stable_sort(inputs.begin(), inputs.end(),
+                     [](const auto& a, const auto& b) { return a.tick < b.tick; });
   }
 
   std::optional<tire::ReplayRecorder> recorder;
@@ -92,7 +91,8 @@ int run(const RunOptions& options) {
     const std::filesystem::path level = std::filesystem::absolute(options.level);
     std::string error;
     const auto bytes = tire::read_file(level, tire::LevelLimits::max_file_bytes, error);
-    recorder.emplace(std::filesystem::relative(level, out.parent_path()).generic_string(), tire::sha256_hex(*bytes));
+    recorder.emplace(std::filesystem::relative(level, out.parent_path()).generic_string(),
+                     tire::sha256_hex(*bytes));
   }
 
   std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
@@ -113,7 +113,8 @@ int run(const RunOptions& options) {
   }
   if (recorder) {
     std::string error;
-    if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*session)), error)) {
+    if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*session)),
+                                     error)) {
       std::cerr << "tirectl: " << error << "\n";
       return 2;
     }

@@ -17,9 +17,11 @@ std::string first_difference(const std::string& a, const std::string& b) {
     if (a[i] == '\n') ++line, start = i + 1;
   const auto line_at = [start](const std::string& s) {
     const std::size_t end = s.find('\n', start);
-    return start >= s.size() ? std::string("(end of file)") : s.substr(start, end == std::string::npos ? end : end - start);
+    return start >= s.size() ? std::string("(end of file)")
+                             : s.substr(start, end == std::string::npos ? end : end - start);
   };
-  return "line " + std::to_string(line) + ": the file has\n  " + line_at(a) + "\nand the table generates\n  " + line_at(b);
+  return "line " + std::to_string(line) + ": the file has\n  " + line_at(a) +
+         "\nand the table generates\n  " + line_at(b);
 }
 
 }  // namespace
@@ -42,7 +44,8 @@ int schema(const SchemaOptions& options) {
       std::cout << options.file << ": up to date with the parameter table\n";
       return 0;
     }
-    std::cerr << options.file << ": differs from what the parameter table (engine/tire/include/tire/tire/parameters.h) "
+    std::cerr << options.file
+              << ": differs from what the parameter table (engine/tire/include/tire/tire/parameters.h) "
               << "generates, first at " << first_difference(*current, *generated.text)
               << "\nRegenerate it with: tirectl schema --write " << options.file << "\n";
     return 1;

@@ -14,10 +14,10 @@ namespace {
 // Geometry (px).
 constexpr double kPanelWidth = 360.0;
 constexpr double kPanelHeight = 270.0;
-constexpr double kPadLeft = 64.0;   // inside a panel, left of its axes: y tick labels
+constexpr double kPadLeft = 64.0;  // inside a panel, left of its axes: y tick labels
 constexpr double kPadRight = 14.0;
-constexpr double kPadTop = 26.0;    // panel title
-constexpr double kPadBottom = 40.0; // x tick labels and axis label
+constexpr double kPadTop = 26.0;     // panel title
+constexpr double kPadBottom = 40.0;  // x tick labels and axis label
 constexpr double kMargin = 16.0;
 constexpr double kMarkerRadius = 4.5;
 
@@ -42,7 +42,8 @@ struct Extent {
   }
   Range decades() const {
     if (!(mx > 0.0)) return {0, 1};
-    Range r{static_cast<int>(std::floor(std::log10(mn) + 1e-9)), static_cast<int>(std::ceil(std::log10(mx) - 1e-9))};
+    Range r{static_cast<int>(std::floor(std::log10(mn) + 1e-9)),
+            static_cast<int>(std::ceil(std::log10(mx) - 1e-9))};
     if (r.hi <= r.lo) r.hi = r.lo + 1;
     return r;
   }
@@ -51,7 +52,8 @@ struct Extent {
 // Maps a value to a pixel along an axis from a to b (a at 10^lo).
 double scale(double v, Range r, double a, double b) {
   const double lv = v > 0.0 ? std::log10(v) : static_cast<double>(r.lo);
-  const double f = (std::clamp(lv, static_cast<double>(r.lo), static_cast<double>(r.hi)) - r.lo) / (r.hi - r.lo);
+  const double f =
+      (std::clamp(lv, static_cast<double>(r.lo), static_cast<double>(r.hi)) - r.lo) / (r.hi - r.lo);
   return a + (b - a) * f;
 }
 
@@ -61,12 +63,13 @@ void marker(std::ostringstream& out, int kind, double x, double y, const std::st
                                    : "fill=\"" + color + "\" stroke=\"" + color + "\" stroke-width=\"0.6\"";
   switch (((kind % 6) + 6) % 6) {
     case 0:
-      out << "<circle cx=\"" << num(x) << "\" cy=\"" << num(y) << "\" r=\"" << num(r) << "\" " << paint << "/>";
+      out << "<circle cx=\"" << num(x) << "\" cy=\"" << num(y) << "\" r=\"" << num(r) << "\" " << paint
+          << "/>";
       break;
     case 1: {
       const double s = r * 0.9;
-      out << "<rect x=\"" << num(x - s) << "\" y=\"" << num(y - s) << "\" width=\"" << num(2 * s) << "\" height=\""
-          << num(2 * s) << "\" " << paint << "/>";
+      out << "<rect x=\"" << num(x - s) << "\" y=\"" << num(y - s) << "\" width=\"" << num(2 * s)
+          << "\" height=\"" << num(2 * s) << "\" " << paint << "/>";
       break;
     }
     case 2:
@@ -74,9 +77,9 @@ void marker(std::ostringstream& out, int kind, double x, double y, const std::st
           << num(y + 0.8 * r) << " " << num(x - 1.1 * r) << "," << num(y + 0.8 * r) << "\" " << paint << "/>";
       break;
     case 3:
-      out << "<polygon points=\"" << num(x) << "," << num(y - 1.25 * r) << " " << num(x + 1.25 * r) << "," << num(y)
-          << " " << num(x) << "," << num(y + 1.25 * r) << " " << num(x - 1.25 * r) << "," << num(y) << "\" " << paint
-          << "/>";
+      out << "<polygon points=\"" << num(x) << "," << num(y - 1.25 * r) << " " << num(x + 1.25 * r) << ","
+          << num(y) << " " << num(x) << "," << num(y + 1.25 * r) << " " << num(x - 1.25 * r) << "," << num(y)
+          << "\" " << paint << "/>";
       break;
     case 4:
       out << "<polygon points=\"" << num(x) << "," << num(y + 1.2 * r) << " " << num(x + 1.1 * r) << ","
@@ -147,7 +150,8 @@ std::string metres_label(int decade) {
 
 std::string render_svg(const PlotSpec& spec) {
   const int columns = std::max(1, spec.columns);
-  const int rows = static_cast<int>((spec.panels.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
+  const int rows = static_cast<int>((spec.panels.size() + static_cast<std::size_t>(columns) - 1) /
+                                    static_cast<std::size_t>(columns));
 
   // Ranges: x shared by every panel, y by each row (or by all).
   Extent x_extent, all_y;
@@ -165,7 +169,10 @@ std::string render_svg(const PlotSpec& spec) {
   const Range xr = x_extent.decades();
 
   const double legend_top =
-      kMargin + (spec.subtitle.empty() ? 34.0 : 37.0 + 17.0 * static_cast<double>(1 + std::count(spec.subtitle.begin(), spec.subtitle.end(), '\n')));
+      kMargin + (spec.subtitle.empty()
+                     ? 34.0
+                     : 37.0 + 17.0 * static_cast<double>(
+                                         1 + std::count(spec.subtitle.begin(), spec.subtitle.end(), '\n')));
   const double legend_height = 52.0;
   const double grid_top = legend_top + legend_height;
   const double width = 2 * kMargin + columns * kPanelWidth;
@@ -174,16 +181,19 @@ std::string render_svg(const PlotSpec& spec) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
-      << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n"
-      << "<rect x=\"0\" y=\"0\" width=\"" << num(width) << "\" height=\"" << num(height) << "\" fill=\"white\"/>\n";
-  out << "<text x=\"" << num(kMargin) << "\" y=\"" << num(kMargin + 16) << "\" font-size=\"18\" font-weight=\"bold\">"
-      << xml_escape(spec.title) << "</text>\n";
+      << "\" viewBox=\"0 0 " << num(width) << " " << num(height)
+      << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n"
+      << "<rect x=\"0\" y=\"0\" width=\"" << num(width) << "\" height=\"" << num(height)
+      << "\" fill=\"white\"/>\n";
+  out << "<text x=\"" << num(kMargin) << "\" y=\"" << num(kMargin + 16)
+      << "\" font-size=\"18\" font-weight=\"bold\">" << xml_escape(spec.title) << "</text>\n";
   // The subtitle, one line per '\n'.
   int subtitle_lines = 0;
   for (std::size_t begin = 0; begin <= spec.subtitle.size() && !spec.subtitle.empty(); ++subtitle_lines) {
     const std::size_t end = std::min(spec.subtitle.find('\n', begin), spec.subtitle.size());
     out << "<text x=\"" << num(kMargin) << "\" y=\"" << num(kMargin + 38 + 17 * subtitle_lines)
-        << "\" font-size=\"12.5\" fill=\"#444\">" << xml_escape(spec.subtitle.substr(begin, end - begin)) << "</text>\n";
+        << "\" font-size=\"12.5\" fill=\"#444\">" << xml_escape(spec.subtitle.substr(begin, end - begin))
+        << "</text>\n";
     begin = end + 1;
   }
 
@@ -192,37 +202,42 @@ std::string render_svg(const PlotSpec& spec) {
     double x = kMargin;
     double y = legend_top + 14;
     out << "<g font-size=\"12\">\n";
-    out << "<text x=\"" << num(x) << "\" y=\"" << num(y + 4) << "\" font-weight=\"bold\">" << xml_escape(spec.color_title)
-        << "</text>\n";
+    out << "<text x=\"" << num(x) << "\" y=\"" << num(y + 4) << "\" font-weight=\"bold\">"
+        << xml_escape(spec.color_title) << "</text>\n";
     x += 8.0 * static_cast<double>(spec.color_title.size()) + 14;
     for (std::size_t i = 0; i < spec.colors.size() && i < spec.color_labels.size(); ++i) {
       marker(out, 0, x, y, spec.colors[i], false);
-      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.color_labels[i]) << "</text>\n";
+      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">"
+          << xml_escape(spec.color_labels[i]) << "</text>\n";
       x += 18 + 7.5 * static_cast<double>(spec.color_labels[i].size()) + 10;
     }
     x = kMargin;
     y += 24;
-    out << "<text x=\"" << num(x) << "\" y=\"" << num(y + 4) << "\" font-weight=\"bold\">" << xml_escape(spec.marker_title)
-        << "</text>\n";
+    out << "<text x=\"" << num(x) << "\" y=\"" << num(y + 4) << "\" font-weight=\"bold\">"
+        << xml_escape(spec.marker_title) << "</text>\n";
     x += 8.0 * static_cast<double>(spec.marker_title.size()) + 14;
     for (std::size_t i = 0; i < spec.marker_labels.size(); ++i) {
       marker(out, static_cast<int>(i), x, y, "#555", false);
-      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.marker_labels[i]) << "</text>\n";
+      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">"
+          << xml_escape(spec.marker_labels[i]) << "</text>\n";
       x += 18 + 7.5 * static_cast<double>(spec.marker_labels[i].size()) + 10;
     }
     x += 16;
-    out << "<polyline points=\"" << num(x) << "," << num(y + 3) << " " << num(x + 14) << "," << num(y - 3) << " "
-        << num(x + 28) << "," << num(y) << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1.6\"/>";
+    out << "<polyline points=\"" << num(x) << "," << num(y + 3) << " " << num(x + 14) << "," << num(y - 3)
+        << " " << num(x + 28) << "," << num(y) << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1.6\"/>";
     ring(out, x + 14, y - 3);
-    out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.front_label) << "</text>\n";
+    out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.front_label)
+        << "</text>\n";
     x += 36 + 7.5 * static_cast<double>(spec.front_label.size()) + 16;
-    out << "<line x1=\"" << num(x) << "\" y1=\"" << num(y) << "\" x2=\"" << num(x + 28) << "\" y2=\"" << num(y)
-        << "\" stroke=\"#888\" stroke-width=\"1.4\" stroke-dasharray=\"5,3\"/>";
-    out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.floor_label) << "</text>\n";
+    out << "<line x1=\"" << num(x) << "\" y1=\"" << num(y) << "\" x2=\"" << num(x + 28) << "\" y2=\""
+        << num(y) << "\" stroke=\"#888\" stroke-width=\"1.4\" stroke-dasharray=\"5,3\"/>";
+    out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.floor_label)
+        << "</text>\n";
     x += 36 + 7.0 * static_cast<double>(spec.floor_label.size()) + 16;
     if (!spec.hollow_label.empty()) {
       marker(out, 0, x, y, "#555", true);
-      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.hollow_label) << "</text>\n";
+      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.hollow_label)
+          << "</text>\n";
     }
     out << "</g>\n";
   }
@@ -238,19 +253,21 @@ std::string render_svg(const PlotSpec& spec) {
     auto px = [&](double v) { return scale(v, xr, left, right); };
     auto py = [&](double v) { return scale(v, yr, bottom, top); };
 
-    out << "<g>\n<text x=\"" << num(left) << "\" y=\"" << num(top - 8) << "\" font-size=\"13\" font-weight=\"bold\">"
-        << xml_escape(p.title) << "</text>\n";
-    out << "<rect x=\"" << num(left) << "\" y=\"" << num(top) << "\" width=\"" << num(right - left) << "\" height=\""
-        << num(bottom - top) << "\" fill=\"#fbfbfb\" stroke=\"#333\" stroke-width=\"1\"/>\n";
+    out << "<g>\n<text x=\"" << num(left) << "\" y=\"" << num(top - 8)
+        << "\" font-size=\"13\" font-weight=\"bold\">" << xml_escape(p.title) << "</text>\n";
+    out << "<rect x=\"" << num(left) << "\" y=\"" << num(top) << "\" width=\"" << num(right - left)
+        << "\" height=\"" << num(bottom - top)
+        << "\" fill=\"#fbfbfb\" stroke=\"#333\" stroke-width=\"1\"/>\n";
     // Grid, ticks and labels: decades labelled, 2..9 as short ticks.
     for (int d = xr.lo; d <= xr.hi; ++d) {
       const double x = px(std::pow(10.0, d));
       if (d > xr.lo && d < xr.hi)
-        out << "<line x1=\"" << num(x) << "\" y1=\"" << num(top) << "\" x2=\"" << num(x) << "\" y2=\"" << num(bottom)
-            << "\" stroke=\"#ddd\"/>";
-      out << "<line x1=\"" << num(x) << "\" y1=\"" << num(bottom) << "\" x2=\"" << num(x) << "\" y2=\"" << num(bottom + 5)
-          << "\" stroke=\"#333\"/>";
-      out << "<text x=\"" << num(x) << "\" y=\"" << num(bottom + 17) << "\" font-size=\"11\" text-anchor=\"middle\">"
+        out << "<line x1=\"" << num(x) << "\" y1=\"" << num(top) << "\" x2=\"" << num(x) << "\" y2=\""
+            << num(bottom) << "\" stroke=\"#ddd\"/>";
+      out << "<line x1=\"" << num(x) << "\" y1=\"" << num(bottom) << "\" x2=\"" << num(x) << "\" y2=\""
+          << num(bottom + 5) << "\" stroke=\"#333\"/>";
+      out << "<text x=\"" << num(x) << "\" y=\"" << num(bottom + 17)
+          << "\" font-size=\"11\" text-anchor=\"middle\">"
           << xml_escape(spec.x_tick ? spec.x_tick(d) : superscript_power(d)) << "</text>\n";
       if (d < xr.hi)
         for (int k = 2; k <= 9; ++k) {
@@ -262,17 +279,18 @@ std::string render_svg(const PlotSpec& spec) {
     for (int d = yr.lo; d <= yr.hi; ++d) {
       const double y = py(std::pow(10.0, d));
       if (d > yr.lo && d < yr.hi)
-        out << "<line x1=\"" << num(left) << "\" y1=\"" << num(y) << "\" x2=\"" << num(right) << "\" y2=\"" << num(y)
-            << "\" stroke=\"#ddd\"/>";
-      out << "<line x1=\"" << num(left - 5) << "\" y1=\"" << num(y) << "\" x2=\"" << num(left) << "\" y2=\"" << num(y)
-          << "\" stroke=\"#333\"/>";
-      out << "<text x=\"" << num(left - 8) << "\" y=\"" << num(y + 4) << "\" font-size=\"11\" text-anchor=\"end\">"
+        out << "<line x1=\"" << num(left) << "\" y1=\"" << num(y) << "\" x2=\"" << num(right) << "\" y2=\""
+            << num(y) << "\" stroke=\"#ddd\"/>";
+      out << "<line x1=\"" << num(left - 5) << "\" y1=\"" << num(y) << "\" x2=\"" << num(left) << "\" y2=\""
+          << num(y) << "\" stroke=\"#333\"/>";
+      out << "<text x=\"" << num(left - 8) << "\" y=\"" << num(y + 4)
+          << "\" font-size=\"11\" text-anchor=\"end\">"
           << xml_escape(spec.y_tick ? spec.y_tick(d) : superscript_power(d)) << "</text>\n";
       if (d < yr.hi)
         for (int k = 2; k <= 9; ++k) {
           const double ym = py(k * std::pow(10.0, d));
-          out << "<line x1=\"" << num(left - 3) << "\" y1=\"" << num(ym) << "\" x2=\"" << num(left) << "\" y2=\""
-              << num(ym) << "\" stroke=\"#333\"/>";
+          out << "<line x1=\"" << num(left - 3) << "\" y1=\"" << num(ym) << "\" x2=\"" << num(left)
+              << "\" y2=\"" << num(ym) << "\" stroke=\"#333\"/>";
         }
     }
     if (row == rows - 1)
@@ -280,13 +298,14 @@ std::string render_svg(const PlotSpec& spec) {
           << "\" font-size=\"12\" text-anchor=\"middle\">" << xml_escape(spec.x_label) << "</text>\n";
     if (col == 0) {
       const double cx = left - 50, cy = 0.5 * (top + bottom);
-      out << "<text x=\"" << num(cx) << "\" y=\"" << num(cy) << "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 "
-          << num(cx) << " " << num(cy) << ")\">" << xml_escape(spec.y_label) << "</text>\n";
+      out << "<text x=\"" << num(cx) << "\" y=\"" << num(cy)
+          << "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 " << num(cx) << " " << num(cy)
+          << ")\">" << xml_escape(spec.y_label) << "</text>\n";
     }
     if (p.floor) {
       const double y = py(*p.floor);
-      out << "<line x1=\"" << num(left) << "\" y1=\"" << num(y) << "\" x2=\"" << num(right) << "\" y2=\"" << num(y)
-          << "\" stroke=\"#888\" stroke-width=\"1.4\" stroke-dasharray=\"5,3\"/>\n";
+      out << "<line x1=\"" << num(left) << "\" y1=\"" << num(y) << "\" x2=\"" << num(right) << "\" y2=\""
+          << num(y) << "\" stroke=\"#888\" stroke-width=\"1.4\" stroke-dasharray=\"5,3\"/>\n";
     }
     // Points, then the front over them.
     for (const PlotPoint& q : p.points) {
@@ -297,7 +316,8 @@ std::string render_svg(const PlotSpec& spec) {
       out << "</g>\n";
     }
     if (!p.front.empty()) {
-      out << "<polyline fill=\"none\" stroke=\"black\" stroke-width=\"1.6\" stroke-linejoin=\"round\" points=\"";
+      out << "<polyline fill=\"none\" stroke=\"black\" stroke-width=\"1.6\" stroke-linejoin=\"round\" "
+             "points=\"";
       for (const auto& [x, y] : p.front) out << num(px(x)) << "," << num(py(y)) << " ";
       out << "\"/>\n";
       for (const auto& [x, y] : p.front) ring(out, px(x), py(y)), out << "\n";

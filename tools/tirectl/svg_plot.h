@@ -39,10 +39,10 @@ struct PlotSpec {
   std::vector<PlotPanel> panels;  // row by row
   // Panels in one row share their y range (a row is one scenario); all share the x range.
   bool share_y_by_row = true;
-  std::vector<std::string> colors;        // CSS colours, by PlotPoint::color
-  std::vector<std::string> color_labels;  // legend text for each colour
-  std::string color_title;                // legend heading, e.g. "substeps"
-  std::vector<std::string> marker_labels; // legend text for each marker
+  std::vector<std::string> colors;         // CSS colours, by PlotPoint::color
+  std::vector<std::string> color_labels;   // legend text for each colour
+  std::string color_title;                 // legend heading, e.g. "substeps"
+  std::vector<std::string> marker_labels;  // legend text for each marker
   std::string marker_title;
   std::string front_label = "Pareto front";
   std::string floor_label = "reference's own error";

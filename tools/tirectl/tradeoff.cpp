@@ -8,9 +8,11 @@
 // DIR/tradeoff.csv, DIR/tradeoff.svg (error against cost, log–log, one panel per scenario and
 // resolution, Pareto front marked) and DIR/summary.txt
 // (reference checks, fronts, recommendations, and the numbers for the two published claims).
-#include <CLI/CLI.hpp>
+#include "tradeoff.h"
+
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -27,10 +29,9 @@
 
 #include "cli_numbers.h"
 #include "commands.h"
+#include "svg_plot.h"
 #include "tire/io/file_io.h"
 #include "tire/tire/solver_config.h"
-#include "svg_plot.h"
-#include "tradeoff.h"
 #include "tradeoff_scenarios.h"
 
 namespace tirectl {
@@ -78,7 +79,8 @@ std::string fmt(double v, int digits = 4) {
 }
 
 std::string label(const SolverSettings& s) {
-  std::string l = std::to_string(s.substeps) + "x" + std::to_string(s.iterations) + "x" + std::to_string(s.segments);
+  std::string l =
+      std::to_string(s.substeps) + "x" + std::to_string(s.iterations) + "x" + std::to_string(s.segments);
   if (s.tunnel_clamp != 1.0) l += " clamp " + fmt(s.tunnel_clamp, 3);
   return l;
 }
@@ -88,10 +90,14 @@ std::string length_text(double m) {
   if (!std::isfinite(m)) return "n/a";
   const double a = std::abs(m);
   char buf[40];
-  if (a >= 0.1) std::snprintf(buf, sizeof buf, "%.3g m", m);
-  else if (a >= 0.01) std::snprintf(buf, sizeof buf, "%.3g cm", m * 100);
-  else if (a >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else std::snprintf(buf, sizeof buf, "%.3g µm", m * 1e6);
+  if (a >= 0.1)
+    std::snprintf(buf, sizeof buf, "%.3g m", m);
+  else if (a >= 0.01)
+    std::snprintf(buf, sizeof buf, "%.3g cm", m * 100);
+  else if (a >= 1e-3)
+    std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
+  else
+    std::snprintf(buf, sizeof buf, "%.3g µm", m * 1e6);
   return buf;
 }
 
@@ -106,7 +112,10 @@ std::string us_text(double us) {
 class Progress {
  public:
   Progress(std::size_t total, bool enabled, double total_weight)
-      : total_(total), total_weight_(total_weight), enabled_(enabled), tty_(enabled && isatty(STDERR_FILENO) == 1) {}
+      : total_(total),
+        total_weight_(total_weight),
+        enabled_(enabled),
+        tty_(enabled && isatty(STDERR_FILENO) == 1) {}
   void update(std::size_t done, double done_weight, const std::string& what) {
     if (!enabled_) return;
     const double f = total_weight_ > 0.0 ? std::clamp(done_weight / total_weight_, 0.0, 1.0) : 1.0;
@@ -163,10 +172,11 @@ std::string render_plot(const std::vector<Row>& rows, const std::vector<Tradeoff
                         const TradeoffOptions& o) {
   PlotSpec spec;
   spec.title = "tirectl tradeoff: centroid trajectory error against cost";
-  spec.subtitle = "error = RMS distance of the tire's centroid from a converged reference run of the same scene and "
-                  "tire (its substeps x iterations in each title)\ncost = µs of World::step per 1/60 s tick (each tick's "
-                  "median over the repeats); tire material damping " +
-                  fmt(o.material_damping, 3) + " s; one row per scene, one column per tire resolution";
+  spec.subtitle =
+      "error = RMS distance of the tire's centroid from a converged reference run of the same scene and "
+      "tire (its substeps x iterations in each title)\ncost = µs of World::step per 1/60 s tick (each tick's "
+      "median over the repeats); tire material damping " +
+      fmt(o.material_damping, 3) + " s; one row per scene, one column per tire resolution";
   spec.x_label = "cost (µs per step)";
   spec.y_label = "centroid error";
   spec.columns = static_cast<int>(o.segments.size());
@@ -189,8 +199,8 @@ std::string render_plot(const std::vector<Row>& rows, const std::vector<Tradeoff
     const std::string& scenario = sc.name;
     for (const int seg : o.segments) {
       PlotPanel panel;
-      panel.title = scenario + ", " + std::to_string(seg) + " segments (ref. " + std::to_string(sc.ref_substeps) + "x" +
-                    std::to_string(sc.ref_iterations) + ")";
+      panel.title = scenario + ", " + std::to_string(seg) + " segments (ref. " +
+                    std::to_string(sc.ref_substeps) + "x" + std::to_string(sc.ref_iterations) + ")";
       std::vector<const Row*> sweep;
       for (const Row& r : rows) {
         if (r.scenario != scenario || r.s.segments != seg) continue;
@@ -218,14 +228,16 @@ std::string render_plot(const std::vector<Row>& rows, const std::vector<Tradeoff
 
 std::string render_csv(const std::vector<Row>& rows) {
   std::ostringstream out;
-  out << "scenario,substeps,iterations,segments,us_per_step,error,relative_error,error_vs_finest,peak_strain,area_error,"
+  out << "scenario,substeps,iterations,segments,us_per_step,error,relative_error,error_vs_finest,peak_strain,"
+         "area_error,"
          "energy_drift,deflection,stiffness,tunnel_clamp,material_damping,sweeps,resets,kind\n";
   for (const Row& r : rows)
     out << r.scenario << "," << r.s.substeps << "," << r.s.iterations << "," << r.s.segments << ","
-        << fmt(r.us_per_step) << "," << fmt(r.error) << "," << fmt(r.relative_error()) << "," << fmt(r.error_vs_finest) << "," << fmt(r.peak_strain)
-        << "," << fmt(r.area_error) << "," << fmt(r.energy_drift) << "," << fmt(r.deflection) << ","
-        << fmt(r.stiffness, 5) << "," << fmt(r.s.tunnel_clamp) << "," << fmt(r.s.material_damping) << "," << r.sweeps() << "," << r.resets << ","
-        << r.kind << "\n";
+        << fmt(r.us_per_step) << "," << fmt(r.error) << "," << fmt(r.relative_error()) << ","
+        << fmt(r.error_vs_finest) << "," << fmt(r.peak_strain) << "," << fmt(r.area_error) << ","
+        << fmt(r.energy_drift) << "," << fmt(r.deflection) << "," << fmt(r.stiffness, 5) << ","
+        << fmt(r.s.tunnel_clamp) << "," << fmt(r.s.material_damping) << "," << r.sweeps() << "," << r.resets
+        << "," << r.kind << "\n";
   return out.str();
 }
 
@@ -245,7 +257,8 @@ const Row* reference_row(const std::vector<Row>& rows, const std::string& scenar
 }
 
 std::string render_summary(const std::vector<Row>& rows, const std::vector<TradeoffScenario>& selected,
-                           const TradeoffOptions& o, const std::map<std::pair<std::string, int>, double>& best_sweep) {
+                           const TradeoffOptions& o,
+                           const std::map<std::pair<std::string, int>, double>& best_sweep) {
   std::ostringstream out;
   char line[512];
   const double clamp = o.tunnel_clamp.front();
@@ -258,8 +271,8 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
   out << "\nReferences (substeps x iterations), each checked against one with half the substeps; the\n"
          "reference's own error is the RMS centroid distance between the two (an upper bound if the error\n"
          "falls at least linearly with the substep):\n";
-  std::snprintf(line, sizeof line, "  %-9s %8s %10s %12s %14s %18s %8s\n", "scenario", "segments", "reference",
-                "us/step", "ref. error", "best sweep error", "ratio");
+  std::snprintf(line, sizeof line, "  %-9s %8s %10s %12s %14s %18s %8s\n", "scenario", "segments",
+                "reference", "us/step", "ref. error", "best sweep error", "ratio");
   out << line;
   int unconverged = 0;
   for (const TradeoffScenario& sc : selected)
@@ -278,7 +291,8 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
     }
   if (unconverged)
     out << "  " << unconverged
-        << " reference(s) are not at least 3 times below the best sweep setting's error: there, the smallest\n"
+        << " reference(s) are not at least 3 times below the best sweep setting's error: there, the "
+           "smallest\n"
            "  errors measure the reference as much as the setting.\n";
 
   out << "\nPareto fronts (cheapest first; setting = substeps x iterations x segments):\n";
@@ -296,8 +310,10 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
   // Recommended settings: per tire resolution, the cheapest setting (mean µs per step over the
   // scenarios) whose error in every scenario is within max(absolute, relative × the reference's
   // motion). A scenario no setting of the sweep brings within its bound cannot decide and is named.
-  out << "\nRecommended settings: per tire resolution, the cheapest setting (mean cost over the scenarios) whose\n"
-         "error in each deciding scenario is within max(absolute bound, relative bound x how far the reference's tire\n"
+  out << "\nRecommended settings: per tire resolution, the cheapest setting (mean cost over the scenarios) "
+         "whose\n"
+         "error in each deciding scenario is within max(absolute bound, relative bound x how far the "
+         "reference's tire\n"
          "moves, 3 times the reference's own error). Bounces (";
   {
     std::string sep;
@@ -309,9 +325,10 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
     const char* name;
     double absolute, relative;
   };
-  for (const Class& cls : {Class{"game", o.game_error, o.game_relative}, Class{"accuracy", o.accurate_error, o.accurate_relative}}) {
-    out << "  " << cls.name << " (within " << length_text(cls.absolute) << " or " << fmt(100 * cls.relative, 3)
-        << "% of the motion):\n";
+  for (const Class& cls : {Class{"game", o.game_error, o.game_relative},
+                           Class{"accuracy", o.accurate_error, o.accurate_relative}}) {
+    out << "  " << cls.name << " (within " << length_text(cls.absolute) << " or "
+        << fmt(100 * cls.relative, 3) << "% of the motion):\n";
     for (const int seg : o.segments) {
       std::map<std::string, double> bound;
       std::vector<std::string> deciding, undecided;
@@ -340,7 +357,8 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
               break;
             }
             sum += r->us_per_step;
-            if (std::find(deciding.begin(), deciding.end(), sc) != deciding.end() && !(r->error <= bound[sc])) ok = false;
+            if (std::find(deciding.begin(), deciding.end(), sc) != deciding.end() && !(r->error <= bound[sc]))
+              ok = false;
           }
           const double mean = sum / static_cast<double>(scenarios.size());
           if (ok && !deciding.empty() && mean < best_us) best_us = mean, best = std::pair{ss, it};
@@ -356,7 +374,8 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
           const bool decides = std::find(deciding.begin(), deciding.end(), sc) != deciding.end();
           std::string note;
           if (!decides) {
-            const auto sc_it = std::find_if(selected.begin(), selected.end(), [&](const auto& x) { return x.name == sc; });
+            const auto sc_it =
+                std::find_if(selected.begin(), selected.end(), [&](const auto& x) { return x.name == sc; });
             note = sc_it->decides ? " (no setting within " + length_text(bound[sc]) + ")"
                                   : " (" + fmt(100.0 * r->relative_error(), 2) + "% of the motion)";
           } else if (!(r->error <= bound[sc])) {
@@ -367,17 +386,19 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
         return std::to_string(ss) + "x" + std::to_string(it) + ", " +
                us_text(sum / static_cast<double>(scenarios.size())) + " per step;" + errors;
       };
-      out << "    " << std::setw(2) << seg << " segments: " << (best ? describe(best->first, best->second) : "none in the sweep")
-          << "\n";
+      out << "    " << std::setw(2) << seg
+          << " segments: " << (best ? describe(best->first, best->second) : "none in the sweep") << "\n";
       const tire::SolverConfig engine_default;
-      if (cls.relative == o.game_relative && (!best || best->first != engine_default.substeps ||
-                                              best->second != engine_default.iterations))
-        out << "      (the engine's default " << describe(engine_default.substeps, engine_default.iterations) << ")\n";
+      if (cls.relative == o.game_relative &&
+          (!best || best->first != engine_default.substeps || best->second != engine_default.iterations))
+        out << "      (the engine's default " << describe(engine_default.substeps, engine_default.iterations)
+            << ")\n";
     }
   }
 
   // Claim 1 (Macklin et al. 2016): stiffness independent of iterations and time step.
-  out << "\nClaim 1, stiffness = load / static deflection, relative to the reference's (1.00 = same stiffness):\n";
+  out << "\nClaim 1, stiffness = load / static deflection, relative to the reference's (1.00 = same "
+         "stiffness):\n";
   for (const TradeoffScenario& scenario : selected) {
     if (!scenario.deflection) continue;
     const std::string& sc = scenario.name;
@@ -405,8 +426,8 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
 
   // Claim 2 (Macklin et al. 2019): n substeps x 1 iteration beat 1 substep x n iterations.
   out << "\nClaim 2, n substeps x 1 iteration against 1 substep x n iterations (same n sweeps per step):\n";
-  std::snprintf(line, sizeof line, "  %-9s %4s %4s %14s %10s %14s %10s %10s\n", "scenario", "segs", "n", "error nx1",
-                "us nx1", "error 1xn", "us 1xn", "1xn/nx1");
+  std::snprintf(line, sizeof line, "  %-9s %4s %4s %14s %10s %14s %10s %10s\n", "scenario", "segs", "n",
+                "error nx1", "us nx1", "error 1xn", "us 1xn", "1xn/nx1");
   out << line;
   int small_wins = 0, large_wins = 0;
   for (const std::string& sc : scenarios)
@@ -417,20 +438,21 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
         const Row* b = find_row(rows, sc, 1, n, seg, clamp);
         if (!a || !b) continue;
         (a->error < b->error ? small_wins : large_wins)++;
-        std::snprintf(line, sizeof line, "  %-9s %4d %4d %14s %10.3g %14s %10.3g %10.3g\n", sc.c_str(), seg, n,
-                      length_text(a->error).c_str(), a->us_per_step, length_text(b->error).c_str(), b->us_per_step,
-                      b->error / a->error);
+        std::snprintf(line, sizeof line, "  %-9s %4d %4d %14s %10.3g %14s %10.3g %10.3g\n", sc.c_str(), seg,
+                      n, length_text(a->error).c_str(), a->us_per_step, length_text(b->error).c_str(),
+                      b->us_per_step, b->error / a->error);
         out << line;
       }
-  out << "  n x 1 has the smaller error in " << small_wins << " of " << small_wins + large_wins << " pairs.\n";
+  out << "  n x 1 has the smaller error in " << small_wins << " of " << small_wins + large_wins
+      << " pairs.\n";
 
   // The same at equal measured cost: a substep costs more than a sweep (prediction, contacts,
   // velocities), so n x 1 is set against the 1 x m curve at n x 1's cost, interpolated log–log
   // between the two 1 x m settings around it.
   out << "\nClaim 2 at equal measured cost: n x 1 against 1 substep x m iterations at the same µs per step\n"
          "(the 1 x m error interpolated log-log between the 1 x m settings that bracket the cost):\n";
-  std::snprintf(line, sizeof line, "  %-9s %4s %6s %14s %10s %11s %16s %10s\n", "scenario", "segs", "nx1", "error",
-                "us", "1xm around", "1xm error there", "ratio");
+  std::snprintf(line, sizeof line, "  %-9s %4s %6s %14s %10s %11s %16s %10s\n", "scenario", "segs", "nx1",
+                "error", "us", "1xm around", "1xm error there", "ratio");
   out << line;
   int wins = 0, losses = 0, undecided = 0;
   for (const std::string& sc : scenarios)
@@ -440,22 +462,26 @@ std::string render_summary(const std::vector<Row>& rows, const std::vector<Trade
         if (r.kind == "sweep" && r.scenario == sc && r.s.segments == seg && r.s.substeps == 1 &&
             r.s.tunnel_clamp == clamp)
           curve.push_back(&r);
-      std::sort(curve.begin(), curve.end(), [](const Row* x, const Row* y) { return x->us_per_step < y->us_per_step; });
+      std::sort(curve.begin(), curve.end(),
+                [](const Row* x, const Row* y) { return x->us_per_step < y->us_per_step; });
       for (const int n : o.substeps) {
         if (n < 2) continue;
         const Row* a = find_row(rows, sc, n, 1, seg, clamp);
         if (!a) continue;
-        const auto hi = std::find_if(curve.begin(), curve.end(), [&](const Row* r) { return r->us_per_step >= a->us_per_step; });
+        const auto hi = std::find_if(curve.begin(), curve.end(),
+                                     [&](const Row* r) { return r->us_per_step >= a->us_per_step; });
         if (hi == curve.end() || hi == curve.begin()) {
           ++undecided;
           continue;
         }
         const Row* lo_row = *(hi - 1);
         const Row* hi_row = *hi;
-        const double f = std::log(a->us_per_step / lo_row->us_per_step) / std::log(hi_row->us_per_step / lo_row->us_per_step);
+        const double f = std::log(a->us_per_step / lo_row->us_per_step) /
+                         std::log(hi_row->us_per_step / lo_row->us_per_step);
         const double e = std::exp(std::log(lo_row->error) + f * std::log(hi_row->error / lo_row->error));
         (a->error < e ? wins : losses)++;
-        const std::string around = std::to_string(lo_row->s.iterations) + "-" + std::to_string(hi_row->s.iterations);
+        const std::string around =
+            std::to_string(lo_row->s.iterations) + "-" + std::to_string(hi_row->s.iterations);
         std::snprintf(line, sizeof line, "  %-9s %4d %6s %14s %10.3g %11s %16s %10.3g\n", sc.c_str(), seg,
                       (std::to_string(n) + "x1").c_str(), length_text(a->error).c_str(), a->us_per_step,
                       around.c_str(), length_text(e).c_str(), e / a->error);
@@ -474,43 +500,50 @@ CLI::App* add_tradeoff_command(CLI::App& app, TradeoffOptions& options) {
   using tire_tools::number_in;
   const tire::Range kPositive{0, tire_tools::kUnbounded, true, true};
   CLI::App* cmd = app.add_subcommand(
-      "tradeoff", "Measure error against cost over substeps, iterations and segments; writes DIR/tradeoff.csv and .svg");
+      "tradeoff",
+      "Measure error against cost over substeps, iterations and segments; writes DIR/tradeoff.csv and .svg");
   cmd->add_option("--substeps", options.substeps, "Substeps to sweep, e.g. 1,2,4,8")
-      ->delimiter(',')->transform(integer_in({1, 256}));
+      ->delimiter(',')
+      ->transform(integer_in({1, 256}));
   cmd->add_option("--iterations", options.iterations, "Iterations to sweep, e.g. 1,2,4")
-      ->delimiter(',')->transform(integer_in({1, 64}));
+      ->delimiter(',')
+      ->transform(integer_in({1, 64}));
   cmd->add_option("--segments", options.segments, "Tire segments to sweep, e.g. 12,28,64")
-      ->delimiter(',')->transform(integer_in({6, 256}));
+      ->delimiter(',')
+      ->transform(integer_in({6, 256}));
   cmd->add_option("--tunnel-clamp", options.tunnel_clamp,
-                           "Anti-tunneling clamps to sweep (rest segments per substep); the first is the main one")
-      ->delimiter(',')->check(number_in({0.1, 1000}));
+                  "Anti-tunneling clamps to sweep (rest segments per substep); the first is the main one")
+      ->delimiter(',')
+      ->check(number_in({0.1, 1000}));
   cmd->add_option("--max-sweeps", options.max_sweeps,
-                           "Skip settings with substeps x iterations above this (default 512)")
+                  "Skip settings with substeps x iterations above this (default 512)")
       ->transform(integer_in({1, 65536}));
-  cmd->add_option("--scenarios", options.scenarios, "Only these scenarios: rest,rest-soft,drop,slope,crush,impact")
+  cmd->add_option("--scenarios", options.scenarios,
+                  "Only these scenarios: rest,rest-soft,drop,slope,crush,impact")
       ->delimiter(',');
-  cmd->add_option("--repeats", options.repeats, "Timed runs per setting; each tick's median over them is used (default 3)")
+  cmd->add_option("--repeats", options.repeats,
+                  "Timed runs per setting; each tick's median over them is used (default 3)")
       ->transform(integer_in({1, 1000}));
   cmd->add_option("--ref-substeps", options.ref_substeps,
-                           "Substeps of the converged reference (default: each scenario's own)")
+                  "Substeps of the converged reference (default: each scenario's own)")
       ->transform(integer_in({1, 65536}));
   cmd->add_option("--ref-iterations", options.ref_iterations,
-                           "Iterations of the converged reference (default: each scenario's own)")
+                  "Iterations of the converged reference (default: each scenario's own)")
       ->transform(integer_in({1, 64}));
   cmd->add_option("--material-damping", options.material_damping,
-                           "The tire's material damping time (s) in every run (default 1e-4; TireSpec's is 5e-3)")
+                  "The tire's material damping time (s) in every run (default 1e-4; TireSpec's is 5e-3)")
       ->check(number_in({0, 1}));
   cmd->add_option("--game-error", options.game_error,
-                           "A game setting's centroid error bound in each scenario (m; default 0.025)...")
+                  "A game setting's centroid error bound in each scenario (m; default 0.025)...")
       ->check(number_in(kPositive));
   cmd->add_option("--game-relative", options.game_relative,
-                           "...or this fraction of how far the tire moves, if larger (default 0.1)")
+                  "...or this fraction of how far the tire moves, if larger (default 0.1)")
       ->check(number_in(kPositive));
   cmd->add_option("--accurate-error", options.accurate_error,
-                           "An accurate setting's centroid error bound (m; default 0.0025)...")
+                  "An accurate setting's centroid error bound (m; default 0.0025)...")
       ->check(number_in(kPositive));
   cmd->add_option("--accurate-relative", options.accurate_relative,
-                           "...or this fraction of how far the tire moves, if larger (default 0.01)")
+                  "...or this fraction of how far the tire moves, if larger (default 0.01)")
       ->check(number_in(kPositive));
   cmd->add_option("--out", options.out, "Output directory (created if missing)");
   cmd->add_flag("!--no-progress", options.progress, "No progress bar on stderr");
@@ -543,13 +576,15 @@ int tradeoff(const TradeoffOptions& options) {
     }
   }
   if (o.substeps.empty() || o.iterations.empty() || o.segments.empty() || o.tunnel_clamp.empty()) {
-    std::cerr << "tirectl tradeoff: --substeps, --iterations, --segments and --tunnel-clamp need at least one value\n";
+    std::cerr << "tirectl tradeoff: --substeps, --iterations, --segments and --tunnel-clamp need at least "
+                 "one value\n";
     return 2;
   }
   // The scenarios to run, in the table's order, with their references.
   std::vector<TradeoffScenario> selected;
   for (const TradeoffScenario& sc : tradeoff_scenarios()) {
-    if (!o.scenarios.empty() && std::find(o.scenarios.begin(), o.scenarios.end(), sc.name) == o.scenarios.end())
+    if (!o.scenarios.empty() &&
+        std::find(o.scenarios.begin(), o.scenarios.end(), sc.name) == o.scenarios.end())
       continue;
     selected.push_back(sc);
     if (o.ref_substeps > 0) selected.back().ref_substeps = o.ref_substeps;
@@ -580,7 +615,7 @@ int tradeoff(const TradeoffOptions& options) {
     SolverSettings settings;
     std::string kind;  // reference | check | sweep
     RunMeasure measure;
-    double weight;     // expected cost, for the progress bar
+    double weight;  // expected cost, for the progress bar
   };
   std::vector<Job> jobs;
   for (const TradeoffScenario& sc : selected)
@@ -621,7 +656,8 @@ int tradeoff(const TradeoffOptions& options) {
     // Longest first, so that the big references do not end up last on one core.
     std::vector<std::size_t> order(jobs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return jobs[a].weight > jobs[b].weight; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return jobs[a].weight > jobs[b].weight; });
     auto worker = [&] {
       for (std::size_t k; (k = next.fetch_add(1)) < order.size();) {
         Job& job = jobs[order[k]];
@@ -672,8 +708,8 @@ int tradeoff(const TradeoffOptions& options) {
     if (job.kind == "check") continue;
     Row row{name, job.settings, job.kind};
     fill(row, *job.scenario, job.measure);
-    row.motion = rms_distance(ref->measure.centroid,
-                              std::vector<tire::Vec2>(ref->measure.centroid.size(), ref->measure.centroid.front()));
+    row.motion = rms_distance(ref->measure.centroid, std::vector<tire::Vec2>(ref->measure.centroid.size(),
+                                                                             ref->measure.centroid.front()));
     row.error_vs_finest = rms_distance(job.measure.centroid, finest_ref->measure.centroid);
     if (job.kind == "reference") {
       row.error = rms_distance(job.measure.centroid, find_job(name, seg, "check")->measure.centroid);

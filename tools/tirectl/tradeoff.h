@@ -14,15 +14,15 @@ namespace tirectl {
 struct TradeoffOptions {
   std::vector<int> substeps{1, 2, 4, 8, 16, 32, 64};
   std::vector<int> iterations{1, 2, 4, 8, 16};
-  int max_sweeps = 512;                 // skip settings with substeps × iterations above this
+  int max_sweeps = 512;  // skip settings with substeps × iterations above this
   std::vector<int> segments{12, 28, 64};
-  std::vector<int> extra_iterations;    // filled in: 1 x n settings for claim 2 (not an option)
+  std::vector<int> extra_iterations;  // filled in: 1 x n settings for claim 2 (not an option)
   std::vector<double> tunnel_clamp{1.0};
   std::vector<std::string> scenarios;  // empty: all
-  int repeats = 3;                      // timed runs per setting; each tick's median is taken
-  int ref_substeps = 0;                 // the converged reference run; 0: each scenario's own
+  int repeats = 3;                     // timed runs per setting; each tick's median is taken
+  int ref_substeps = 0;                // the converged reference run; 0: each scenario's own
   int ref_iterations = 0;
-  double material_damping = 1e-4;       // the tire's τ (s) in every run (TireSpec{} has 5e-3: README)
+  double material_damping = 1e-4;  // the tire's τ (s) in every run (TireSpec{} has 5e-3: README)
   // A recommended setting keeps each scenario's centroid error within max(absolute (m),
   // relative × how far the reference's tire moves).
   double game_error = 0.025;

@@ -71,8 +71,8 @@ std::vector<TradeoffScenario> make_scenarios() {
   const double weight = tire::TireSpec{}.mass * kGravity;
 
   {
-    TradeoffScenario s = scenario("rest", "tire set down on flat ground, settles under its own weight (3 s)", 180,
-                                  [](tire::World& world, const tire::TireSpec& base) {
+    TradeoffScenario s = scenario("rest", "tire set down on flat ground, settles under its own weight (3 s)",
+                                  180, [](tire::World& world, const tire::TireSpec& base) {
                                     add_ground(world);
                                     world.add_tire(placed(base, {0.0, rest_height(base.segments)}));
                                   });
@@ -84,8 +84,8 @@ std::vector<TradeoffScenario> make_scenarios() {
   }
   {
     TradeoffScenario s = scenario(
-        "rest-soft", "as rest, with every compliance 100 times the default (a 100 times softer tire) (3 s)", 180,
-        [](tire::World& world, const tire::TireSpec& base) {
+        "rest-soft", "as rest, with every compliance 100 times the default (a 100 times softer tire) (3 s)",
+        180, [](tire::World& world, const tire::TireSpec& base) {
           add_ground(world);
           tire::TireSpec t = placed(base, {0.0, rest_height(base.segments)});
           t.compliance.outer *= kSoftFactor;
@@ -101,8 +101,8 @@ std::vector<TradeoffScenario> make_scenarios() {
     list.push_back(s);
   }
   {
-    TradeoffScenario s = scenario("drop", "tread released 1.5 m above flat ground, falls and bounces (3 s)", 180,
-                                  [](tire::World& world, const tire::TireSpec& base) {
+    TradeoffScenario s = scenario("drop", "tread released 1.5 m above flat ground, falls and bounces (3 s)",
+                                  180, [](tire::World& world, const tire::TireSpec& base) {
                                     add_ground(world);
                                     world.add_tire(placed(base, {0.0, 1.5 + rest_height(base.segments)}));
                                   });
@@ -112,8 +112,8 @@ std::vector<TradeoffScenario> make_scenarios() {
   {
     const double slope = kSlopeDegrees * std::numbers::pi / 180.0;
     TradeoffScenario s = scenario(
-        "slope", "tire released at rest on a 20 degree slope (a rotated static Box2D box), rolls down (2 s)", 120,
-        [slope](tire::World& world, const tire::TireSpec& base) {
+        "slope", "tire released at rest on a 20 degree slope (a rotated static Box2D box), rolls down (2 s)",
+        120, [slope](tire::World& world, const tire::TireSpec& base) {
           const tire::Vec2 down{std::cos(slope), -std::sin(slope)};
           const tire::Vec2 normal{std::sin(slope), std::cos(slope)};
           tire::PropSpec p;
@@ -133,8 +133,8 @@ std::vector<TradeoffScenario> make_scenarios() {
   }
   {
     TradeoffScenario s = scenario(
-        "crush", "a 300 kg Box2D box dropped 2 cm onto a resting tire, in a slot that keeps it level (3 s)", 180,
-        [](tire::World& world, const tire::TireSpec& base) {
+        "crush", "a 300 kg Box2D box dropped 2 cm onto a resting tire, in a slot that keeps it level (3 s)",
+        180, [](tire::World& world, const tire::TireSpec& base) {
           add_ground(world);
           // A slot a little wider than the box keeps it from tipping off the round tire.
           const double gap = 0.5 * kCrushBoxSize.x + kCrushClearance;
@@ -160,16 +160,16 @@ std::vector<TradeoffScenario> make_scenarios() {
     list.push_back(s);
   }
   {
-    TradeoffScenario s = scenario(
-        "impact", "tire thrown at 20 m/s into a box wall 5.5 m away, bounces back and lands (1.5 s)", 90,
-        [](tire::World& world, const tire::TireSpec& base) {
-          add_ground(world);
-          world.add_obstacle(box({6.0, 0.0}, {7.0, 4.0}));
-          tire::TireSpec t = placed(base, {0.0, 1.2});
-          t.velocity = {20.0, 0.0};
-          t.max_speed = 30.0;  // the default caps the hub at 15 m/s
-          world.add_tire(t);
-        });
+    TradeoffScenario s =
+        scenario("impact", "tire thrown at 20 m/s into a box wall 5.5 m away, bounces back and lands (1.5 s)",
+                 90, [](tire::World& world, const tire::TireSpec& base) {
+                   add_ground(world);
+                   world.add_obstacle(box({6.0, 0.0}, {7.0, 4.0}));
+                   tire::TireSpec t = placed(base, {0.0, 1.2});
+                   t.velocity = {20.0, 0.0};
+                   t.max_speed = 30.0;  // the default caps the hub at 15 m/s
+                   world.add_tire(t);
+                 });
     s.decides = false;
     list.push_back(s);
   }

@@ -56,9 +56,9 @@ struct RunMeasure {
   double area_error = 0.0;           // max over ticks of |area_ratio − pressure|
   double energy_start = 0.0;         // kinetic + gravitational of the tire and the dynamic props (J)
   double energy_end = 0.0;
-  double deflection = 0.0;           // averaged over the last half second; NaN for dynamic scenes
-  int resets = 0;                    // the engine's divergence guard fired this often
-  double us_per_step = 0.0;          // this run's mean cost of World::step alone (one run, informative)
+  double deflection = 0.0;   // averaged over the last half second; NaN for dynamic scenes
+  int resets = 0;            // the engine's divergence guard fired this often
+  double us_per_step = 0.0;  // this run's mean cost of World::step alone (one run, informative)
 };
 
 tire::World build_world(const TradeoffScenario& scenario, const SolverSettings& settings);

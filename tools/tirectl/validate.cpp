@@ -10,8 +10,10 @@ int validate(const std::vector<std::string>& files) {
   for (const std::string& file : files) {
     const tire::LevelLoad load = tire::load_level_file(file);
     for (const std::string& error : load.errors) std::cerr << error << "\n";
-    if (load.level) std::cout << file << ": ok\n";
-    else ++failed;
+    if (load.level)
+      std::cout << file << ": ok\n";
+    else
+      ++failed;
   }
   return failed == 0 ? 0 : 2;
 }

@@ -11,7 +11,8 @@
 namespace tire {
 
 // The whole file, or nullopt with `error` set ("no such file", "file is N bytes; the limit is M").
-std::optional<std::string> read_file(const std::filesystem::path& file, std::uintmax_t max_bytes, std::string& error);
+std::optional<std::string> read_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
+                                     std::string& error);
 
 // Writes `contents` to a temporary file beside `file`, flushes it to disk, then renames it over
 // `file`: a crash or kill at any moment leaves either the old file or the new one, whole.

@@ -4,8 +4,8 @@
 
 #include <cstdint>
 #include <initializer_list>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,15 +37,15 @@ class JsonReader {
   // reported and yields `fallback`.
   double number(const json& obj, const std::string& path, const char* key, double fallback,
                 const Range& range, const char* unit, bool required = false);
-  int integer(const json& obj, const std::string& path, const char* key, int fallback,
-              const Range& range, bool required = false);
+  int integer(const json& obj, const std::string& path, const char* key, int fallback, const Range& range,
+              bool required = false);
   bool boolean(const json& obj, const std::string& path, const char* key, bool fallback);
-  std::string string(const json& obj, const std::string& path, const char* key,
-                     const std::string& fallback, std::size_t max_length, bool required = false);
-  std::string choice(const json& obj, const std::string& path, const char* key,
-                     const std::string& fallback, std::initializer_list<std::string_view> options);
-  Vec2 vec2(const json& obj, const std::string& path, const char* key, Vec2 fallback,
-            const Range& component, const char* unit, bool required = false);
+  std::string string(const json& obj, const std::string& path, const char* key, const std::string& fallback,
+                     std::size_t max_length, bool required = false);
+  std::string choice(const json& obj, const std::string& path, const char* key, const std::string& fallback,
+                     std::initializer_list<std::string_view> options);
+  Vec2 vec2(const json& obj, const std::string& path, const char* key, Vec2 fallback, const Range& component,
+            const char* unit, bool required = false);
 
   static std::string describe(const json& value);  // short rendering for "got ..."
 

@@ -59,8 +59,7 @@ struct LevelLoad {
 };
 
 // Reads, parses (with the size and depth limits), applies overrides and validates a level file.
-LevelLoad load_level_file(const std::filesystem::path& file,
-                          const std::vector<std::string>& overrides = {});
+LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 // The same, from text already in memory; `file` only names it in messages.
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});

@@ -21,7 +21,8 @@
 
 namespace tire::detail {
 
-[[noreturn]] inline void assert_failed(const char* condition, const char* message, const char* file, int line) noexcept {
+[[noreturn]] inline void assert_failed(const char* condition, const char* message, const char* file,
+                                       int line) noexcept {
   std::fprintf(stderr, "%s:%d: TIRE_ASSERT(%s) failed: %s\n", file, line, condition, message);
   std::fflush(stderr);
   std::abort();
@@ -30,6 +31,7 @@ namespace tire::detail {
 }  // namespace tire::detail
 
 #define TIRE_ASSERT(condition, message) \
-  ((condition) ? static_cast<void>(0) : ::tire::detail::assert_failed(#condition, message, __FILE__, __LINE__))
+  ((condition) ? static_cast<void>(0)   \
+               : ::tire::detail::assert_failed(#condition, message, __FILE__, __LINE__))
 
 #endif

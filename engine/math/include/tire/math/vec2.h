@@ -18,9 +18,21 @@ struct Vec2 {
   constexpr Vec2 operator-() const { return {-x, -y}; }
   constexpr Vec2 operator*(double s) const { return {x * s, y * s}; }
   constexpr Vec2 operator/(double s) const { return {x / s, y / s}; }
-  constexpr Vec2& operator+=(Vec2 o) { x += o.x; y += o.y; return *this; }
-  constexpr Vec2& operator-=(Vec2 o) { x -= o.x; y -= o.y; return *this; }
-  constexpr Vec2& operator*=(double s) { x *= s; y *= s; return *this; }
+  constexpr Vec2& operator+=(Vec2 o) {
+    x += o.x;
+    y += o.y;
+    return *this;
+  }
+  constexpr Vec2& operator-=(Vec2 o) {
+    x -= o.x;
+    y -= o.y;
+    return *this;
+  }
+  constexpr Vec2& operator*=(double s) {
+    x *= s;
+    y *= s;
+    return *this;
+  }
   constexpr bool operator==(const Vec2&) const = default;
 };
 

@@ -31,7 +31,8 @@ class WorkerPool {
       fn(std::size_t{0}, n);
       return;
     }
-    dispatch(n, [](void* f, std::size_t b, std::size_t e) { (*static_cast<F*>(f))(b, e); }, &fn);
+    dispatch(
+        n, [](void* f, std::size_t b, std::size_t e) { (*static_cast<F*>(f))(b, e); }, &fn);
   }
 
  private:

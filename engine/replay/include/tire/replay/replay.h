@@ -26,11 +26,11 @@ struct ReplayInput {
   std::uint64_t tick = 0;
   std::optional<double> steer;  // [-1, 1], holds
   bool jump = false;
-  std::optional<Vec2> spawn;    // a default tire at this point (a mouse click)
-  std::optional<Vec2> grab;     // grab the tire at this point (mouse press)
-  double grab_radius = kGrabRadius;  // how near a tread particle the press must be (m)
-  std::optional<Vec2> drag;     // move the grab (mouse drag)
-  bool release = false;         // let go (mouse release)
+  std::optional<Vec2> spawn;           // a default tire at this point (a mouse click)
+  std::optional<Vec2> grab;            // grab the tire at this point (mouse press)
+  double grab_radius = kGrabRadius;    // how near a tread particle the press must be (m)
+  std::optional<Vec2> drag;            // move the grab (mouse drag)
+  bool release = false;                // let go (mouse release)
   std::optional<std::string> set_key;  // a tuning change: World::set_parameter(key, value)
   double set_value = 0.0;
   std::optional<Vec2> gravity;  // a tuning change of gravity
@@ -54,7 +54,7 @@ struct ReplayBox {
 struct ReplayExpect {
   std::optional<std::string> status;  // running | won | lost, at the end
   std::vector<ReplayCheckpoint> checkpoints;
-  std::optional<std::string> hash;    // after the last tick
+  std::optional<std::string> hash;  // after the last tick
   std::vector<ReplayBox> boxes;
 };
 
@@ -91,13 +91,14 @@ std::string replay_to_json(const Replay& replay);
 
 // Plays inputs into a level session. `held_steer` carries the steer between ticks. A restart
 // rebuilds the session from `level`.
-void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, double& held_steer, bool& jump);
+void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, double& held_steer,
+                 bool& jump);
 
 // What a replay run came to.
 struct ReplayOutcome {
   std::string status;
   std::string hash;
-  std::vector<ReplayCheckpoint> checkpoints;  // actual hashes at the expected checkpoint ticks
+  std::vector<ReplayCheckpoint> checkpoints;          // actual hashes at the expected checkpoint ticks
   std::optional<std::uint64_t> first_divergent_tick;  // first checkpoint whose hash differs
   std::optional<std::uint64_t> last_matching_tick;    // the one before it that agreed (or 0: the start)
   std::vector<std::string> failures;                  // every expectation that broke, in words

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "tire/math/aabb.h"
-#include "tire/xpbd/contact.h"
-#include "tire/rigid/prop_spec.h"
 #include "tire/math/vec2.h"
+#include "tire/rigid/prop_spec.h"
+#include "tire/xpbd/contact.h"
 
 namespace tire {
 
@@ -35,10 +35,11 @@ struct Pose {
 struct PropGeometry {
   PropShape shape = PropShape::box;
   std::vector<Vec2> vertices;  // polygon (box too): convex, CCW; chain: the polyline
-  std::vector<Vec2> normals;   // polygon: outward normal of edge i (v_i → v_i+1); chain: normal of edge i (out of the solid)
-  double radius = 0.0;         // circle
-  double thickness = 0.0;      // chain: how far behind the line still counts as inside (m)
-  bool loop = false;           // chain
+  // Polygon: outward normal of edge i (v_i → v_i+1); chain: normal of edge i (out of the solid).
+  std::vector<Vec2> normals;
+  double radius = 0.0;     // circle
+  double thickness = 0.0;  // chain: how far behind the line still counts as inside (m)
+  bool loop = false;       // chain
 
   // The shape of a prop in its frame. Box: centred rectangle of spec.size. Chain: one-sided, solid
   // on the right of the direction its points go (a closed chain: solid inside, either winding).

@@ -16,10 +16,10 @@
 #include <string_view>
 #include <vector>
 
+#include "tire/math/state_hash.h"
 #include "tire/rigid/obstacle.h"
 #include "tire/rigid/prop_geometry.h"
 #include "tire/rigid/prop_spec.h"
-#include "tire/math/state_hash.h"
 
 class b2World;
 class b2Body;
@@ -32,11 +32,11 @@ struct Prop {
   bool alive = true;
 
   // Tick state (doubles, read from Box2D at the start of the tick).
-  Pose start_pose;          // body origin at the start of the tick
-  Vec2 start_center;        // centre of mass, world, at the start of the tick
-  Vec2 local_center;        // centre of mass in the body frame
-  Vec2 velocity;            // of the centre of mass, including this tick's impulses so far
-  double omega = 0.0;       // angular velocity, including this tick's impulses so far
+  Pose start_pose;               // body origin at the start of the tick
+  Vec2 start_center;             // centre of mass, world, at the start of the tick
+  Vec2 local_center;             // centre of mass in the body frame
+  Vec2 velocity;                 // of the centre of mass, including this tick's impulses so far
+  double omega = 0.0;            // angular velocity, including this tick's impulses so far
   double inverse_mass = 0.0;     // 0: static or kinematic (infinite mass for the tire)
   double inverse_inertia = 0.0;  // about the centre of mass
   Vec2 impulse;                  // this tick's impulses from tires (N·s)
@@ -114,7 +114,8 @@ class RigidWorld {
 
   // Replaces `obstacles` and `props` with the indices of those whose (fattened) bounds overlap
   // `region`, ascending. Does not allocate once the vectors have grown to the largest answer.
-  void query(const Aabb& region, std::vector<std::uint32_t>& obstacles, std::vector<std::uint32_t>& props) const;
+  void query(const Aabb& region, std::vector<std::uint32_t>& obstacles,
+             std::vector<std::uint32_t>& props) const;
 
   // Start of a tick: read every prop's state, steer kinematic props along their paths.
   void begin_tick(double dt);

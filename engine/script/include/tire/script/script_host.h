@@ -8,11 +8,11 @@
 #include <optional>
 #include <string_view>
 
+#include "tire/math/vec2.h"
 #include "tire/rigid/prop_spec.h"
 #include "tire/script/script_spec.h"
 #include "tire/tire/tire.h"
 #include "tire/tire/tire_spec.h"
-#include "tire/math/vec2.h"
 
 namespace tire {
 

@@ -19,9 +19,9 @@
 #include <string_view>
 #include <vector>
 
+#include "tire/math/state_hash.h"
 #include "tire/script/script_host.h"
 #include "tire/script/script_spec.h"
-#include "tire/math/state_hash.h"
 
 namespace tire {
 

@@ -78,7 +78,6 @@ using Condition = std::variant<AtStart, AtTime, Every, RegionCrossing, PropEnter
 
 // ---- Actions ("do") -----------------------------------------------------------------------------
 
-
 struct SpawnTire {
   TireSpec tire;
 };

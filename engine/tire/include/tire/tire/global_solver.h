@@ -72,22 +72,22 @@ class GlobalSolver {
     double plane = 0.0;         // C(x) = normal·x − plane
     Vec2 surface_displacement;  // of the surface point over the substep (moving props)
     Vec2 surface_velocity;
-    std::int32_t prop = -1;     // the prop, or −1 for an obstacle
+    std::int32_t prop = -1;  // the prop, or −1 for an obstacle
     double mu_static = 0.0;
     double mu_kinetic = 0.0;
-    double stiffness_n = 0.0;   // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
-    double stiffness_t = 0.0;   // the same along the tangent
+    double stiffness_n = 0.0;  // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
+    double stiffness_t = 0.0;  // the same along the tangent
     bool normal_active = true;
     bool friction_active = true;
-    double mu_n = 0.0;          // multipliers from the last pass (kg·m: force × h²)
+    double mu_n = 0.0;  // multipliers from the last pass (kg·m: force × h²)
     double mu_t = 0.0;
   };
 
   void assemble(const Tire& t, const SubstepContext& ctx, double gamma);
   void add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma);
   double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
-  Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal, double plane,
-                       const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity) const;
+  Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal,
+                       double plane, const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity) const;
   // Finds the particles of `t` that penetrate a surface at x + dx (dx null: at x) and have no
   // contact yet, and adds a contact for each. True when any was added.
   bool find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx);
@@ -110,8 +110,8 @@ class GlobalSolver {
   std::vector<double> f_;       // f with them, then L⁻¹ f
   std::vector<double> dx_;      // the last pass's Δx, in block order
   std::vector<Row> rows_;
-  std::vector<double> g_;   // column r: the gradient g_r
-  std::vector<double> y_;   // column r: L⁻¹ g_r
+  std::vector<double> g_;  // column r: the gradient g_r
+  std::vector<double> y_;  // column r: L⁻¹ g_r
   std::vector<Contact> contacts_;
   std::vector<std::int32_t> contact_of_;  // per particle: its contact, or −1
   std::vector<double> depth_;             // find_contacts: the depth of each contact found

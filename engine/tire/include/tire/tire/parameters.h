@@ -71,7 +71,8 @@ struct Parameter {
   // As written in scripts, replays and the panel: "solver.substeps", "tires.compliance.outer",
   // "gravity.x". A "tires." key sets every tire; "player." + the rest sets the player's tire only.
   const char* key;
-  const char* unit;  // as messages print it after the range: "m/s^2", "(fraction of the rest area)"; "" for none
+  // As messages print it after the range: "m/s^2", "(fraction of the rest area)"; "" for none.
+  const char* unit;
   Range range;
   bool integer;
   double default_value;  // taken from TireSpec{} / SolverConfig{}: those structs are the one place
@@ -111,6 +112,8 @@ inline constexpr unsigned kNotScript = by_level | by_replay | by_panel;
 inline constexpr std::array kParameters = [] {
   using namespace parameter_table;
   using P = ParamId;
+  // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
+  // clang-format off
   return std::array<Parameter, 27>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
@@ -173,6 +176,7 @@ inline constexpr std::array kParameters = [] {
       {P::tire_max_speed, "tires.max_speed", "m/s", {0, 1000, true}, false, kTire.max_speed, kNotPanel,
        "Cap on the hub's horizontal speed and on the steered tread speed (m/s), in {range}."},
   }};
+  // clang-format on
 }();
 
 // The whole table, in order.
@@ -187,7 +191,7 @@ namespace parameter_table {
 constexpr bool consistent() {
   for (std::size_t i = 0; i < kParameters.size(); ++i) {
     const Parameter& p = kParameters[i];
-    if (static_cast<std::size_t>(p.id) != i) return false;               // ids in table order
+    if (static_cast<std::size_t>(p.id) != i) return false;                          // ids in table order
     if (p.default_follows == nullptr && !p.accepts(p.default_value)) return false;  // defaults in range
     if (std::string_view(p.description).find("{range}") == std::string_view::npos) return false;
     if (p.integer && (p.range.min_open || p.range.max_open)) return false;  // integer ranges are closed

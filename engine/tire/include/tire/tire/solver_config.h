@@ -14,7 +14,9 @@ namespace tire {
 enum class SolverMethod { gauss_seidel, global };
 
 // As levels, the command line and reports write it: "gauss-seidel", "global".
-constexpr const char* method_name(SolverMethod m) { return m == SolverMethod::global ? "global" : "gauss-seidel"; }
+constexpr const char* method_name(SolverMethod m) {
+  return m == SolverMethod::global ? "global" : "gauss-seidel";
+}
 constexpr SolverMethod kSolverMethods[] = {SolverMethod::gauss_seidel, SolverMethod::global};
 
 struct SolverConfig {
@@ -22,7 +24,7 @@ struct SolverConfig {
   int substeps = 8;        // n: the tick is split into substeps of h = dt/n (Macklin et al. 2019)
   int iterations = 1;      // constraint sweeps per substep (global: Newton iterations per substep)
   SolverMethod method = SolverMethod::gauss_seidel;
-  double damping = 0.0;    // decay rate (1/s) of non-rigid particle motion (0 = none)
+  double damping = 0.0;  // decay rate (1/s) of non-rigid particle motion (0 = none)
 
   // Anti-tunneling clamp: a particle's speed is limited so that it travels at most this many
   // rest outer-segment lengths in one substep.

@@ -9,13 +9,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "tire/rigid/prop_geometry.h"
+#include "tire/tire/tire_spec.h"
+#include "tire/tire/tire_topology.h"
 #include "tire/xpbd/area_constraint.h"
 #include "tire/xpbd/contact.h"
 #include "tire/xpbd/distance_constraint.h"
 #include "tire/xpbd/particles.h"
-#include "tire/rigid/prop_geometry.h"
-#include "tire/tire/tire_spec.h"
-#include "tire/tire/tire_topology.h"
 
 namespace tire {
 
@@ -56,10 +56,10 @@ struct PropFrame {
 
 // The tire's motion as a rigid body: what the hub does. Every particle has the same mass m.
 struct RigidMotion {
-  Vec2 centroid;          // hub (m)
-  Vec2 velocity;          // of the hub (m/s)
-  double omega = 0.0;     // angular velocity about the hub (rad/s, CCW): L / I
-  double inertia = 0.0;   // I = Σ m |r|² about the hub (kg m²)
+  Vec2 centroid;         // hub (m)
+  Vec2 velocity;         // of the hub (m/s)
+  double omega = 0.0;    // angular velocity about the hub (rad/s, CCW): L / I
+  double inertia = 0.0;  // I = Σ m |r|² about the hub (kg m²)
 };
 
 struct Tire {
@@ -85,17 +85,17 @@ struct Tire {
   double particle_mass() const { return spec.mass / (2.0 * n); }  // every particle weighs the same
 
   // Every particle has the same mass, so mass-weighted means are plain means.
-  Vec2 centroid() const;             // mass-weighted centroid of all particles (the hub)
-  Vec2 velocity() const;             // mass-weighted mean velocity
+  Vec2 centroid() const;  // mass-weighted centroid of all particles (the hub)
+  Vec2 velocity() const;  // mass-weighted mean velocity
   double angular_velocity() const { return rigid_motion().omega; }
   RigidMotion rigid_motion() const;
-  double area() const;               // current area of the outer ring (m²)
+  double area() const;  // current area of the outer ring (m²)
   double area_ratio() const { return area() / area_constraint.rest_area; }
-  bool grounded() const;             // an outer particle touched ground in the last substep
+  bool grounded() const;  // an outer particle touched ground in the last substep
   // Particles in contact in the last substep: with a surface, or with another tire (pushed by it or
   // carrying it).
   std::size_t touching_particles() const;
-  bool is_finite() const;            // no NaN/Inf in positions or velocities
+  bool is_finite() const;  // no NaN/Inf in positions or velocities
   // Every per-particle array holds 2N entries (soft_lambda N, contact_mask one bit each) and every
   // constraint names particles of this tire: what the solver indexes by without checking
   // (TIRE_ASSERT in debug builds).
@@ -122,9 +122,9 @@ struct Tire {
 
   TireId id;
   TireSpec spec;
-  double spawn_mass;            // the mass it was built with: "mass_scale" scales this
-  std::uint32_t n;              // particles per ring
-  double segment_length;        // rest length of one outer-ring segment (m)
+  double spawn_mass;      // the mass it was built with: "mass_scale" scales this
+  std::uint32_t n;        // particles per ring
+  double segment_length;  // rest length of one outer-ring segment (m)
 
   std::shared_ptr<const TireTopology> topology;  // shared by the tires of this shape
   Particles particles;
@@ -137,22 +137,22 @@ struct Tire {
   AreaConstraint rim_area_constraint;
   double rim_area_lambda = 0.0;
 
-  std::vector<ContactRecord> contacts;        // per particle, this substep (default where untouched)
+  std::vector<ContactRecord> contacts;  // per particle, this substep (default where untouched)
   // Bit i set: contacts[i] was written this substep. Only those are visited and cleared, so a
   // substep costs nothing for the particles nowhere near a surface.
   std::vector<std::uint64_t> contact_mask;
-  std::vector<std::uint8_t> grounded_flags;   // per particle, last substep
-  std::vector<std::uint32_t> candidates;      // obstacles near the tire this tick (broad phase)
-  std::vector<std::uint32_t> prop_candidates; // props near the tire this tick (broad phase)
-  std::vector<PropFrame> prop_frames;         // their poses this substep
-  std::vector<ContactPair> pairs;             // particles near any of them this substep
-  std::vector<PropImpulse> prop_impulses;     // owed to props since they were last handed over
-  std::vector<double> soft_lambda;            // per outer particle: normal λ against other tires, this substep
-  Vec2 tread_hub;                             // mean of the tread particles, after this iteration's own solve
-  double tread_reach = 0.0;                   // largest distance of a tread particle from tread_hub
-  Vec2 rim_hub;                               // the same for the rim, for the tread–rim contact
+  std::vector<std::uint8_t> grounded_flags;    // per particle, last substep
+  std::vector<std::uint32_t> candidates;       // obstacles near the tire this tick (broad phase)
+  std::vector<std::uint32_t> prop_candidates;  // props near the tire this tick (broad phase)
+  std::vector<PropFrame> prop_frames;          // their poses this substep
+  std::vector<ContactPair> pairs;              // particles near any of them this substep
+  std::vector<PropImpulse> prop_impulses;      // owed to props since they were last handed over
+  std::vector<double> soft_lambda;  // per outer particle: normal λ against other tires, this substep
+  Vec2 tread_hub;                   // mean of the tread particles, after this iteration's own solve
+  double tread_reach = 0.0;         // largest distance of a tread particle from tread_hub
+  Vec2 rim_hub;                     // the same for the rim, for the tread–rim contact
   double rim_reach = 0.0;
-  std::vector<std::uint8_t> on_tire;          // per particle: resting on another tire, this substep
+  std::vector<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
   TireControl control;
 
   // A mouse grab: particle `grab_particle` pulled towards `grab_target` by a compliant XPBD

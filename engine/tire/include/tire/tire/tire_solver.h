@@ -14,9 +14,9 @@ struct SubstepContext {
   double time = 0.0;  // of the substep's start, from the start of the tick (s)
   Vec2 gravity;
   const SolverConfig* config = nullptr;
-  const RigidWorld* rigid = nullptr;  // obstacles and props, read only while tires are solved
-  bool tire_pairs = false;            // contacts between tires follow each iteration: keep tread bounds
-  GlobalSolverPool* global = nullptr; // the global method's solvers (SolverMethod::global only)
+  const RigidWorld* rigid = nullptr;   // obstacles and props, read only while tires are solved
+  bool tire_pairs = false;             // contacts between tires follow each iteration: keep tread bounds
+  GlobalSolverPool* global = nullptr;  // the global method's solvers (SolverMethod::global only)
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and

@@ -18,17 +18,17 @@ struct TireCompliance {
 };
 
 struct TireSpec {
-  Vec2 position{0.0, 0.5};      // hub position at spawn (m)
-  Vec2 velocity{0.0, 0.0};      // initial velocity (m/s)
-  double angle = 0.0;           // rotation (rad, CCW) from the pose with one tread segment flat at the bottom
+  Vec2 position{0.0, 0.5};  // hub position at spawn (m)
+  Vec2 velocity{0.0, 0.0};  // initial velocity (m/s)
+  double angle = 0.0;       // rotation (rad, CCW) from the pose with one tread segment flat at the bottom
   double angular_velocity = 0.0;  // initial spin (rad/s, counter-clockwise positive)
-  double outer_radius = 0.5;    // R (m)
-  double inner_radius = 0.3;    // r (m), r < R
-  int segments = 28;            // N particles per ring
-  double mass = 10.0;           // whole tire (kg), shared equally by the 2N particles
-  double friction = 0.9;        // static friction coefficient μ_s
+  double outer_radius = 0.5;      // R (m)
+  double inner_radius = 0.3;      // r (m), r < R
+  int segments = 28;              // N particles per ring
+  double mass = 10.0;             // whole tire (kg), shared equally by the 2N particles
+  double friction = 0.9;          // static friction coefficient μ_s
   double kinetic_friction = 0.9;  // kinetic friction coefficient μ_k
-  double pressure = 1.0;        // target area = pressure · rest area
+  double pressure = 1.0;          // target area = pressure · rest area
   TireCompliance compliance;
   SpokePattern spokes = SpokePattern::cross;
   // Material damping time τ (s): a dashpot beside every constraint's spring (Kelvin–Voigt rubber),

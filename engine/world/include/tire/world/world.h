@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "tire/math/state_hash.h"
-#include "tire/rigid/rigid_world.h"
-#include "tire/tire/soft_contact.h"
 #include "tire/math/worker_pool.h"
+#include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
+#include "tire/tire/soft_contact.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
 
@@ -146,7 +146,7 @@ class World {
   std::vector<Tire> tires_;
   TireTopologies topologies_;  // one per shape of tire added: what tires of a shape share
   TirePairFinder pair_finder_;
-  std::vector<TirePair> tire_pairs_;     // this tick's candidate pairs
+  std::vector<TirePair> tire_pairs_;  // this tick's candidate pairs
   // The pairs sorted into colours: no two pairs of a colour share a tire, so a colour's pairs are
   // solved in parallel; colours always go in the same order, whatever the thread count. The last
   // colour, kColors, takes the pairs of a tire with more neighbours than there are colours: its

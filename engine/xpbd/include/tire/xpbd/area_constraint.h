@@ -29,6 +29,7 @@ void solve_area_constraint(const AreaConstraint& c, double& lambda, Vec2* x, con
 
 // Kelvin–Voigt damping of the area's rate of change dA/dt = Σ ∇_i A · v_i, as for distance
 // constraints (see damp_distance_constraints): a dashpot c = τ/α, integrated implicitly.
-void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau, double h);
+void damp_area_constraint(const AreaConstraint& c, const Vec2* x, Vec2* v, const double* w, double tau,
+                          double h);
 
 }  // namespace tire

@@ -19,8 +19,8 @@ namespace tire {
 
 // A penetrating contact: push the particle by depth·normal to reach the surface.
 struct SurfaceContact {
-  Vec2 normal;          // unit, out of the surface
-  double depth = 0.0;   // > 0
+  Vec2 normal;         // unit, out of the surface
+  double depth = 0.0;  // > 0
 };
 
 // Exact minimal-overlap contact of a point strictly inside an axis-aligned box: the face with
@@ -52,9 +52,11 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
   // in through that slab's face (a particle resting on the ground starts each substep on it).
   const bool now_inside = to.x > box.min.x && to.x < box.max.x && to.y > box.min.y && to.y < box.max.y;
   if (now_inside && inside_x)
-    return from.y >= box.max.y ? SurfaceContact{{0.0, 1.0}, box.max.y - to.y} : SurfaceContact{{0.0, -1.0}, to.y - box.min.y};
+    return from.y >= box.max.y ? SurfaceContact{{0.0, 1.0}, box.max.y - to.y}
+                               : SurfaceContact{{0.0, -1.0}, to.y - box.min.y};
   if (now_inside && inside_y)
-    return from.x >= box.max.x ? SurfaceContact{{1.0, 0.0}, box.max.x - to.x} : SurfaceContact{{-1.0, 0.0}, to.x - box.min.x};
+    return from.x >= box.max.x ? SurfaceContact{{1.0, 0.0}, box.max.x - to.x}
+                               : SurfaceContact{{-1.0, 0.0}, to.x - box.min.x};
   // Slab test: the latest entry time over the axes is where the segment enters the box.
   const Vec2 d = to - from;
   double t_enter = 0.0, t_exit = 1.0;
@@ -77,7 +79,10 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
   }
   if (t_enter >= t_exit || normal == Vec2{}) return std::nullopt;
   // Distance from `to` back to the entry face's plane, along its normal.
-  const double face = normal.x < 0 ? box.min.x : normal.x > 0 ? box.max.x : normal.y < 0 ? box.min.y : box.max.y;
+  const double face = normal.x < 0   ? box.min.x
+                      : normal.x > 0 ? box.max.x
+                      : normal.y < 0 ? box.min.y
+                                     : box.max.y;
   const double depth = normal.x != 0.0 ? (face - to.x) * normal.x : (face - to.y) * normal.y;
   if (depth <= 0.0) return std::nullopt;
   return SurfaceContact{normal, depth};
@@ -85,14 +90,14 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
 
 // What friction needs to know about one particle's contact during one substep.
 struct ContactRecord {
-  Vec2 normal;                 // normal of the last contact found this substep
-  Vec2 surface_velocity;       // velocity of the surface under the particle (moving props)
-  double lambda_n = 0.0;       // accumulated normal correction of the particle this substep (m)
+  Vec2 normal;            // normal of the last contact found this substep
+  Vec2 surface_velocity;  // velocity of the surface under the particle (moving props)
+  double lambda_n = 0.0;  // accumulated normal correction of the particle this substep (m)
   double mu_static = 0.0;
   double mu_kinetic = 0.0;
-  std::int32_t prop = -1;      // the prop touched, or −1 for an obstacle
-  bool active = false;         // touched a surface this substep
-  bool stuck = false;          // static friction held at the last projection
+  std::int32_t prop = -1;  // the prop touched, or −1 for an obstacle
+  bool active = false;     // touched a surface this substep
+  bool stuck = false;      // static friction held at the last projection
   // The global method's (GlobalSolver): the surface as a plane, C(x) = normal·x − plane, kept from
   // one iteration of the substep to the next, and the tangential multiplier as a distance (as
   // lambda_n), along perp(normal).
@@ -109,9 +114,9 @@ inline double mix_friction(double a, double b) { return std::sqrt(a * b); }
 // obstacles). Against a body of finite mass the particle takes only its share of each correction,
 // w_p/(w_p + w_body) (Müller 2020 eq. 3–5 with generalized inverse masses); the body takes the rest
 // as an impulse, which the caller sends.
-inline void resolve_contact(Vec2& x, Vec2 x_prev, const SurfaceContact& c, double mu_static, double mu_kinetic,
-                            ContactRecord& rec, Vec2 surface_displacement = {}, double normal_share = 1.0,
-                            double tangent_share = 1.0) {
+inline void resolve_contact(Vec2& x, Vec2 x_prev, const SurfaceContact& c, double mu_static,
+                            double mu_kinetic, ContactRecord& rec, Vec2 surface_displacement = {},
+                            double normal_share = 1.0, double tangent_share = 1.0) {
   // (Written to let NaN through: a tire gone NaN is the world's divergence guard's to reset.)
   TIRE_ASSERT(!(c.depth < 0.0) && !(std::abs(length_squared(c.normal) - 1.0) > 1e-9),
               "a contact with a negative depth or a normal that is not unit");
@@ -120,7 +125,8 @@ inline void resolve_contact(Vec2& x, Vec2 x_prev, const SurfaceContact& c, doubl
   // few 1e-9 below 0 (replay 04-crates-goal: mobility −4.1e-9, share 1 + 1.2e-10). Clamping the
   // mobility at 0 is the fix, but it changes that recorded replay; until it is re-recorded the
   // check allows 1e-6 of excess, far above that rounding and far below a real error.
-  TIRE_ASSERT(normal_share >= 0.0 && normal_share <= 1.0 + 1e-6 && tangent_share >= 0.0 && tangent_share <= 1.0 + 1e-6,
+  TIRE_ASSERT(normal_share >= 0.0 && normal_share <= 1.0 + 1e-6 && tangent_share >= 0.0 &&
+                  tangent_share <= 1.0 + 1e-6,
               "a particle's share of a contact correction outside [0, 1]");
   const double correction = c.depth * normal_share;
   x += c.normal * correction;  // Δx = −C n w/(Σw) for C = −depth

@@ -102,9 +102,17 @@ class DistanceConstraintSet {
       iterator() = default;
       iterator(const DistanceConstraintSet* set, std::size_t k) : set_(set), k_(k) {}
       DistanceConstraint operator*() const { return set_->constraint(k_); }
-      iterator& operator++() { ++k_; return *this; }
-      iterator operator++(int) { iterator old = *this; ++k_; return old; }
+      iterator& operator++() {
+        ++k_;
+        return *this;
+      }
+      iterator operator++(int) {
+        iterator old = *this;
+        ++k_;
+        return old;
+      }
       bool operator==(const iterator& o) const { return k_ == o.k_; }
+
      private:
       const DistanceConstraintSet* set_ = nullptr;
       std::size_t k_ = 0;
@@ -115,6 +123,7 @@ class DistanceConstraintSet {
     std::size_t size() const { return set_->size(); }
     bool empty() const { return size() == 0; }
     DistanceConstraint operator[](std::size_t k) const { return set_->constraint(k); }
+
    private:
     const DistanceConstraintSet* set_;
   };
@@ -176,7 +185,7 @@ class DistanceConstraintSet {
   static_assert(sizeof(LaneState) == 16 * kLanes);
   // What the four lanes of a batch share, one per class of the layout.
   struct Params {
-    double compliance = 0.0;       // α
+    double compliance = 0.0;  // α
     double w_a = 0.0;
     double w_b = 0.0;
     double alpha_tilde = 0.0;      // α̃ = α/h²
@@ -187,11 +196,11 @@ class DistanceConstraintSet {
   void adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length);
 
   std::shared_ptr<const DistanceLayout> layout_;
-  std::vector<LaneState> state_;       // per batch of the layout
-  std::vector<Params> params_;         // per class of the layout
-  std::vector<double> compliance_;     // per group
-  std::vector<double> w_built_;        // the inverse masses the params were derived for (empty: none yet)
-  std::vector<double> pending_;        // per constraint: compliances set by range, not yet grouped
+  std::vector<LaneState> state_;    // per batch of the layout
+  std::vector<Params> params_;      // per class of the layout
+  std::vector<double> compliance_;  // per group
+  std::vector<double> w_built_;     // the inverse masses the params were derived for (empty: none yet)
+  std::vector<double> pending_;     // per constraint: compliances set by range, not yet grouped
   Kernel kernel_ = Kernel::automatic;
 };
 
