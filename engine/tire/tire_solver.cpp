@@ -10,15 +10,6 @@ namespace tire {
 
 namespace {
 
-Aabb bounds(const std::vector<Vec2>& x) {
-  Aabb b{x.front(), x.front()};
-  for (const Vec2& p : x) {
-    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y)};
-    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y)};
-  }
-  return b;
-}
-
 // Angular acceleration (rad/s², CCW positive) that steering asks for this substep: the tread is
 // driven at drive_acceleration·|steer| until its speed reaches max_speed·|steer|.
 double drive_angular_acceleration(const Tire& t, const RigidMotion& motion) {
@@ -56,17 +47,6 @@ bool path_near(Vec2 a, Vec2 b, const Aabb& box) {
            std::max(a.y, b.y) < box.min.y || std::min(a.y, b.y) > box.max.y);
 }
 
-Aabb world_bounds(const Aabb& local, const Pose& pose) {
-  const Vec2 corners[4] = {local.min, {local.max.x, local.min.y}, local.max, {local.min.x, local.max.y}};
-  Aabb b{pose.to_world(corners[0]), pose.to_world(corners[0])};
-  for (const Vec2& c : corners) {
-    const Vec2 w = pose.to_world(c);
-    b.min = {std::min(b.min.x, w.x), std::min(b.min.y, w.y)};
-    b.max = {std::max(b.max.x, w.x), std::max(b.max.y, w.y)};
-  }
-  return b;
-}
-
 // Narrow phase, once per substep after prediction: the particles whose path this substep passes
 // within one segment length of a nearby obstacle or prop. Only these are tested in the iterations
 // (the margin covers what the constraints move a particle within one substep).
@@ -89,8 +69,8 @@ void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
     const auto frame = static_cast<std::uint32_t>(t.prop_frames.size());
     t.prop_frames.push_back({k, prop.pose_at(ctx.time), prop.pose_at(ctx.time + ctx.h)});
     const Aabb local = prop.geometry.local_bounds();
-    Aabb near = world_bounds(local, t.prop_frames.back().start);
-    const Aabb end = world_bounds(local, t.prop_frames.back().end);
+    Aabb near = t.prop_frames.back().start.to_world(local);
+    const Aabb end = t.prop_frames.back().end.to_world(local);
     near = Aabb{{std::min(near.min.x, end.min.x), std::min(near.min.y, end.min.y)},
                 {std::max(near.max.x, end.max.x), std::max(near.max.y, end.max.y)}}
                .expanded(t.segment_length);
@@ -230,7 +210,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
-  rigid.query(bounds(t.particles.x).expanded(reach), t.candidates, t.prop_candidates);
+  rigid.query(bounds_of(t.particles.x).expanded(reach), t.candidates, t.prop_candidates);
   if (t.control.jump && t.grounded())
     for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
   t.control.jump = false;

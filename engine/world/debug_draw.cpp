@@ -13,23 +13,8 @@ namespace {
 constexpr unsigned kTireFlags = DebugDraw::structure | DebugDraw::contacts | DebugDraw::velocities |
                                 DebugDraw::bounds | DebugDraw::broadphase;
 
-Aabb bounds_of(std::span<const Vec2> points) {
-  Aabb box{points.front(), points.front()};
-  for (const Vec2& p : points) {
-    box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-    box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
-  }
-  return box;
-}
-
-// The world box around a prop's shape at `pose`: its local bounds' four corners, moved.
-Aabb prop_bounds(const Prop& p, const Pose& pose) {
-  const Aabb local = p.geometry.local_bounds();
-  const Vec2 corners[4] = {pose.to_world(local.min), pose.to_world(local.max),
-                           pose.to_world({local.min.x, local.max.y}),
-                           pose.to_world({local.max.x, local.min.y})};
-  return bounds_of(corners);
-}
+// The world box around a prop's shape at `pose`.
+Aabb prop_bounds(const Prop& p, const Pose& pose) { return pose.to_world(p.geometry.local_bounds()); }
 
 Vec2 mean(std::span<const Vec2> points) {
   Vec2 sum;

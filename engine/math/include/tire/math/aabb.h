@@ -1,6 +1,9 @@
 // An axis-aligned box, min < max on both axes.
 #pragma once
 
+#include <algorithm>
+#include <span>
+
 #include "tire/math/vec2.h"
 
 namespace tire {
@@ -16,5 +19,15 @@ struct Aabb {
     return {{min.x - margin, min.y - margin}, {max.x + margin, max.y + margin}};
   }
 };
+
+// The smallest box holding `points` (at least one), taken in order.
+inline Aabb bounds_of(std::span<const Vec2> points) {
+  Aabb box{points.front(), points.front()};
+  for (const Vec2& p : points) {
+    box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
+    box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
+  }
+  return box;
+}
 
 }  // namespace tire

@@ -30,6 +30,12 @@ struct Pose {
     return {cos_a * d.x + sin_a * d.y, -sin_a * d.x + cos_a * d.y};
   }
   Vec2 rotate(Vec2 v) const { return {cos_a * v.x - sin_a * v.y, sin_a * v.x + cos_a * v.y}; }
+  // The world box around the local box `local` placed at this pose: its four corners, moved.
+  Aabb to_world(const Aabb& local) const {
+    const Vec2 corners[4] = {to_world(local.min), to_world({local.max.x, local.min.y}), to_world(local.max),
+                             to_world({local.min.x, local.max.y})};
+    return bounds_of(corners);
+  }
 };
 
 struct PropGeometry {
