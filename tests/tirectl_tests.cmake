@@ -144,15 +144,29 @@ foreach(file ${fuzz_regression_files})
   endif()
 endforeach()
 
-# tirectl tradeoff: a tiny sweep runs and writes its CSV and plot; bad arguments are usage errors.
+# tirectl tradeoff: a tiny sweep runs and writes its CSV and plot, for both solver methods (the
+# default) or the one asked for; bad arguments are usage errors.
 set(TRADEOFF_OUT ${CMAKE_CURRENT_BINARY_DIR}/tradeoff-test)
 tirectl_test("tradeoff runs a tiny sweep" 0
-  ARGS tradeoff --scenarios rest --substeps 1,4 --iterations 1 --segments 12 --repeats 1 --out ${TRADEOFF_OUT}
+  ARGS tradeoff --scenarios rest --substeps 1,4 --iterations 1 --segments 12 --repeats 1 --ref-substeps 128
+       --out ${TRADEOFF_OUT}
   STDOUT "tradeoff.csv")
 add_test(NAME "tirectl tradeoff writes the CSV columns and the SVG"
-  COMMAND ${CMAKE_COMMAND} -DDIR=${TRADEOFF_OUT} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_tradeoff.cmake)
+  COMMAND ${CMAKE_COMMAND} -DDIR=${TRADEOFF_OUT} "-DMETHODS=gauss-seidel|global"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_tradeoff.cmake)
 set_tests_properties("tirectl tradeoff writes the CSV columns and the SVG" PROPERTIES LABELS unit
   DEPENDS "tirectl tradeoff runs a tiny sweep")
+tirectl_test("tradeoff sweeps only the methods asked for" 0
+  ARGS tradeoff --methods global --scenarios rest --substeps 1,4 --iterations 1 --segments 12 --repeats 1
+       --ref-substeps 128 --out ${TRADEOFF_OUT}-global
+  STDOUT "tradeoff.csv")
+add_test(NAME "tirectl tradeoff --methods global writes global rows only"
+  COMMAND ${CMAKE_COMMAND} -DDIR=${TRADEOFF_OUT}-global -DMETHODS=global
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_tradeoff.cmake)
+set_tests_properties("tirectl tradeoff --methods global writes global rows only" PROPERTIES LABELS unit
+  DEPENDS "tirectl tradeoff sweeps only the methods asked for")
+tirectl_test("tradeoff refuses an unknown method" 2 ARGS tradeoff --methods global,newton --out ${TRADEOFF_OUT}-bad
+  STDERR "--methods: must be one of gauss-seidel, global, got \"newton\"")
 tirectl_test("tradeoff refuses zero substeps" 2 ARGS tradeoff --substeps 0 --out ${TRADEOFF_OUT}-bad
   STDERR "--substeps")
 tirectl_test("tradeoff refuses an unknown scenario" 2 ARGS tradeoff --scenarios nowhere --out ${TRADEOFF_OUT}-bad

@@ -57,10 +57,15 @@ double scale(double v, Range r, double a, double b) {
   return a + (b - a) * f;
 }
 
+// A hollow marker is drawn a little larger, with a thick outline, so that it still reads when it
+// sits on a filled one of the same shape.
 void marker(std::ostringstream& out, int kind, double x, double y, const std::string& color, bool hollow,
-            double r = kMarkerRadius) {
-  const std::string paint = hollow ? "fill=\"white\" stroke=\"" + color + "\" stroke-width=\"1.6\""
-                                   : "fill=\"" + color + "\" stroke=\"" + color + "\" stroke-width=\"0.6\"";
+            bool faded = false, double r = kMarkerRadius) {
+  if (hollow) r *= 1.2;
+  std::string paint =
+      hollow ? "fill=\"white\" fill-opacity=\"0.6\" stroke=\"" + color + "\" stroke-width=\"1.9\""
+             : "fill=\"" + color + "\" stroke=\"" + color + "\" stroke-width=\"0.6\"";
+  if (faded) paint += " opacity=\"0.4\"";
   switch (((kind % 6) + 6) % 6) {
     case 0:
       out << "<circle cx=\"" << num(x) << "\" cy=\"" << num(y) << "\" r=\"" << num(r) << "\" " << paint
@@ -97,9 +102,17 @@ void marker(std::ostringstream& out, int kind, double x, double y, const std::st
   }
 }
 
-void ring(std::ostringstream& out, double x, double y) {
+void ring(std::ostringstream& out, double x, double y, const std::string& color = "black") {
   out << "<circle cx=\"" << num(x) << "\" cy=\"" << num(y) << "\" r=\"" << num(kMarkerRadius + 2.5)
-      << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>";
+      << "\" fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\"/>";
+}
+
+// A front's line: its series' colour and dashes.
+std::string front_stroke(const PlotSeries& s) {
+  std::string a =
+      "fill=\"none\" stroke=\"" + s.front_color + "\" stroke-width=\"1.6\" stroke-linejoin=\"round\"";
+  if (!s.front_dash.empty()) a += " stroke-dasharray=\"" + s.front_dash + "\"";
+  return a;
 }
 
 std::string superscript_power(int decade) {
@@ -173,7 +186,7 @@ std::string render_svg(const PlotSpec& spec) {
                      ? 34.0
                      : 37.0 + 17.0 * static_cast<double>(
                                          1 + std::count(spec.subtitle.begin(), spec.subtitle.end(), '\n')));
-  const double legend_height = 52.0;
+  const double legend_height = spec.series.size() > 1 ? 76.0 : 52.0;
   const double grid_top = legend_top + legend_height;
   const double width = 2 * kMargin + columns * kPanelWidth;
   const double height = grid_top + rows * kPanelHeight + kMargin;
@@ -223,21 +236,44 @@ std::string render_svg(const PlotSpec& spec) {
       x += 18 + 7.5 * static_cast<double>(spec.marker_labels[i].size()) + 10;
     }
     x += 16;
-    out << "<polyline points=\"" << num(x) << "," << num(y + 3) << " " << num(x + 14) << "," << num(y - 3)
-        << " " << num(x + 28) << "," << num(y) << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1.6\"/>";
-    ring(out, x + 14, y - 3);
-    out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.front_label)
-        << "</text>\n";
-    x += 36 + 7.5 * static_cast<double>(spec.front_label.size()) + 16;
+    // A front: a short polyline through a ringed point.
+    auto front_sample = [&](double at, double y0, const PlotSeries& series) {
+      out << "<polyline points=\"" << num(at) << "," << num(y0 + 3) << " " << num(at + 14) << ","
+          << num(y0 - 3) << " " << num(at + 28) << "," << num(y0) << "\" " << front_stroke(series) << "/>";
+      ring(out, at + 14, y0 - 3, series.front_color);
+    };
+    if (spec.series.size() <= 1) {
+      front_sample(x, y, spec.series.empty() ? PlotSeries{} : spec.series.front());
+      out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.front_label)
+          << "</text>\n";
+      x += 36 + 7.5 * static_cast<double>(spec.front_label.size()) + 16;
+    }
     out << "<line x1=\"" << num(x) << "\" y1=\"" << num(y) << "\" x2=\"" << num(x + 28) << "\" y2=\""
         << num(y) << "\" stroke=\"#888\" stroke-width=\"1.4\" stroke-dasharray=\"5,3\"/>";
     out << "<text x=\"" << num(x + 36) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.floor_label)
         << "</text>\n";
     x += 36 + 7.0 * static_cast<double>(spec.floor_label.size()) + 16;
-    if (!spec.hollow_label.empty()) {
-      marker(out, 0, x, y, "#555", true);
-      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.hollow_label)
+    if (!spec.faded_label.empty()) {
+      marker(out, 0, x, y, "#555", false, true);
+      out << "<text x=\"" << num(x + 9) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(spec.faded_label)
           << "</text>\n";
+    }
+    // Series: each one's paint and its front.
+    if (spec.series.size() > 1) {
+      x = kMargin;
+      y += 24;
+      out << "<text x=\"" << num(x) << "\" y=\"" << num(y + 4) << "\" font-weight=\"bold\">"
+          << xml_escape(spec.series_title) << "</text>\n";
+      x += 8.0 * static_cast<double>(spec.series_title.size()) + 14;
+      for (const PlotSeries& series : spec.series) {
+        marker(out, 0, x, y, "#555", series.hollow);
+        front_sample(x + 14, y, series);
+        const std::string text = series.label + ": " + (series.hollow ? "hollow" : "filled") + " markers, " +
+                                 (series.front_dash.empty() ? "solid" : "dashed") + " " + spec.front_label;
+        out << "<text x=\"" << num(x + 50) << "\" y=\"" << num(y + 4) << "\">" << xml_escape(text)
+            << "</text>\n";
+        x += 50 + 7.0 * static_cast<double>(text.size()) + 24;
+      }
     }
     out << "</g>\n";
   }
@@ -308,19 +344,30 @@ std::string render_svg(const PlotSpec& spec) {
           << num(y) << "\" stroke=\"#888\" stroke-width=\"1.4\" stroke-dasharray=\"5,3\"/>\n";
     }
     // Points, then the front over them.
-    for (const PlotPoint& q : p.points) {
-      out << "<g>";
-      if (!q.tooltip.empty()) out << "<title>" << xml_escape(q.tooltip) << "</title>";
-      const std::size_t ci = static_cast<std::size_t>(std::max(q.color, 0));
-      marker(out, q.marker, px(q.x), py(q.y), ci < spec.colors.size() ? spec.colors[ci] : "#000", q.hollow);
-      out << "</g>\n";
-    }
-    if (!p.front.empty()) {
-      out << "<polyline fill=\"none\" stroke=\"black\" stroke-width=\"1.6\" stroke-linejoin=\"round\" "
-             "points=\"";
-      for (const auto& [x, y] : p.front) out << num(px(x)) << "," << num(py(y)) << " ";
+    // Series by series, so that hollow markers lie on filled ones.
+    const PlotSeries plain;
+    auto series_of = [&](int k) -> const PlotSeries& {
+      return k >= 0 && static_cast<std::size_t>(k) < spec.series.size()
+                 ? spec.series[static_cast<std::size_t>(k)]
+                 : plain;
+    };
+    for (std::size_t si = 0; si < std::max<std::size_t>(spec.series.size(), 1); ++si)
+      for (const PlotPoint& q : p.points) {
+        if (static_cast<std::size_t>(std::max(q.series, 0)) != si && !(si == 0 && q.series < 0)) continue;
+        out << "<g>";
+        if (!q.tooltip.empty()) out << "<title>" << xml_escape(q.tooltip) << "</title>";
+        const std::size_t ci = static_cast<std::size_t>(std::max(q.color, 0));
+        marker(out, q.marker, px(q.x), py(q.y), ci < spec.colors.size() ? spec.colors[ci] : "#000",
+               series_of(q.series).hollow, q.faded);
+        out << "</g>\n";
+      }
+    for (const PlotFront& f : p.fronts) {
+      if (f.points.empty()) continue;
+      const PlotSeries& series = series_of(f.series);
+      out << "<polyline " << front_stroke(series) << " points=\"";
+      for (const auto& [x, y] : f.points) out << num(px(x)) << "," << num(py(y)) << " ";
       out << "\"/>\n";
-      for (const auto& [x, y] : p.front) ring(out, px(x), py(y)), out << "\n";
+      for (const auto& [x, y] : f.points) ring(out, px(x), py(y), series.front_color), out << "\n";
     }
     out << "</g>\n";
   }

@@ -189,6 +189,7 @@ tire::World build_world(const TradeoffScenario& scenario, const SolverSettings& 
   config.substeps = settings.substeps;
   config.iterations = settings.iterations;
   config.tunnel_clamp = settings.tunnel_clamp;
+  config.method = settings.method;
   tire::World world(config, {0.0, -kGravity});
   tire::TireSpec base;
   base.segments = settings.segments;

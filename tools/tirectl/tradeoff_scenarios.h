@@ -17,6 +17,7 @@ struct SolverSettings {
   int iterations = 1;
   int segments = 28;
   double tunnel_clamp = 1.0;
+  tire::SolverMethod method = tire::SolverMethod::gauss_seidel;
   // The tire's material damping τ (s), not a solver setting: the same for every run of a sweep
   // (see tirectl tradeoff --material-damping).
   double material_damping = 1e-4;
