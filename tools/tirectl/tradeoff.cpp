@@ -134,7 +134,7 @@ CLI::App* add_tradeoff_command(CLI::App& app, TradeoffOptions& options) {
       ->delimiter(',')
       ->transform(integer_in({1, 256}));
   cmd->add_option("--global-iterations", options.global_iterations,
-                  "Iterations to sweep with the global method (default: those of --iterations up to 2)")
+                  "Iterations to sweep with the global method (default: --iterations)")
       ->delimiter(',')
       ->transform(integer_in({1, 64}));
   cmd->add_option("--segments", options.segments, "Tire segments to sweep, e.g. 12,28,64")
@@ -194,9 +194,6 @@ int tradeoff(const TradeoffOptions& options) {
   tidy(o.iterations);
   tidy(o.global_substeps);
   tidy(o.global_iterations);
-  if (o.global_iterations.empty())
-    for (const int it : o.iterations)
-      if (it <= 2 || o.global_iterations.empty()) o.global_iterations.push_back(it);
   tidy(o.segments);
   // Methods in the engine's order, each once.
   o.method_list.clear();
@@ -296,8 +293,8 @@ int tradeoff(const TradeoffOptions& options) {
         s.tunnel_clamp = clamp;
         s.method = method;
         s.material_damping = o.material_damping;
-        // A global iteration costs about ten Gauss–Seidel sweeps (README).
-        const double sweep = method == tire::SolverMethod::global ? 10.0 : 1.0;
+        // A global iteration costs about five Gauss–Seidel sweeps (README); for the progress bar.
+        const double sweep = method == tire::SolverMethod::global ? 5.0 : 1.0;
         jobs.push_back(
             {&sc, s, kind, {}, static_cast<double>(sc.ticks) * ss * (sweep * it + 2.0) * (seg + 8.0)});
       };

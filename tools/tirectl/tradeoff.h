@@ -19,13 +19,12 @@ struct TradeoffOptions {
   int max_sweeps = 512;  // skip settings with substeps × iterations above this
   std::vector<int> segments{12, 28, 64};
   std::vector<int> extra_iterations;  // filled in: 1 x n settings for claim 2 (not an option)
-  // Solver methods to sweep, as method_name() writes them. The global method sweeps the same
-  // substeps but fewer iterations by default: an iteration of it is a Newton step of the whole
-  // tire, which at 2 or more substeps changes nothing measurable past the second (README), and
-  // costs about as much as 13 Gauss–Seidel sweeps. Its 1 x n settings for claim 2 are run anyway.
+  // Solver methods to sweep, as method_name() writes them. Each gets the same sweep unless
+  // global_substeps / global_iterations narrow the global method's (an iteration of it is a
+  // Newton step of the whole tire: from 2 substeps on, a second one changes little; README).
   std::vector<std::string> methods{"gauss-seidel", "global"};
-  std::vector<int> global_substeps;    // empty: --substeps
-  std::vector<int> global_iterations;  // empty: those of --iterations up to 2 (at least the smallest)
+  std::vector<int> global_substeps;             // empty: --substeps
+  std::vector<int> global_iterations;           // empty: --iterations
   std::vector<tire::SolverMethod> method_list;  // filled in from `methods` (not an option)
   std::vector<double> tunnel_clamp{1.0};
   std::vector<std::string> scenarios;  // empty: all
