@@ -333,7 +333,7 @@ std::string render_svg(const PlotSpec& spec) {
       out << "<text x=\"" << num(0.5 * (left + right)) << "\" y=\"" << num(bottom + 33)
           << "\" font-size=\"12\" text-anchor=\"middle\">" << xml_escape(spec.x_label) << "</text>\n";
     if (col == 0) {
-      const double cx = left - 50, cy = 0.5 * (top + bottom);
+      const double cx = left - 58, cy = 0.5 * (top + bottom);  // clear of the widest tick label ("0.1 mm")
       out << "<text x=\"" << num(cx) << "\" y=\"" << num(cy)
           << "\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 " << num(cx) << " " << num(cy)
           << ")\">" << xml_escape(spec.y_label) << "</text>\n";

@@ -255,8 +255,13 @@ void claim_substeps(std::ostringstream& out, const std::vector<Row>& rows,
                         b->us_per_step, b->error / a->error);
           out << line;
         }
-    out << "  " << name << ": n x 1 has the smaller error in " << small_wins << " of "
-        << small_wins + large_wins << " pairs.\n";
+    if (small_wins + large_wins == 0)
+      out << "  " << name
+          << ": no pairs: the sweep has no n x 1 and 1 x n settings with the same n >= 2\n"
+             "  (sweep 1 substep and more iterations too).\n";
+    else
+      out << "  " << name << ": n x 1 has the smaller error in " << small_wins << " of "
+          << small_wins + large_wins << " pairs.\n";
 
     // The same at equal measured cost: a substep costs more than a sweep (prediction, contacts,
     // velocities), so n x 1 is set against the 1 x m curve at n x 1's cost, interpolated log–log
@@ -268,6 +273,7 @@ void claim_substeps(std::ostringstream& out, const std::vector<Row>& rows,
                   "error", "us", "1xm around", "1xm error there", "ratio");
     out << line;
     int wins = 0, losses = 0, undecided = 0;
+    bool any_curve = false;  // two 1 x m settings or more somewhere, to interpolate between
     for (const std::string& sc : scenarios)
       for (const int seg : o.segments) {
         std::vector<const Row*> curve;  // 1 x m, by cost
@@ -277,6 +283,7 @@ void claim_substeps(std::ostringstream& out, const std::vector<Row>& rows,
             curve.push_back(&r);
         std::sort(curve.begin(), curve.end(),
                   [](const Row* x, const Row* y) { return x->us_per_step < y->us_per_step; });
+        if (curve.size() >= 2) any_curve = true;
         for (const int n : substeps_of(o, method)) {
           if (n < 2) continue;
           const Row* a = find_row(rows, sc, method, n, 1, seg, clamp);
@@ -301,8 +308,14 @@ void claim_substeps(std::ostringstream& out, const std::vector<Row>& rows,
           out << line;
         }
       }
-    out << "  " << name << ": n x 1 has the smaller error in " << wins << " of " << wins + losses
-        << " pairs (" << undecided << " n x 1 settings fall outside the cost range of the 1 x m settings).\n";
+    if (!any_curve)
+      out << "  " << name
+          << ": no pairs: the sweep has fewer than two 1 x m settings (1 substep, m iterations) to "
+             "interpolate between.\n";
+    else
+      out << "  " << name << ": n x 1 has the smaller error in " << wins << " of " << wins + losses
+          << " pairs (" << undecided
+          << " n x 1 settings fall outside the cost range of the 1 x m settings).\n";
   }
 }
 
