@@ -1,6 +1,7 @@
 #include "game_session.h"
 
 #include <algorithm>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -73,7 +74,8 @@ void GameSession::apply(const SessionEvent& event) {
 
 void GameSession::step(const tire::TickInput& input) {
   flush();
-  for (const tire::Tire& t : session_->world().tires()) previous_x_[t.id] = t.particles.x;  // reuses capacity
+  for (const tire::Tire& t : session_->world().tires())  // reuses capacity
+    previous_x_[t.id].assign(t.particles.x.begin(), t.particles.x.end());
   if (previous_x_.size() > 2 * session_->world().tires().size() + 16) {
     std::erase_if(previous_x_,
                   [this](const auto& entry) { return !session_->world().find_tire(entry.first); });
@@ -89,7 +91,7 @@ void GameSession::step(const tire::TickInput& input) {
 
 void GameSession::interpolated_positions(const tire::Tire& t, double alpha,
                                          std::vector<tire::Vec2>& out) const {
-  const std::vector<tire::Vec2>& now = t.particles.x;
+  const std::span<const tire::Vec2> now = t.particles.x;
   out.resize(now.size());
   const auto it = previous_x_.find(t.id);
   if (it == previous_x_.end() || it->second.size() != now.size()) {

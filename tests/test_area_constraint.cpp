@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "tire/xpbd/area_constraint.h"
@@ -33,8 +34,7 @@ namespace {
 
 // C(x) = A(x) − p·A0 with A the shoelace area, written here rather than taken from the engine: the
 // solver's gradient is checked against this function's finite differences.
-double area_constraint_value(const std::vector<Vec2>& x, std::size_t first, std::size_t count,
-                             double target) {
+double area_constraint_value(std::span<const Vec2> x, std::size_t first, std::size_t count, double target) {
   double twice_area = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
     const Vec2 a = x[first + i], b = x[first + (i + 1) % count];
@@ -44,13 +44,13 @@ double area_constraint_value(const std::vector<Vec2>& x, std::size_t first, std:
 }
 
 // ∂C/∂x_i for each vertex by central differences.
-std::vector<Vec2> area_fd_gradient(const std::vector<Vec2>& x, std::size_t first, std::size_t count,
+std::vector<Vec2> area_fd_gradient(std::span<const Vec2> x, std::size_t first, std::size_t count,
                                    double target) {
   const double eps = 1e-6;
   std::vector<Vec2> grad(count);
   for (std::size_t i = 0; i < count; ++i) {
     for (const Vec2 dir : {Vec2{1, 0}, Vec2{0, 1}}) {
-      std::vector<Vec2> plus = x, minus = x;
+      std::vector<Vec2> plus(x.begin(), x.end()), minus(x.begin(), x.end());
       plus[first + i] += dir * eps;
       minus[first + i] -= dir * eps;
       const double d = (area_constraint_value(plus, first, count, target) -
@@ -70,7 +70,7 @@ struct Polygon {
 };
 Polygon irregular_polygon(double pressure, double compliance) {
   Polygon s;
-  s.p.resize(12);
+  s.p = Particles(12);
   const std::vector<Vec2> ring = regular_polygon(9, 1.3, {0.4, -2.0});
   for (std::size_t i = 0; i < 9; ++i) {
     const auto k = static_cast<double>(i);
@@ -107,7 +107,7 @@ TEST_CASE("one projection of the real area solve moves along the finite-differen
   double sum_w_grad2 = 0.0;
   for (std::size_t i = 0; i < 9; ++i) sum_w_grad2 += s.p.w[2 + i] * length_squared(fd[i]);
 
-  std::vector<Vec2> x = s.p.x;
+  std::vector<Vec2> x(s.p.x.begin(), s.p.x.end());
   double lambda = 0.0;
   solve_area_constraint(s.c, lambda, x.data(), s.p.w.data(), 1.0 / (h * h));
   CHECK(lambda == Approx(-C / (sum_w_grad2 + alpha_tilde)).epsilon(1e-8));
@@ -142,7 +142,7 @@ TEST_CASE("the real area dashpot removes rate along the finite-difference gradie
   }
   REQUIRE(std::abs(rate) > 0.1);
   const double impulse = rate * tau * h / (compliance + tau * h * sum_w_grad2);
-  std::vector<Vec2> v = s.p.v;
+  std::vector<Vec2> v(s.p.v.begin(), s.p.v.end());
   damp_area_constraint(s.c, s.p.x.data(), v.data(), s.p.w.data(), tau, h);
   for (std::size_t i = 0; i < 9; ++i) {
     INFO("vertex " << i);
@@ -154,10 +154,9 @@ TEST_CASE("the real area dashpot removes rate along the finite-difference gradie
 }
 
 TEST_CASE("a rigid area constraint restores the target area", "[unit][area]") {
-  Particles p;
-  p.resize(12);
-  p.x = regular_polygon(12, 1.0);
-  p.x_prev = p.x;
+  Particles p(12);
+  p.x.assign(regular_polygon(12, 1.0));
+  p.x_prev.assign(p.x);
   std::fill(p.w.begin(), p.w.end(), 1.0);
   const double rest = polygon_area(p.x.data(), 12);
   for (Vec2& v : p.x) v *= 0.8;  // squash to 64 % of the area
@@ -175,9 +174,8 @@ TEST_CASE("an area compliance alpha under a pressure load P loses alpha*P of are
   const double alpha = 1e-3, P = 10.0, m = 1.0;
   for (const int substeps : {4, 16, 64}) {
     const double h = (1.0 / 60.0) / substeps;
-    Particles p;
-    p.resize(n);
-    p.x = regular_polygon(n, 1.0);
+    Particles p(n);
+    p.x.assign(regular_polygon(n, 1.0));
     std::fill(p.w.begin(), p.w.end(), 1.0 / m);
     const double rest = polygon_area(p.x.data(), n);
     const AreaConstraint c{0, static_cast<std::uint32_t>(n), rest, 1.0, alpha};
@@ -202,9 +200,8 @@ TEST_CASE("an area compliance alpha under a pressure load P loses alpha*P of are
 TEST_CASE("area damping removes the rate of area change and nothing else", "[unit][area][physics]") {
   // Every vertex moving outward: the area grows. Damping slows the growth; a rigid translation
   // (no change of area) is left alone.
-  Particles p;
-  p.resize(8);
-  p.x = regular_polygon(8, 1.0);
+  Particles p(8);
+  p.x.assign(regular_polygon(8, 1.0));
   std::fill(p.w.begin(), p.w.end(), 1.0);
   const AreaConstraint c{0, 8, polygon_area(p.x.data(), 8), 1.0, 1e-4};
   for (std::size_t i = 0; i < 8; ++i) p.v[i] = p.x[i] * 0.5;  // expanding

@@ -102,11 +102,10 @@ struct Slide {
 Slide slide(double v0, double push, double mu_s, double mu_k, int substeps, double seconds) {
   const Aabb ground{{-100, -1}, {100, 0}};
   const double g = 9.81, h = (1.0 / 60.0) / substeps;
-  Particles p;
-  p.resize(1);
-  p.x = {{0, 0}};
-  p.v = {{v0, 0}};
-  p.w = {1.0};
+  Particles p(1);
+  p.x.assign({{0, 0}});
+  p.v.assign({{v0, 0}});
+  p.w.assign({1.0});
   for (int s = 0; s < static_cast<int>(seconds / h); ++s) {
     p.v[0] += Vec2{push, -g} * h;
     predict_positions(p, h);

@@ -32,7 +32,7 @@ struct Independent {
 };
 Independent independent_constraints(double alpha) {
   Independent s;
-  s.p.resize(26);
+  s.p = Particles(26);
   for (std::uint32_t k = 0; k < 13; ++k) {
     const std::uint32_t a = 2 * k, b = 2 * k + 1;
     const double angle = 0.7 * k, len = 0.8 + 0.05 * k;
@@ -65,7 +65,7 @@ TEST_CASE("one projection of the real solver moves along the finite-difference g
   set.set_kernel(kernel);
   set.prepare(s.p.w.data(), h);
   REQUIRE(set.batch_count() == 4);
-  std::vector<Vec2> x = s.p.x;
+  std::vector<Vec2> x(s.p.x.begin(), s.p.x.end());
   set.solve(x.data());
   for (std::size_t k = 0; k < s.list.size(); ++k) {
     const DistanceConstraint& c = s.list[k];
@@ -101,7 +101,7 @@ TEST_CASE("the real dashpot removes rate along the finite-difference gradient, b
   DistanceConstraintSet set(s.list);
   set.set_kernel(kernel);
   set.prepare(s.p.w.data(), h, tau);
-  std::vector<Vec2> v = s.p.v;
+  std::vector<Vec2> v(s.p.v.begin(), s.p.v.end());
   set.damp(s.p.x.data(), v.data());
   for (const DistanceConstraint& c : s.list) {
     INFO("constraint " << c.a / 2);
@@ -128,11 +128,10 @@ TEST_CASE("the real dashpot removes rate along the finite-difference gradient, b
 }
 
 TEST_CASE("a rigid distance constraint is met exactly in one projection", "[unit][distance]") {
-  Particles p;
-  p.resize(2);
-  p.x = {{0, 0}, {2, 0}};
-  p.x_prev = p.x;
-  p.w = {1.0, 3.0};
+  Particles p(2);
+  p.x.assign({{0, 0}, {2, 0}});
+  p.x_prev.assign(p.x);
+  p.w.assign({1.0, 3.0});
   DistanceConstraintSet c({{0, 1, 1.0, 0.0}});
   c.prepare(p.w.data(), 0.01);
   c.solve(p.x.data());
@@ -148,10 +147,9 @@ namespace {
 // over the second half: the oscillation about equilibrium averages out, leaving the static value.
 double mean_hanging_stretch(double alpha, double m, int substeps, int iterations, double seconds) {
   const double g = 9.81, rest = 1.0, dt = 1.0 / 60.0, h = dt / substeps;
-  Particles p;
-  p.resize(2);
-  p.x = {{0, 0}, {0, -rest}};
-  p.w = {0.0, 1.0 / m};
+  Particles p(2);
+  p.x.assign({{0, 0}, {0, -rest}});
+  p.w.assign({0.0, 1.0 / m});
   DistanceConstraintSet c({{0, 1, rest, alpha}});
   c.prepare(p.w.data(), h);
   const int total = static_cast<int>(seconds / h);
@@ -196,14 +194,13 @@ TEST_CASE("material damping removes the rate of stretch, implicitly, and leaves 
           "[unit][distance][physics]") {
   // Two particles flying apart along x while the pair also moves and spins rigidly.
   const double tau = 1e-3, h = 1e-3, alpha = 1e-4;
-  Particles p;
-  p.resize(2);
-  p.x = {{0, 0}, {1, 0}};
-  p.w = {1.0, 1.0};
+  Particles p(2);
+  p.x.assign({{0, 0}, {1, 0}});
+  p.w.assign({1.0, 1.0});
   DistanceConstraintSet c({{0, 1, 1.0, alpha}});
   const Vec2 rigid{2.0, 1.0};
   const double spin = 3.0;  // rad/s about the midpoint: tangential, no stretch
-  p.v = {rigid + Vec2{-0.5, -0.5 * spin}, rigid + Vec2{0.5, 0.5 * spin}};
+  p.v.assign({rigid + Vec2{-0.5, -0.5 * spin}, rigid + Vec2{0.5, 0.5 * spin}});
   c.prepare(p.w.data(), h, tau);
   c.damp(p.x.data(), p.v.data());
   // Implicit dashpot c = τ/α over h: the stretch rate 1.0 m/s decays to 1/(1 + (τ/α)·h·(w_a + w_b)).
@@ -232,17 +229,16 @@ TEST_CASE("batched constraints solve exactly as one Gauss-Seidel sweep in their 
       list.push_back({i, i + 1, 0.9 + 0.01 * i, 1e-5 * (i / 8)});
   list.push_back({0, 16, 7.0, 0.0});
   list.push_back({2, 6, 3.9, 1e-4});
-  Particles p;
-  p.resize(17);
+  Particles p(17);
   for (std::uint32_t i = 0; i < 17; ++i) p.x[i] = {1.0 * i, 0.1 * (i % 3)};
   for (std::uint32_t i = 0; i < 17; ++i) p.w[i] = equal_masses ? 1.3 : i == 4 ? 0.0 : 1.0 + 0.1 * i;
   DistanceConstraintSet set(list);
   set.prepare(p.w.data(), 0.01);
   if (equal_masses) CHECK(set.batch_count() <= list.size() / 2);  // it did batch
-  std::vector<Vec2> x = p.x;
+  std::vector<Vec2> x(p.x.begin(), p.x.end());
   set.solve(x.data());
   // The reference: each constraint in order, one at a time.
-  std::vector<Vec2> ref = p.x;
+  std::vector<Vec2> ref(p.x.begin(), p.x.end());
   for (std::size_t k = 0; k < list.size(); ++k) {
     DistanceConstraintSet one({list[k]});
     one.prepare(p.w.data(), 0.01);
@@ -264,8 +260,7 @@ TEST_CASE("the vector and the scalar kernels give the same bits", "[unit][distan
       list.push_back({i, (i + 1) % 40, 0.3, i % 9 == 0 ? 3e-6 : 1e-6});
   for (std::uint32_t parity = 0; parity < 2; ++parity)
     for (std::uint32_t i = parity; i < 20; i += 2) list.push_back({i, i + 20, 2.0, 1e-5});
-  Particles p;
-  p.resize(40);
+  Particles p(40);
   for (std::uint32_t i = 0; i < 40; ++i) {
     p.x[i] = {std::cos(0.157 * i) * (1.0 + 0.01 * (i % 7)), std::sin(0.157 * i)};
     p.v[i] = {0.1 * (i % 5), -0.2 * (i % 3)};
@@ -277,7 +272,9 @@ TEST_CASE("the vector and the scalar kernels give the same bits", "[unit][distan
   automatic.prepare(p.w.data(), 1e-3, 5e-3);
   scalar.prepare(p.w.data(), 1e-3, 5e-3);
   CHECK(automatic.batch_count() < list.size() / 2);  // mostly full batches, some short ones
-  Particles a = p, s = p;
+  Particles a(p.size()), s(p.size());
+  a.copy_from(p);
+  s.copy_from(p);
   for (int it = 0; it < 5; ++it) {
     automatic.solve(a.x.data());
     scalar.solve(s.x.data());
@@ -299,8 +296,7 @@ TEST_CASE("a new compliance or new masses take effect at the next prepare", "[un
   std::vector<DistanceConstraint> list;
   for (std::uint32_t parity = 0; parity < 2; ++parity)
     for (std::uint32_t i = parity; i < 12; i += 2) list.push_back({i, (i + 1) % 12, 0.5, 1e-6});
-  Particles p;
-  p.resize(12);
+  Particles p(12);
   for (std::uint32_t i = 0; i < 12; ++i)
     p.x[i] = {std::cos(0.5 * i) * (1.0 + 0.02 * (i % 3)), std::sin(0.5 * i)};
   std::fill(p.w.begin(), p.w.end(), 2.0);
@@ -314,7 +310,7 @@ TEST_CASE("a new compliance or new masses take effect at the next prepare", "[un
   for (std::size_t k = 0; k < 3; ++k) changed[k].compliance = 1e-4;
   DistanceConstraintSet fresh(changed);
   fresh.prepare(p.w.data(), 1e-3);
-  std::vector<Vec2> a = p.x, b = p.x;
+  std::vector<Vec2> a(p.x.begin(), p.x.end()), b(p.x.begin(), p.x.end());
   for (int it = 0; it < 3; ++it) {
     tuned.solve(a.data());
     fresh.solve(b.data());

@@ -157,7 +157,8 @@ TEST_CASE("a tread particle inside another tire is projected along the particle-
     for (std::uint32_t j = 0; j < n; ++j)
       tire->tread_reach = std::max(tire->tread_reach, length(tire->particles.x[j] - tire->tread_hub));
   }
-  const std::vector<Vec2> a_before = a.particles.x, b_before = b.particles.x;
+  const std::vector<Vec2> a_before(a.particles.x.begin(), a.particles.x.end()),
+      b_before(b.particles.x.begin(), b.particles.x.end());
   const Vec2 p = a_before[i];
   const double C = dot(normal, p - b0 - e * t);
   REQUIRE(C == Approx(-0.01));

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,12 @@ std::unique_ptr<LevelSession> session_of(const std::string& level_file,
 
 // Bytes, not ==: the same bits (−0.0 against 0.0 would count as a difference).
 template <typename T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+bool same_bytes(std::span<const T> a, std::span<const T> b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
+}
+template <typename T>
+bool same_bytes(const ArrayView<T>& a, const ArrayView<T>& b) {
+  return same_bytes(std::span<const T>(a), std::span<const T>(b));
 }
 
 }  // namespace

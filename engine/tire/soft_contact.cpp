@@ -15,8 +15,8 @@ void TirePairFinder::find(const std::vector<Tire>& tires, double dt, double grav
   bounds_.resize(n);
   order_.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    const std::vector<Vec2>& x = tires[i].particles.x;
-    const std::vector<Vec2>& v = tires[i].particles.v;
+    const ArrayView<Vec2>& x = tires[i].particles.x;
+    const ArrayView<Vec2>& v = tires[i].particles.v;
     Aabb b{x.front(), x.front()};
     double speed2 = 0.0;
     for (std::uint32_t k = 0; k < tires[i].n; ++k) {  // the tread bounds the tire

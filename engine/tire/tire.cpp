@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "tire/math/check.h"
 
@@ -18,33 +19,43 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   TIRE_ASSERT(spec.mass > 0.0 && std::isfinite(spec.mass), "a tire's mass is not positive and finite");
   TIRE_ASSERT(spec.inner_radius > 0.0 && spec.inner_radius < spec.outer_radius,
               "a tire's rim is not inside its tread");
-  particles.resize(2 * n);
-  contacts.resize(2 * n);
-  contact_mask.resize((2 * n + 63) / 64);
-  grounded_flags.resize(2 * n);
+  topology = topology_ ? std::move(topology_) : std::make_shared<const TireTopology>(TireShape::of(spec));
+  TIRE_ASSERT(topology->shape() == TireShape::of(spec), "a tire built on the topology of another shape");
+  // Every array of a fixed size in one block: first what every iteration streams through (the
+  // particles, the distance lanes), last the contact records (touched only near a surface).
+  const std::size_t count = 2 * n;
+  BlockLayout layout;
+  const Particles::Slots particle_slots = Particles::plan(layout, count);
+  const DistanceConstraintSet::Slots distance_slots =
+      DistanceConstraintSet::plan(layout, *topology->distance());
+  const BlockSlot<std::uint8_t> grounded_slot = layout.add<std::uint8_t>(count);
+  const BlockSlot<std::uint8_t> on_tire_slot = layout.add<std::uint8_t>(count);
+  const BlockSlot<double> soft_lambda_slot = layout.add<double>(n);
+  const BlockSlot<std::uint64_t> contact_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
+  const BlockSlot<ContactRecord> contacts_slot = layout.add<ContactRecord>(count);
+  arrays = ArrayBlock(layout);
+  particles = Particles(arrays, particle_slots);
+  grounded_flags = arrays.construct(grounded_slot);
+  on_tire = arrays.construct(on_tire_slot);
+  soft_lambda = arrays.construct(soft_lambda_slot);
+  contact_mask = arrays.construct(contact_mask_slot);
+  contacts = arrays.construct(contacts_slot);
+  // The broad-phase lists, for a usual scene (see tire.h).
   candidates.reserve(16);
   prop_candidates.reserve(16);
   prop_frames.reserve(16);
   prop_impulses.reserve(64);
   pairs.reserve(4 * n);
-  soft_lambda.resize(n);
-  on_tire.resize(2 * n);
 
-  topology = topology_ ? std::move(topology_) : std::make_shared<const TireTopology>(TireShape::of(spec));
-  TIRE_ASSERT(topology->shape() == TireShape::of(spec), "a tire built on the topology of another shape");
   area_constraint = {0, n, 0.0, spec.pressure, spec.compliance.pressure};
   // The rim's area is as stiff as its ring: α_area = α_inner·r² (m³/N) matches the ring's own
   // resistance to a change of radius, so a metal rim is nearly rigid and a rubber one is not.
   rim_area_constraint = {n, n, 0.0, 1.0, spec.compliance.inner * spec.inner_radius * spec.inner_radius};
   reset();
   // Rest lengths and rest area are those of the tire as built, so it starts in equilibrium.
-  const DistanceLayout& layout = *topology->distance();
-  std::vector<double> rest_length(layout.size());
-  for (std::size_t k = 0; k < layout.size(); ++k)
-    rest_length[k] = length(particles.x[layout.pairs()[k].b] - particles.x[layout.pairs()[k].a]);
   const double compliance[TireTopology::group_count] = {spec.compliance.outer, spec.compliance.inner,
                                                         spec.compliance.spoke};
-  distance = DistanceConstraintSet(topology->distance(), rest_length, compliance);
+  distance = DistanceConstraintSet(topology->distance(), particles.x, compliance, arrays, distance_slots);
   area_constraint.rest_area = polygon_area(particles.x.data(), n);
   rim_area_constraint.rest_area = polygon_area(particles.x.data() + n, n);
   TIRE_ASSERT(distance.size() == (spec.spokes == SpokePattern::cross ? 5u : 3u) * n,
@@ -68,7 +79,7 @@ void Tire::reset() {
     particles.v[i] = spec.velocity + perp(r_out) * spec.angular_velocity;
     particles.v[n + i] = spec.velocity + perp(r_in) * spec.angular_velocity;
   }
-  particles.x_prev = particles.x;
+  std::copy(particles.x.begin(), particles.x.end(), particles.x_prev.begin());
   std::fill(particles.w.begin(), particles.w.end(), w);
   std::fill(contacts.begin(), contacts.end(), ContactRecord{});
   std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
@@ -80,7 +91,7 @@ void Tire::reset() {
 }
 
 namespace {
-Vec2 mean(const std::vector<Vec2>& values) {
+Vec2 mean(std::span<const Vec2> values) {
   Vec2 sum;
   for (const Vec2& v : values) sum += v;
   return sum / static_cast<double>(values.size());

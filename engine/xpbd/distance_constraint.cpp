@@ -84,54 +84,83 @@ bool DistanceLayout::fits(const double* w) const {
   return true;
 }
 
+DistanceConstraintSet::Slots DistanceConstraintSet::plan(BlockLayout& block_layout,
+                                                         const DistanceLayout& layout) {
+  return {block_layout.add<LaneState>(layout.batch_count()),
+          block_layout.add<Params>(layout.classes().size()), block_layout.add<double>(layout.group_count()),
+          block_layout.add<double>(layout.particle_count())};
+}
+
 DistanceConstraintSet::DistanceConstraintSet(const std::vector<DistanceConstraint>& constraints) {
   std::vector<DistanceLayout::Pair> pairs;
   std::vector<std::uint32_t> group;
-  std::vector<double> rest_length;
+  std::vector<double> compliance;  // per group
   pairs.reserve(constraints.size());
   group.reserve(constraints.size());
-  rest_length.reserve(constraints.size());
   for (const DistanceConstraint& c : constraints) {
     TIRE_ASSERT(c.rest_length >= 0.0 && std::isfinite(c.rest_length),
                 "a rest length is negative, NaN or infinite");
     TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance),
                 "a compliance is negative, NaN or infinite");
-    const auto it = std::find(compliance_.begin(), compliance_.end(), c.compliance);
-    group.push_back(static_cast<std::uint32_t>(it - compliance_.begin()));
-    if (it == compliance_.end()) compliance_.push_back(c.compliance);
+    const auto it = std::find(compliance.begin(), compliance.end(), c.compliance);
+    group.push_back(static_cast<std::uint32_t>(it - compliance.begin()));
+    if (it == compliance.end()) compliance.push_back(c.compliance);
     pairs.push_back({c.a, c.b});
-    rest_length.push_back(c.rest_length);
   }
-  adopt(std::make_shared<const DistanceLayout>(std::move(pairs), std::move(group)), rest_length);
+  adopt(std::make_shared<const DistanceLayout>(std::move(pairs), std::move(group)), compliance);
+  for (std::size_t k = 0; k < constraints.size(); ++k) set_rest_length(k, constraints[k].rest_length);
 }
 
 DistanceConstraintSet::DistanceConstraintSet(std::shared_ptr<const DistanceLayout> layout,
-                                             std::span<const double> rest_length,
-                                             std::span<const double> compliance)
-    : compliance_(compliance.begin(), compliance.end()) {
-  TIRE_ASSERT(layout && compliance_.size() == layout->group_count(), "a compliance per group of the layout");
-  for (double c : compliance_)
+                                             std::span<const Vec2> x, std::span<const double> compliance,
+                                             ArrayBlock& block, const Slots& slots) {
+  TIRE_ASSERT(layout && compliance.size() == layout->group_count(), "a compliance per group of the layout");
+  TIRE_ASSERT(x.size() >= layout->particle_count(), "a constraint names a particle that is not there");
+  for (double c : compliance)
     TIRE_ASSERT(c >= 0.0 && std::isfinite(c), "a compliance is negative, NaN or infinite");
-  for (double l : rest_length)
-    TIRE_ASSERT(l >= 0.0 && std::isfinite(l), "a rest length is negative, NaN or infinite");
-  adopt(std::move(layout), rest_length);
+  adopt(std::move(layout), compliance, block, slots);
+  const std::vector<DistanceLayout::Pair>& pairs = layout_->pairs();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const double rest_length = length(x[pairs[k].b] - x[pairs[k].a]);
+    TIRE_ASSERT(std::isfinite(rest_length), "a rest length is NaN or infinite");
+    set_rest_length(k, rest_length);
+  }
 }
 
 void DistanceConstraintSet::adopt(std::shared_ptr<const DistanceLayout> layout,
-                                  std::span<const double> rest_length) {
-  TIRE_ASSERT(rest_length.size() == layout->size(), "a rest length per constraint of the layout");
+                                  std::span<const double> compliance, ArrayBlock& block, const Slots& slots) {
+  TIRE_ASSERT(slots.state.count == layout->batch_count() && slots.params.count == layout->classes().size() &&
+                  slots.compliance.count == layout->group_count() &&
+                  slots.w_built.count == layout->particle_count() &&
+                  compliance.size() == layout->group_count(),
+              "arrays not of the layout's sizes");
   layout_ = std::move(layout);
-  state_.assign(layout_->batch_count(), LaneState{});
-  const std::vector<std::uint32_t>& slot = layout_->slot();
-  for (std::size_t k = 0; k < slot.size(); ++k)
-    state_[slot[k] / kLanes].rest_length[slot[k] % kLanes] = rest_length[k];
+  state_ = block.construct(slots.state);
+  params_ = block.construct(slots.params);
+  compliance_ = block.construct(slots.compliance);
+  w_built_ = block.construct(slots.w_built);
+  std::copy(compliance.begin(), compliance.end(), compliance_.begin());
+  prepared_ = false;
+}
+
+void DistanceConstraintSet::adopt(std::shared_ptr<const DistanceLayout> layout,
+                                  std::span<const double> compliance) {
+  BlockLayout block_layout;
+  const Slots slots = plan(block_layout, *layout);
+  ArrayBlock block(block_layout);
+  adopt(std::move(layout), compliance, block, slots);
+  own_ = std::move(block);  // frees the old one (if any) once nothing points into it
+}
+
+void DistanceConstraintSet::set_rest_length(std::size_t k, double rest_length) {
+  const std::uint32_t s = layout_->slot()[k];
+  LaneState& state = state_[s / kLanes];
+  state.rest_length[s % kLanes] = rest_length;
   // A lane that repeats lane 0 repeats its rest length too (is_copy).
-  const std::vector<DistanceLayout::Lanes>& batches = layout_->batches();
-  for (std::size_t i = 0; i < batches.size(); ++i)
+  const DistanceLayout::Lanes& batch = layout_->batches()[s / kLanes];
+  if (s % kLanes == 0)
     for (std::uint32_t l = 1; l < kLanes; ++l)
-      if (batches[i].a[l] == batches[i].a[0]) state_[i].rest_length[l] = state_[i].rest_length[0];
-  params_.assign(layout_->classes().size(), Params{});
-  w_built_.clear();
+      if (batch.a[l] == batch.a[0]) state.rest_length[l] = rest_length;
 }
 
 DistanceConstraint DistanceConstraintSet::constraint(std::size_t k) const {
@@ -165,7 +194,7 @@ void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
   // all weigh the same) and compliances are set by group. Otherwise the set is cut again, on a
   // layout of its own (the cut never changes a result, see DistanceLayout).
   const bool regroup = !pending_.empty();
-  if (regroup || w_built_.size() != particle_count || !std::equal(w_built_.begin(), w_built_.end(), w)) {
+  if (regroup || !prepared_ || !std::equal(w_built_.begin(), w_built_.end(), w)) {
     if (regroup || !layout_->fits(w)) {
       std::vector<double> rest_length(size()), per_constraint(size());
       for (std::size_t k = 0; k < size(); ++k) {
@@ -174,16 +203,19 @@ void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
         per_constraint[k] = c.compliance;
       }
       pending_.clear();
-      compliance_.clear();
+      std::vector<double> compliance;  // per group
       std::vector<std::uint32_t> group(size());
       for (std::size_t k = 0; k < size(); ++k) {
-        const auto it = std::find(compliance_.begin(), compliance_.end(), per_constraint[k]);
-        group[k] = static_cast<std::uint32_t>(it - compliance_.begin());
-        if (it == compliance_.end()) compliance_.push_back(per_constraint[k]);
+        const auto it = std::find(compliance.begin(), compliance.end(), per_constraint[k]);
+        group[k] = static_cast<std::uint32_t>(it - compliance.begin());
+        if (it == compliance.end()) compliance.push_back(per_constraint[k]);
       }
-      adopt(std::make_shared<const DistanceLayout>(layout_->pairs(), std::move(group), w), rest_length);
+      adopt(std::make_shared<const DistanceLayout>(layout_->pairs(), std::move(group), w), compliance);
+      for (std::size_t k = 0; k < rest_length.size(); ++k) set_rest_length(k, rest_length[k]);
     }
-    w_built_.assign(w, w + particle_count);
+    TIRE_ASSERT(w_built_.size() == particle_count, "a layout of another particle count");
+    std::copy(w, w + particle_count, w_built_.begin());
+    prepared_ = true;
   }
   const double inv_h2 = 1.0 / (h * h);
   const std::vector<DistanceLayout::Class>& classes = layout_->classes();
@@ -346,8 +378,7 @@ const bool kCpuHasAvx = __builtin_cpu_supports("avx");
 }  // namespace
 
 void DistanceConstraintSet::solve(Vec2* x) {
-  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(),
-              "solve() before prepare(), or after a change it has not seen");
+  TIRE_ASSERT(pending_.empty() && prepared_, "solve() before prepare(), or after a change it has not seen");
   const DistanceLayout& layout = *layout_;
   const std::size_t n = layout.batch_count();
   const DistanceLayout::Lanes* batches = layout.batches().data();
@@ -372,8 +403,7 @@ void DistanceConstraintSet::solve(Vec2* x) {
 }
 
 void DistanceConstraintSet::damp(const Vec2* x, Vec2* v) {
-  TIRE_ASSERT(pending_.empty() && w_built_.size() == layout_->particle_count(),
-              "damp() before prepare(), or after a change it has not seen");
+  TIRE_ASSERT(pending_.empty() && prepared_, "damp() before prepare(), or after a change it has not seen");
   const DistanceLayout& layout = *layout_;
   const std::size_t n = layout.batch_count();
   const DistanceLayout::Lanes* batches = layout.batches().data();

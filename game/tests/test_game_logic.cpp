@@ -205,9 +205,10 @@ TEST_CASE("drawing interpolates between the last two ticks", "[unit][game]") {
   const tire::Tire& t = session.world().tires()[0];
   std::vector<tire::Vec2> out;
   session.interpolated_positions(t, 0.5, out);  // no previous tick yet: as it is
-  CHECK(out == t.particles.x);
+  CHECK(std::ranges::equal(out, t.particles.x));
   for (int i = 0; i < 30; ++i) session.step({1.0, false});
-  const std::vector<tire::Vec2> now = session.world().tires()[0].particles.x;
+  const tire::ArrayView<tire::Vec2>& x = session.world().tires()[0].particles.x;
+  const std::vector<tire::Vec2> now(x.begin(), x.end());
   session.interpolated_positions(session.world().tires()[0], 1.0, out);
   CHECK(out == now);
   session.interpolated_positions(session.world().tires()[0], 0.0, out);

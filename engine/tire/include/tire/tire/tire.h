@@ -3,6 +3,16 @@
 // outer ring. The hub is derived (the mass-weighted centroid), never a free particle.
 //
 // Particle layout: outer ring at [0, N), inner ring at [N, 2N), both counter-clockwise.
+//
+// Storage (issue 12): what the tires of one shape share (the constraint pairs, their cut into SIMD
+// batches) is the TireTopology. Everything of the tire's own whose size its particle and constraint
+// counts fix (the particles, the distance constraints' rest lengths, λ and compliances, contact
+// records and flags) lives in one heap block, `arrays`, allocated once when the tire is built; the
+// arrays are views into it. A Tire is move-only: a move hands the block over without moving it, so
+// every view stays valid (World keeps a std::vector<Tire>). The broad-phase lists (candidates,
+// prop_candidates, prop_frames, pairs, prop_impulses) are growable vectors: their length is the
+// scene's, not the tire's. Each is reserved once when the tire is built, for a usual scene, and
+// grows past that only during the first ticks of a crowded one, before the step stops allocating.
 #pragma once
 
 #include <bit>
@@ -66,6 +76,12 @@ struct Tire {
   // `topology`: the shared one of the spec's shape (World::add_tire passes its own); null builds one
   // for this tire alone.
   Tire(TireId id, const TireSpec& spec, std::shared_ptr<const TireTopology> topology = nullptr);
+  // Moves keep the arrays where they are; a copy would have to re-point every view into a block of
+  // its own, and nothing needs one.
+  Tire(Tire&&) noexcept = default;
+  Tire& operator=(Tire&&) noexcept = default;
+  Tire(const Tire&) = delete;
+  Tire& operator=(const Tire&) = delete;
 
   // Puts every particle back where the spec builds it, at rest; forgets contacts and λ.
   void reset();
@@ -127,6 +143,9 @@ struct Tire {
   double segment_length;  // rest length of one outer-ring segment (m)
 
   std::shared_ptr<const TireTopology> topology;  // shared by the tires of this shape
+  // The one heap block of the arrays below (all but the broad-phase lists): particles, the distance
+  // set's lanes, contacts and flags, each starting on a cache line.
+  ArrayBlock arrays;
   Particles particles;
   // On topology->distance(): this tire's rest lengths, λ and compliance per kind.
   DistanceConstraintSet distance;  // rings, then spokes; ordered so neighbours rarely share a particle
@@ -137,22 +156,22 @@ struct Tire {
   AreaConstraint rim_area_constraint;
   double rim_area_lambda = 0.0;
 
-  std::vector<ContactRecord> contacts;  // per particle, this substep (default where untouched)
+  ArrayView<ContactRecord> contacts;  // per particle, this substep (default where untouched)
   // Bit i set: contacts[i] was written this substep. Only those are visited and cleared, so a
   // substep costs nothing for the particles nowhere near a surface.
-  std::vector<std::uint64_t> contact_mask;
-  std::vector<std::uint8_t> grounded_flags;    // per particle, last substep
+  ArrayView<std::uint64_t> contact_mask;
+  ArrayView<std::uint8_t> grounded_flags;      // per particle, last substep
   std::vector<std::uint32_t> candidates;       // obstacles near the tire this tick (broad phase)
   std::vector<std::uint32_t> prop_candidates;  // props near the tire this tick (broad phase)
   std::vector<PropFrame> prop_frames;          // their poses this substep
   std::vector<ContactPair> pairs;              // particles near any of them this substep
   std::vector<PropImpulse> prop_impulses;      // owed to props since they were last handed over
-  std::vector<double> soft_lambda;  // per outer particle: normal λ against other tires, this substep
-  Vec2 tread_hub;                   // mean of the tread particles, after this iteration's own solve
-  double tread_reach = 0.0;         // largest distance of a tread particle from tread_hub
-  Vec2 rim_hub;                     // the same for the rim, for the tread–rim contact
+  ArrayView<double> soft_lambda;  // per outer particle: normal λ against other tires, this substep
+  Vec2 tread_hub;                 // mean of the tread particles, after this iteration's own solve
+  double tread_reach = 0.0;       // largest distance of a tread particle from tread_hub
+  Vec2 rim_hub;                   // the same for the rim, for the tread–rim contact
   double rim_reach = 0.0;
-  std::vector<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
+  ArrayView<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
   TireControl control;
 
   // A mouse grab: particle `grab_particle` pulled towards `grab_target` by a compliant XPBD

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "tire/math/array_block.h"
 #include "tire/math/prefetch.h"
 #include "tire/math/vec2.h"
 
@@ -88,7 +89,31 @@ class DistanceLayout {
 // independent, so solving them together is exactly solving them one after the other, and one
 // vector instruction serves all four (AVX where the CPU has it; otherwise the same arithmetic lane
 // by lane, which gives the same bits: IEEE sqrt and division are correctly rounded either way).
+//
+// The set's own arrays are fixed by its layout. A tire places them in its one block (plan(), then
+// the constructor from a block); a set built from a list of constraints has a block of its own, and
+// so does a set that prepare() has to cut again (different masses or compliances set by range: a
+// layout of its own, whose counts may differ). Move-only, as the arrays are views into a block.
 class DistanceConstraintSet {
+  // What a sweep reads and writes of this set's own for four constraints, 64 bytes: in a scene of a
+  // thousand tires these are most of what streams from memory every substep (the shared Lanes of
+  // a shape stay in cache). A batch that is not full repeats its first lane. The SIMD kernels load
+  // and store its lanes aligned.
+  struct alignas(32) LaneState {
+    double rest_length[DistanceLayout::kLanes];
+    double lambda[DistanceLayout::kLanes];
+  };
+  static_assert(sizeof(LaneState) == 16 * DistanceLayout::kLanes);
+  // What the four lanes of a batch share, one per class of the layout.
+  struct Params {
+    double compliance = 0.0;  // α
+    double w_a = 0.0;
+    double w_b = 0.0;
+    double alpha_tilde = 0.0;      // α̃ = α/h²
+    double inv_denominator = 0.0;  // 1 / (w_a + w_b + α̃); 0 for a pinned pair
+    double damping = 0.0;          // τh / (α + τhW): dashpot impulse per unit of dC/dt
+  };
+
  public:
   static constexpr int kLanes = DistanceLayout::kLanes;
 
@@ -128,12 +153,23 @@ class DistanceConstraintSet {
     const DistanceConstraintSet* set_;
   };
 
+  // Where the arrays of a set on `layout` go in a block.
+  struct Slots {
+    BlockSlot<LaneState> state;    // per batch
+    BlockSlot<Params> params;      // per class
+    BlockSlot<double> compliance;  // per group
+    BlockSlot<double> w_built;     // per particle
+  };
+  static Slots plan(BlockLayout& block_layout, const DistanceLayout& layout);
+
   DistanceConstraintSet() = default;
-  // A set of its own: one compliance group per distinct compliance.
+  // A set of its own, in a block of its own: one compliance group per distinct compliance.
   explicit DistanceConstraintSet(const std::vector<DistanceConstraint>& constraints);
-  // A set on a shared layout: `rest_length` per constraint, `compliance` per group.
-  DistanceConstraintSet(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length,
-                        std::span<const double> compliance);
+  // A set on a shared layout, at rest where the particles `x` are (each rest length is the distance
+  // between its particles there), with `compliance` per group; its arrays at `slots` in `block`,
+  // which the caller keeps (a tire: its one block).
+  DistanceConstraintSet(std::shared_ptr<const DistanceLayout> layout, std::span<const Vec2> x,
+                        std::span<const double> compliance, ArrayBlock& block, const Slots& slots);
 
   ConstraintView constraints() const { return ConstraintView(this); }
   DistanceConstraint constraint(std::size_t k) const;
@@ -175,33 +211,24 @@ class DistanceConstraintSet {
   void set_kernel(Kernel kernel) { kernel_ = kernel; }
 
  private:
-  // What a sweep reads and writes of this set's own for four constraints, 64 bytes: in a scene of a
-  // thousand tires these are most of what streams from memory every substep (the shared Lanes of
-  // a shape stay in cache). A batch that is not full repeats its first lane.
-  struct alignas(32) LaneState {
-    double rest_length[kLanes];
-    double lambda[kLanes];
-  };
-  static_assert(sizeof(LaneState) == 16 * kLanes);
-  // What the four lanes of a batch share, one per class of the layout.
-  struct Params {
-    double compliance = 0.0;  // α
-    double w_a = 0.0;
-    double w_b = 0.0;
-    double alpha_tilde = 0.0;      // α̃ = α/h²
-    double inv_denominator = 0.0;  // 1 / (w_a + w_b + α̃); 0 for a pinned pair
-    double damping = 0.0;          // τh / (α + τhW): dashpot impulse per unit of dC/dt
-  };
-  // Puts this set on `layout`, its rest lengths (per constraint) into the lanes; λ = 0.
-  void adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> rest_length);
+  // Puts this set on `layout` with `compliance` per group, its arrays at `slots` in `block`; rest
+  // lengths and λ 0, not prepared.
+  void adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> compliance,
+             ArrayBlock& block, const Slots& slots);
+  // The same, in a block of its own.
+  void adopt(std::shared_ptr<const DistanceLayout> layout, std::span<const double> compliance);
+  // Constraint k's rest length, in its lane and in the lanes that repeat it (a batch not full).
+  void set_rest_length(std::size_t k, double rest_length);
 
   std::shared_ptr<const DistanceLayout> layout_;
-  std::vector<LaneState> state_;    // per batch of the layout
-  std::vector<Params> params_;      // per class of the layout
-  std::vector<double> compliance_;  // per group
-  std::vector<double> w_built_;     // the inverse masses the params were derived for (empty: none yet)
-  std::vector<double> pending_;     // per constraint: compliances set by range, not yet grouped
+  ArrayView<LaneState> state_;    // per batch of the layout
+  ArrayView<Params> params_;      // per class of the layout
+  ArrayView<double> compliance_;  // per group
+  ArrayView<double> w_built_;     // the inverse masses the params were derived for (when prepared_)
+  bool prepared_ = false;         // prepare() has run since the layout was adopted
+  std::vector<double> pending_;   // per constraint: compliances set by range, not yet grouped (tuning)
   Kernel kernel_ = Kernel::automatic;
+  ArrayBlock own_;  // the arrays' block when they have one of their own; empty in a tire's
 };
 
 }  // namespace tire
