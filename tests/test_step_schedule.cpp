@@ -134,17 +134,7 @@ TEST_CASE("a world with one tire steps it exactly as the plain substep loop does
     const TickInput input = input_at(tick);
     world.step(input);
 
-    tire.control.steer = input.steer;
-    tire.control.jump = input.jump;
-    rigid.begin_tick(config.dt);
-    begin_tick(tire, config, rigid);
-    const double h = config.dt / config.substeps;
-    SubstepContext ctx{h, 0.0, gravity, &config, &rigid};
-    for (int s = 0; s < config.substeps; ++s) {
-      ctx.time = s * h;
-      substep(tire, ctx, rigid);
-    }
-    rigid.end_tick(config.dt);
+    tick_lone_tire(tire, rigid, config, gravity, input);
 
     CAPTURE(tick);
     const Tire& stepped = world.tires().front();

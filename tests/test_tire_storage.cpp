@@ -33,20 +33,8 @@ bool same_bytes(std::span<const T> a, std::span<const T> b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
 }
 
-// One tick of a tire on its own, as a world of one tire steps it (tests/test_step_schedule.cpp
-// shows the two agree bit for bit).
 void tick(Tire& t, RigidWorld& rigid, const SolverConfig& config, const TickInput& input) {
-  t.control.steer = input.steer;
-  t.control.jump = input.jump;
-  rigid.begin_tick(config.dt);
-  begin_tick(t, config, rigid);
-  const double h = config.dt / config.substeps;
-  SubstepContext ctx{h, 0.0, kGravity, &config, &rigid};
-  for (int s = 0; s < config.substeps; ++s) {
-    ctx.time = s * h;
-    substep(t, ctx, rigid);
-  }
-  rigid.end_tick(config.dt);
+  tick_lone_tire(t, rigid, config, kGravity, input);
 }
 
 RigidWorld ground_with_a_bump() {

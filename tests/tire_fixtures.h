@@ -5,6 +5,7 @@
 
 #include "tire/io/level.h"
 #include "tire/session/level_session.h"
+#include "tire/tire/tire_solver.h"
 
 namespace tire::test {
 
@@ -32,6 +33,24 @@ inline World flat_world(const TireSpec& spec, const SolverConfig& config = {}, V
   world.add_obstacle({{{-1000, -10}, {1000, 0}}});
   world.add_tire(spec);
   return world;
+}
+
+// One tick of a tire on its own, by hand: begin_tick, then substep() for each substep, between the
+// rigid world's begin_tick and end_tick. tests/test_step_schedule.cpp shows a World of one tire
+// steps it to the same bits.
+inline void tick_lone_tire(Tire& t, RigidWorld& rigid, const SolverConfig& config, Vec2 gravity,
+                           const TickInput& input) {
+  t.control.steer = input.steer;
+  t.control.jump = input.jump;
+  rigid.begin_tick(config.dt);
+  begin_tick(t, config, rigid);
+  const double h = config.dt / config.substeps;
+  SubstepContext ctx{h, 0.0, gravity, &config, &rigid};
+  for (int s = 0; s < config.substeps; ++s) {
+    ctx.time = s * h;
+    substep(t, ctx, rigid);
+  }
+  rigid.end_tick(config.dt);
 }
 
 inline void run(World& world, int ticks, TickInput input = {}) {
