@@ -84,6 +84,17 @@ bool DistanceLayout::fits(const double* w) const {
   return true;
 }
 
+namespace {
+// The group of compliance α among `groups` (one per distinct compliance, in order of first use),
+// added when new.
+std::uint32_t compliance_group(std::vector<double>& groups, double alpha) {
+  const auto it = std::find(groups.begin(), groups.end(), alpha);
+  if (it != groups.end()) return static_cast<std::uint32_t>(it - groups.begin());
+  groups.push_back(alpha);
+  return static_cast<std::uint32_t>(groups.size() - 1);
+}
+}  // namespace
+
 DistanceConstraintSet::Slots DistanceConstraintSet::plan(BlockLayout& block_layout,
                                                          const DistanceLayout& layout) {
   return {block_layout.add<LaneState>(layout.batch_count()),
@@ -102,9 +113,7 @@ DistanceConstraintSet::DistanceConstraintSet(const std::vector<DistanceConstrain
                 "a rest length is negative, NaN or infinite");
     TIRE_ASSERT(c.compliance >= 0.0 && std::isfinite(c.compliance),
                 "a compliance is negative, NaN or infinite");
-    const auto it = std::find(compliance.begin(), compliance.end(), c.compliance);
-    group.push_back(static_cast<std::uint32_t>(it - compliance.begin()));
-    if (it == compliance.end()) compliance.push_back(c.compliance);
+    group.push_back(compliance_group(compliance, c.compliance));
     pairs.push_back({c.a, c.b});
   }
   adopt(std::make_shared<const DistanceLayout>(std::move(pairs), std::move(group)), compliance);
@@ -206,9 +215,7 @@ void DistanceConstraintSet::prepare(const double* w, double h, double tau) {
       std::vector<double> compliance;  // per group
       std::vector<std::uint32_t> group(size());
       for (std::size_t k = 0; k < size(); ++k) {
-        const auto it = std::find(compliance.begin(), compliance.end(), per_constraint[k]);
-        group[k] = static_cast<std::uint32_t>(it - compliance.begin());
-        if (it == compliance.end()) compliance.push_back(per_constraint[k]);
+        group[k] = compliance_group(compliance, per_constraint[k]);
       }
       adopt(std::make_shared<const DistanceLayout>(layout_->pairs(), std::move(group), w), compliance);
       for (std::size_t k = 0; k < rest_length.size(); ++k) set_rest_length(k, rest_length[k]);
