@@ -200,17 +200,72 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
     if (!hit || !(hit->depth > ctx.config->contact_slop)) continue;
     if (existing >= 0 && !(hit->depth > depth_[static_cast<std::size_t>(existing)]))
       continue;  // keep the deeper
-    const Contact c =
-        make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity);
-    if (existing >= 0) {
-      contacts_[static_cast<std::size_t>(existing)] = c;
-    } else {
-      contact_of_[i] = static_cast<std::int32_t>(contacts_.size());
-      contacts_.push_back(c);
-    }
-    depth_[static_cast<std::size_t>(contact_of_[i])] = hit->depth;
+    offer(make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity),
+          hit->depth);
   }
+  find_tire_contacts(t, ctx, dx, first_new);
   return contacts_.size() > first_new;
+}
+
+void GlobalSolver::offer(const Contact& c, double depth) {
+  const std::int32_t existing = contact_of_[c.particle];
+  if (existing >= 0) {
+    contacts_[static_cast<std::size_t>(existing)] = c;
+  } else {
+    contact_of_[c.particle] = static_cast<std::int32_t>(contacts_.size());
+    contacts_.push_back(c);
+  }
+  depth_[static_cast<std::size_t>(contact_of_[c.particle])] = depth;
+}
+
+// A tread particle p inside a neighbour's tread, against the edge (b₀, b₁) it crossed, at s along it:
+// C = n·(p − (1−s) b₀ − s b₁) ≥ 0 with the edge as captured (a plane for this iteration), and the
+// neighbour's give as a rigid body at that point in the row's compliance, so that p takes its share
+// of the correction and the neighbour the rest (its reaction, tire_neighbours.h). Static friction
+// against the edge's motion, with the tires' mixed friction.
+void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, const double* dx,
+                                      std::size_t first_new) {
+  const TireNeighbours* neighbours = ctx.neighbours;
+  if (!neighbours) return;
+  const Particles& p = t.particles;
+  for (const std::uint32_t other : neighbours->neighbours(neighbours->index_of(t))) {
+    const TreadView tread = neighbours->tread(other);
+    const double reach2 = tread.reach * tread.reach;
+    const double mu = mix_friction(t.spec.friction, tread.tire->spec.friction);
+    for (std::uint32_t i = 0; i < t.n; ++i) {
+      const std::int32_t existing = contact_of_[i];
+      if (existing >= 0 && static_cast<std::size_t>(existing) < first_new) continue;
+      Vec2 x = p.x[i];
+      if (dx) x += at(dx, dof_of(i, t.n));
+      const Vec2 d = x - tread.hub;
+      if (length_squared(d) >= reach2) continue;  // outside the tread's bounding circle
+      const std::uint32_t k = tread_edge_towards(tread.x, tread.n, tread.hub, d);
+      const std::uint32_t k1 = (k + 1) % tread.n;
+      const Vec2 e = tread.x[k1] - tread.x[k];
+      const double e2 = length_squared(e);
+      if (!(e2 > 0.0)) continue;
+      const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward: treads run counter-clockwise
+      const double depth = -dot(normal, x - tread.x[k]);
+      if (!(depth > ctx.config->contact_slop)) continue;
+      if (existing >= 0 && !(depth > depth_[static_cast<std::size_t>(existing)])) continue;  // keep the deeper
+      const double s = std::clamp(dot(x - tread.x[k], e) / e2, 0.0, 1.0);
+      const Vec2 point = tread.x[k] * (1.0 - s) + tread.x[k1] * s;
+      Contact c;
+      c.particle = i;
+      c.normal = normal;
+      c.plane = dot(normal, tread.x[k]);
+      c.surface_displacement = tread.motion[k] * (1.0 - s) + tread.motion[k1] * s;
+      c.surface_velocity = c.surface_displacement * (1.0 / ctx.h);
+      c.tire = static_cast<std::int32_t>(other);
+      c.edge = k;
+      c.point = point;
+      c.mu_static = c.mu_kinetic = mu;
+      c.friction_active = mu > 0.0;
+      c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + 2.0 * tread.give(point, normal));
+      c.stiffness_t = 1.0 / (rigid_alpha_tilde_ + tread.give(point, perp(normal)));
+      offer(c, depth);
+    }
+  }
 }
 
 bool GlobalSolver::solve_pass(const Tire& t) {
@@ -354,7 +409,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   // they stuck), so a resting tire does not lose its support between iterations.
   t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& rec = t.contacts[i];
-    if (!rec.active) return;
+    if (!rec.active || rec.tire >= 0) return;  // a neighbour's tread moves: found again below
     const ContactPair pair{i, 0, rec.prop >= 0, rec.mu_static, rec.mu_kinetic};
     Contact c = make_contact(t, ctx, i, rec.normal, rec.plane, pair, rec.prop, rec.surface_velocity);
     c.friction_active = rec.stuck;
@@ -413,6 +468,16 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
     rec.active = true;
     rec.stuck = c.friction_active;
     rec.plane = c.plane;
+    rec.tire = c.tire;
+    if (c.tire >= 0) {
+      // The neighbour's edge takes −μ: the whole of this iteration's, as its plane was taken where
+      // the edge stood after the last one's.
+      const double g = ctx.config->ground_normal_y;
+      const Vec2 push = c.normal * c.mu_n + perp(c.normal) * c.mu_t;
+      ctx.neighbours->reactions(ctx.neighbours->index_of(t))
+          .push_back({static_cast<std::uint32_t>(c.tire), c.edge, c.point, push, c.normal.y <= -g});
+      if (c.normal.y >= g) t.on_tire[c.particle] = 1;  // resting on the neighbour
+    }
     owe(rec, c.particle, rec.lambda_n - before.lambda_n, rec.lambda_t - before.lambda_t);
     ++counts_.contacts;
   }

@@ -151,6 +151,10 @@ Ring tread_of(Tire& t) {
 
 }  // namespace
 
+std::uint32_t tread_edge_towards(const Vec2* x, std::uint32_t n, Vec2 hub, Vec2 d) {
+  return wedge_edge(x, n, hub, d, Guess::pseudo_angle);
+}
+
 void solve_tire_contact(Tire& a, Tire& b, double ground_normal_y) {
   // Bounding circles apart: nothing to do.
   const double reach = a.tread_reach + b.tread_reach;

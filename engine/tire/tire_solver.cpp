@@ -180,7 +180,9 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
   std::copy(t.on_tire.begin(), t.on_tire.end(), t.grounded_flags.begin());
   t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& c = t.contacts[i];
-    const Vec2 dv = apply_kinetic_friction(p.v[i], c, ctx.h);
+    // Against another tire, friction is static only, in the position solve (as the Gauss–Seidel
+    // contact between tires has it): the other tire could not take a kinetic impulse back here.
+    const Vec2 dv = c.tire >= 0 ? Vec2{} : apply_kinetic_friction(p.v[i], c, ctx.h);
     if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
       t.prop_impulses.push_back(
           {static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});

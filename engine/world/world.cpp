@@ -224,14 +224,20 @@ void World::step(const TickInput& input) {
   tire_pairs_.clear();
   if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
   color_pairs();
+  // The global method solves the contacts between tires inside each tire's system instead
+  // (tire_neighbours.h): each tire's neighbours.
+  const bool neighbours = config_.method == SolverMethod::global && !tire_pairs_.empty();
+  if (neighbours) neighbours_.set_pairs(tires_.size(), tire_pairs_);
 
   const double h = config_.dt / config_.substeps;
-  SubstepContext ctx{h, 0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty(), &global_};
+  SubstepContext ctx{h,        0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty(), &global_,
+                     neighbours ? &neighbours_ : nullptr};
   if (schedule_ == StepSchedule::fused) {
     fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
   } else {
     for (int s = 0; s < config_.substeps; ++s) {
       ctx.time = s * h;
+      capture_treads(ctx, 0);
       // Predict: v ← v + h f_ext/m;  x_prev ← x;  x ← x + h v.
       predict(ctx);
       // Solve positions: constraints and contacts (the paper takes one iteration a substep).
@@ -260,9 +266,26 @@ void World::predict(const SubstepContext& ctx) {
 // pushed crate gives way in the next; then the contacts between tires.
 void World::solve_positions(const SubstepContext& ctx, int iteration) {
   const bool last = iteration + 1 == config_.iterations;
+  if (iteration > 0) capture_treads(ctx, iteration);
   sweep_tires([&](Tire& t) { solve_iteration(t, ctx, last); });
   hand_over_impulses();
-  solve_tire_pairs();
+  between_tires(ctx);
+}
+
+// The global method's treads as the iteration's contacts between tires see them: at the substep's
+// start (before the prediction, the same in both schedules) carried on by their last motion, and
+// where they are for a later iteration.
+void World::capture_treads(const SubstepContext& ctx, int iteration) {
+  if (ctx.neighbours) neighbours_.capture(tires_, iteration == 0);
+}
+
+// After each iteration's sweep: the contacts between tires, by Gauss–Seidel pair by pair, or (the
+// global method) the reactions the tires' solves owe their neighbours.
+void World::between_tires(const SubstepContext& ctx) {
+  if (ctx.neighbours)
+    neighbours_.apply_reactions(tires_);
+  else
+    solve_tire_pairs();
 }
 
 // Update velocities (end_substep): v ← (x − x_prev)/h, then the velocity-level pass: kinetic
@@ -293,13 +316,14 @@ void World::fused_substeps(SubstepContext ctx) {
     ctx.time = s * ctx.h;
     const bool velocity_pass_here = s > 0 && carry_velocity_pass;
     if (s > 0 && !carry_velocity_pass) update_velocities(previous);
+    capture_treads(ctx, 0);
     sweep_tires([&](Tire& t) {
       if (velocity_pass_here) end_substep(t, previous);  // the previous substep's update velocities
       begin_substep(t, ctx);                             // predict
       solve_iteration(t, ctx, config_.iterations == 1);  // solve positions, first iteration
     });
     hand_over_impulses();
-    solve_tire_pairs();
+    between_tires(ctx);
     for (int it = 1; it < config_.iterations; ++it) solve_positions(ctx, it);
     previous = ctx;
   }
@@ -347,6 +371,7 @@ void World::reserve_global_solvers() {
   std::uint32_t segments = 0;
   for (const Tire& t : tires_) segments = std::max(segments, t.n);
   global_.reserve(threads_, segments);
+  neighbours_.reserve(tires_, 4 * tires_.size());
 }
 
 template <typename F>

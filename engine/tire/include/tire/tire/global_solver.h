@@ -73,6 +73,9 @@ class GlobalSolver {
     Vec2 surface_displacement;  // of the surface point over the substep (moving props)
     Vec2 surface_velocity;
     std::int32_t prop = -1;  // the prop, or −1 for an obstacle
+    std::int32_t tire = -1;  // or the other tire (tire_neighbours.h), against its tread edge at point
+    std::uint32_t edge = 0;
+    Vec2 point;
     double mu_static = 0.0;
     double mu_kinetic = 0.0;
     double stiffness_n = 0.0;  // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
@@ -88,9 +91,15 @@ class GlobalSolver {
   double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
   Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal,
                        double plane, const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity) const;
-  // Finds the particles of `t` that penetrate a surface at x + dx (dx null: at x) and have no
-  // contact yet, and adds a contact for each. True when any was added.
+  // Finds the particles of `t` that penetrate a surface (an obstacle, a prop or a neighbour's tread)
+  // at x + dx (dx null: at x) and have no contact yet, and adds a contact for each, the deepest
+  // where a particle meets several. True when any was added.
   bool find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx);
+  // find_contacts' share for the neighbours' treads: a tread particle inside one, against the edge
+  // it crossed; `first_new` as there.
+  void find_tire_contacts(const Tire& t, const SubstepContext& ctx, const double* dx, std::size_t first_new);
+  // Puts c in the system, in place of the particle's contact if it has one; `depth` its penetration.
+  void offer(const Contact& c, double depth);
   // One active-set pass: K with the active contacts, factored; the capacitance rows solved; Δx and
   // each contact's multipliers. False when K could not be factored (not finite).
   bool solve_pass(const Tire& t);

@@ -41,6 +41,11 @@ class TirePairFinder {
 // Room for what the constraints move a particle within a tick, beyond its velocity (m).
 inline constexpr double kTirePairSkin = 0.05;
 
+// The edge (x_k, x_k+1) of a tread of n particles whose wedge from `hub` holds the direction d: the
+// edge a particle at hub + d would cross. A tread holds its shape, so it is star-shaped about its
+// hub; the edge is guessed from the angle and confirmed by a short walk.
+std::uint32_t tread_edge_towards(const Vec2* x, std::uint32_t n, Vec2 hub, Vec2 d);
+
 // One iteration of contacts between two tires, both ways. Uses each tire's tread_hub and
 // tread_reach from its own iteration. `ground_normal_y` marks particles that
 // rest on the other tire as grounded (a tire can jump off a pile).

@@ -4,6 +4,7 @@
 
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
+#include "tire/tire/tire_neighbours.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
 
@@ -17,6 +18,8 @@ struct SubstepContext {
   const RigidWorld* rigid = nullptr;   // obstacles and props, read only while tires are solved
   bool tire_pairs = false;             // contacts between tires follow each iteration: keep tread bounds
   GlobalSolverPool* global = nullptr;  // the global method's solvers (SolverMethod::global only)
+  // The global method's contacts between tires: the neighbours' treads (null: none, a lone tire).
+  const TireNeighbours* neighbours = nullptr;
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and

@@ -14,6 +14,7 @@
 #include "tire/math/worker_pool.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
+#include "tire/tire/tire_neighbours.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
@@ -128,6 +129,8 @@ class World {
   // Between sweeps: the reaction impulses the tires owe props, and the contacts between tires.
   void hand_over_impulses();
   void solve_tire_pairs();
+  void capture_treads(const SubstepContext& ctx, int iteration);
+  void between_tires(const SubstepContext& ctx);
   void guard_divergence(Tire& t);
   void color_pairs();
   // Whether no two pairs of one parallel colour share a tire (a check for TIRE_ASSERT: it rebuilds
@@ -160,6 +163,7 @@ class World {
   std::unique_ptr<WorkerPool> pool_;  // made on first need
   // The global method's scratch, one solver a thread, sized for the largest tire (add_tire).
   GlobalSolverPool global_;
+  TireNeighbours neighbours_;  // the global method's contacts between tires
   void reserve_global_solvers();
   std::optional<TireId> player_;
   TireId next_id_ = 0;

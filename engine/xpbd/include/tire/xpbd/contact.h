@@ -103,6 +103,7 @@ struct ContactRecord {
   // lambda_n), along perp(normal).
   double plane = 0.0;
   double lambda_t = 0.0;
+  std::int32_t tire = -1;  // the global method's: the other tire's index in the world, or −1
 };
 
 // Friction of two surfaces in contact, mixed as Box2D's b2MixFriction does.
