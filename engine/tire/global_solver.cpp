@@ -261,7 +261,7 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
       c.point = point;
       c.mu_static = c.mu_kinetic = mu;
       c.friction_active = mu > 0.0;
-      c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + 2.0 * tread.give(point, normal));
+      c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + tread.give(point, normal));
       c.stiffness_t = 1.0 / (rigid_alpha_tilde_ + tread.give(point, perp(normal)));
       offer(c, depth);
     }

@@ -12,6 +12,10 @@ void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) 
   for (const Tire& t : tires) particles += t.n;
   adjacency_begin_.reserve(tires.size() + 1);
   adjacency_.reserve(2 * pairs);
+  colour_.reserve(tires.size());
+  colour_seen_.reserve(tires.size() + 1);
+  colour_begin_.reserve(tires.size() + 2);
+  by_colour_.reserve(tires.size());
   offset_.reserve(tires.size() + 1);
   x_.reserve(particles);
   motion_.reserve(particles);
@@ -43,9 +47,31 @@ void TireNeighbours::set_pairs(std::size_t tire_count, const std::vector<TirePai
   }
   for (std::size_t i = tire_count; i > 0; --i) adjacency_begin_[i] = adjacency_begin_[i - 1];
   adjacency_begin_[0] = 0;
+
+  // Greedy colouring in tire order: at most (a tire's neighbours + 1) colours.
+  constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  colour_.assign(tire_count, kNone);
+  colour_seen_.assign(tire_count + 1, kNone);
+  std::uint32_t count = 0;
+  for (std::uint32_t i = 0; i < tire_count; ++i) {
+    for (const std::uint32_t j : neighbours(i))
+      if (colour_[j] != kNone) colour_seen_[colour_[j]] = i;
+    std::uint32_t c = 0;
+    while (colour_seen_[c] == i) ++c;
+    colour_[i] = c;
+    count = std::max(count, c + 1);
+  }
+  // Counting sort by colour, keeping tire order within one.
+  colour_begin_.assign(count + 1, 0);
+  for (const std::uint32_t c : colour_) ++colour_begin_[c + 1];
+  for (std::uint32_t c = 0; c < count; ++c) colour_begin_[c + 1] += colour_begin_[c];
+  by_colour_.resize(tire_count);
+  for (std::uint32_t i = 0; i < tire_count; ++i) by_colour_[colour_begin_[colour_[i]]++] = i;
+  for (std::uint32_t c = count; c > 0; --c) colour_begin_[c] = colour_begin_[c - 1];
+  colour_begin_[0] = 0;
 }
 
-void TireNeighbours::capture(const std::vector<Tire>& tires, bool extrapolate) {
+void TireNeighbours::capture(const std::vector<Tire>& tires) {
   first_ = tires.data();
   offset_.resize(tires.size() + 1);
   offset_[0] = 0;
@@ -65,7 +91,7 @@ void TireNeighbours::capture(const std::vector<Tire>& tires, bool extrapolate) {
     Vec2 hub;
     for (std::uint32_t k = 0; k < t.n; ++k) {
       motion[k] = t.particles.x[k] - t.particles.x_prev[k];
-      x[k] = extrapolate ? t.particles.x[k] + motion[k] : t.particles.x[k];
+      x[k] = t.particles.x[k];
       hub += x[k];
     }
     hub = hub / static_cast<double>(t.n);
@@ -89,10 +115,11 @@ TreadView TireNeighbours::tread(std::uint32_t tire) const {
           reach_[tire],
           b.centroid,
           b.inverse_mass,
-          b.inverse_inertia};
+          b.inverse_inertia,
+          static_cast<double>(std::max<std::size_t>(1, neighbours(tire).size()))};
 }
 
-void TireNeighbours::apply_reactions(std::vector<Tire>& tires) const {
+void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h) const {
   // Summed per neighbour first (in tire order, then in each tire's order), then one rigid
   // displacement each, about its centroid as it is now.
   bool any = false;
@@ -113,9 +140,27 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires) const {
     const RigidMotion rigid = t.rigid_motion();
     // The angular push was taken about the captured centroid; moved to the current one.
     const double angular = angular_[i] + cross(body_[i].centroid - rigid.centroid, linear_[i]);
-    const Vec2 shift = linear_[i] * (1.0 / t.total_mass());
-    const double turn = rigid.inertia > 0.0 ? angular / rigid.inertia : 0.0;
-    for (Vec2& x : t.particles.x) x -= shift + perp(x - rigid.centroid) * turn;
+    Vec2 shift = linear_[i] * (1.0 / t.total_mass());
+    double turn = rigid.inertia > 0.0 ? angular / rigid.inertia : 0.0;
+    // The anti-tunnelling clamp: the farthest any particle would move, scaled to the limit.
+    double farthest2 = 0.0;
+    for (const Vec2& x : t.particles.x)
+      farthest2 = std::max(farthest2, length_squared(shift + perp(x - rigid.centroid) * turn));
+    const double limit = tunnel_clamp * t.segment_length;
+    if (farthest2 > limit * limit) {
+      const double scale = limit / std::sqrt(farthest2);
+      shift = shift * scale;
+      turn *= scale;
+    }
+    // The push is an impulse: it moves the particles and their velocities alike, so that the
+    // inertial target x̃ = xₙ + h v of the tire's own solve (global_solver.h) moves with them and a
+    // later solve of this substep does not pull the tire back (which lost a collision's momentum).
+    Particles& p = t.particles;
+    for (std::size_t k = 0; k < p.x.size(); ++k) {
+      const Vec2 dx = shift + perp(p.x[k] - rigid.centroid) * turn;
+      p.x[k] -= dx;
+      p.v[k] -= dx * (1.0 / h);
+    }
     linear_[i] = Vec2{};
     angular_[i] = 0.0;
   }

@@ -232,12 +232,14 @@ void World::step(const TickInput& input) {
   const double h = config_.dt / config_.substeps;
   SubstepContext ctx{h,        0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty(), &global_,
                      neighbours ? &neighbours_ : nullptr};
-  if (schedule_ == StepSchedule::fused) {
+  // (The fused schedule runs a substep's prediction and first iteration in one sweep; with the
+  // contacts between tires in the global solves, the tires take their turns by colour, each after
+  // every prediction: the plain loop.)
+  if (schedule_ == StepSchedule::fused && !neighbours) {
     fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
   } else {
     for (int s = 0; s < config_.substeps; ++s) {
       ctx.time = s * h;
-      capture_treads(ctx, 0);
       // Predict: v ← v + h f_ext/m;  x_prev ← x;  x ← x + h v.
       predict(ctx);
       // Solve positions: constraints and contacts (the paper takes one iteration a substep).
@@ -266,26 +268,28 @@ void World::predict(const SubstepContext& ctx) {
 // pushed crate gives way in the next; then the contacts between tires.
 void World::solve_positions(const SubstepContext& ctx, int iteration) {
   const bool last = iteration + 1 == config_.iterations;
-  if (iteration > 0) capture_treads(ctx, iteration);
+  if (ctx.neighbours) {
+    solve_by_tire_colour(ctx, last);
+    hand_over_impulses();
+    return;
+  }
   sweep_tires([&](Tire& t) { solve_iteration(t, ctx, last); });
   hand_over_impulses();
-  between_tires(ctx);
+  solve_tire_pairs();
 }
 
-// The global method's treads as the iteration's contacts between tires see them: at the substep's
-// start (before the prediction, the same in both schedules) carried on by their last motion, and
-// where they are for a later iteration.
-void World::capture_treads(const SubstepContext& ctx, int iteration) {
-  if (ctx.neighbours) neighbours_.capture(tires_, iteration == 0);
-}
-
-// After each iteration's sweep: the contacts between tires, by Gauss–Seidel pair by pair, or (the
-// global method) the reactions the tires' solves owe their neighbours.
-void World::between_tires(const SubstepContext& ctx) {
-  if (ctx.neighbours)
-    neighbours_.apply_reactions(tires_);
-  else
-    solve_tire_pairs();
+// The global method with tires in contact: block Gauss–Seidel between tires (tire_neighbours.h).
+// A colour at a time, its tires solved in parallel against their neighbours' treads as the colours
+// before left them; then the pushes they owe the neighbours, in tire order.
+void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
+  for (std::size_t c = 0; c < neighbours_.colours(); ++c) {
+    const std::span<const std::uint32_t> tires = neighbours_.tires_of_colour(c);
+    neighbours_.capture(tires_);
+    for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t k = b; k < e; ++k) solve_iteration(tires_[tires[k]], ctx, last);
+    });
+    neighbours_.apply_reactions(tires_, config_.tunnel_clamp, ctx.h);
+  }
 }
 
 // Update velocities (end_substep): v ← (x − x_prev)/h, then the velocity-level pass: kinetic
@@ -316,14 +320,13 @@ void World::fused_substeps(SubstepContext ctx) {
     ctx.time = s * ctx.h;
     const bool velocity_pass_here = s > 0 && carry_velocity_pass;
     if (s > 0 && !carry_velocity_pass) update_velocities(previous);
-    capture_treads(ctx, 0);
     sweep_tires([&](Tire& t) {
       if (velocity_pass_here) end_substep(t, previous);  // the previous substep's update velocities
       begin_substep(t, ctx);                             // predict
       solve_iteration(t, ctx, config_.iterations == 1);  // solve positions, first iteration
     });
     hand_over_impulses();
-    between_tires(ctx);
+    solve_tire_pairs();
     for (int it = 1; it < config_.iterations; ++it) solve_positions(ctx, it);
     previous = ctx;
   }

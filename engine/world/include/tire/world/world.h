@@ -129,8 +129,7 @@ class World {
   // Between sweeps: the reaction impulses the tires owe props, and the contacts between tires.
   void hand_over_impulses();
   void solve_tire_pairs();
-  void capture_treads(const SubstepContext& ctx, int iteration);
-  void between_tires(const SubstepContext& ctx);
+  void solve_by_tire_colour(const SubstepContext& ctx, bool last);
   void guard_divergence(Tire& t);
   void color_pairs();
   // Whether no two pairs of one parallel colour share a tire (a check for TIRE_ASSERT: it rebuilds
