@@ -112,9 +112,9 @@ TEST_CASE("a pile of tires in a box settles without overlaps or NaN", "[unit][so
   // between tires need the tires solved a colour at a time, mass splitting and the clamp on pushes
   // (tire_neighbours.h).
   SolverConfig config;
-  std::tie(config.method, config.substeps) = GENERATE(std::make_tuple(SolverMethod::gauss_seidel, 8),
-                                                      std::make_tuple(SolverMethod::global, 8),
-                                                      std::make_tuple(SolverMethod::global, 2));
+  std::tie(config.method, config.substeps) =
+      GENERATE(std::make_tuple(SolverMethod::gauss_seidel, 8), std::make_tuple(SolverMethod::global, 8),
+               std::make_tuple(SolverMethod::global, 2));
   CAPTURE(method_name(config.method), config.substeps);
   World world(config, {0, -9.81});
   world.add_obstacle({{{-10, -1}, {10, 0}}});

@@ -91,16 +91,18 @@ TEST_CASE("a push handed to a neighbour moves it as a rigid body: momentum kept"
     linear += dx * m;
     angular += cross(before[k] - rigid.centroid, dx) * m;
     for (std::size_t j = k + 1; j < before.size(); j += 7)  // it moved without deforming
-      stretch = std::max(stretch, std::abs(length(b.particles.x[k] - b.particles.x[j]) - length(before[k] - before[j])));
+      stretch = std::max(
+          stretch, std::abs(length(b.particles.x[k] - b.particles.x[j]) - length(before[k] - before[j])));
   }
   CHECK(linear.x == Approx(-push.x).margin(1e-12));
   CHECK(linear.y == Approx(-push.y).margin(1e-12));
   CHECK(angular == Approx(-cross(s.point - rigid.centroid, push)).margin(1e-12));
-  CHECK(stretch < 1e-6);  // a rotation's linearisation: second order in the turn
+  CHECK(stretch < 1e-6);                     // a rotation's linearisation: second order in the turn
   CHECK(s.neighbours.reactions(0).empty());  // handed over once
 }
 
-TEST_CASE("a push a substep could not carry is clamped to the anti-tunnelling limit", "[unit][soft][global]") {
+TEST_CASE("a push a substep could not carry is clamped to the anti-tunnelling limit",
+          "[unit][soft][global]") {
   Pushed s(Vec2{-5.0, 0.0});  // would move the 10 kg tire 0.5 m
   const Tire& b = s.tires[1];
   std::vector<Vec2> before(b.particles.x.begin(), b.particles.x.end());

@@ -200,8 +200,9 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
     if (!hit || !(hit->depth > ctx.config->contact_slop)) continue;
     if (existing >= 0 && !(hit->depth > depth_[static_cast<std::size_t>(existing)]))
       continue;  // keep the deeper
-    offer(make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity),
-          hit->depth);
+    offer(
+        make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity),
+        hit->depth);
   }
   find_tire_contacts(t, ctx, dx, first_new);
   return contacts_.size() > first_new;
@@ -247,7 +248,8 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
       const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward: treads run counter-clockwise
       const double depth = -dot(normal, x - tread.x[k]);
       if (!(depth > ctx.config->contact_slop)) continue;
-      if (existing >= 0 && !(depth > depth_[static_cast<std::size_t>(existing)])) continue;  // keep the deeper
+      if (existing >= 0 && !(depth > depth_[static_cast<std::size_t>(existing)]))
+        continue;  // keep the deeper
       const double s = std::clamp(dot(x - tread.x[k], e) / e2, 0.0, 1.0);
       const Vec2 point = tread.x[k] * (1.0 - s) + tread.x[k1] * s;
       Contact c;

@@ -230,8 +230,10 @@ void World::step(const TickInput& input) {
   if (neighbours) neighbours_.set_pairs(tires_.size(), tire_pairs_);
 
   const double h = config_.dt / config_.substeps;
-  SubstepContext ctx{h,        0.0, gravity_, &config_, &rigid_, !tire_pairs_.empty(), &global_,
-                     neighbours ? &neighbours_ : nullptr};
+  SubstepContext ctx{h,        0.0,
+                     gravity_, &config_,
+                     &rigid_,  !tire_pairs_.empty(),
+                     &global_, neighbours ? &neighbours_ : nullptr};
   // (The fused schedule runs a substep's prediction and first iteration in one sweep; with the
   // contacts between tires in the global solves, the tires take their turns by colour, each after
   // every prediction: the plain loop.)

@@ -108,11 +108,12 @@ std::unique_ptr<Steppable> flat_level() {
   return std::make_unique<WorldScene>(std::move(world));
 }
 
-// A walled pile: `count` default tires (28 segments, 8 substeps × 1 iteration unless said) stacked in rows in a
-// box as wide as about sqrt(count) tires, already touching, with soft–soft contacts on; optionally
-// with `crates` dynamic Box2D boxes mixed in.
+// A walled pile: `count` default tires (28 segments, 8 substeps × 1 iteration unless said) stacked in rows in
+// a box as wide as about sqrt(count) tires, already touching, with soft–soft contacts on; optionally with
+// `crates` dynamic Box2D boxes mixed in.
 std::unique_ptr<Steppable> pile(int count, int crates = 0,
-                                tire::SolverMethod method = tire::SolverMethod::gauss_seidel, int substeps = 8) {
+                                tire::SolverMethod method = tire::SolverMethod::gauss_seidel,
+                                int substeps = 8) {
   tire::SolverConfig config;
   config.method = method;
   config.substeps = substeps;
@@ -203,10 +204,14 @@ const Scene kScenes[] = {
     {"pile-100", "100 tires piled in a walled box", [] { return pile(100); }, {}},
     {"pile-1000", "1000 tires piled in a walled box", [] { return pile(1000); }, {}},
     {"mixed-200", "200 tires and 40 dynamic Box2D crates in a walled box", [] { return pile(200, 40); }, {}},
-    {"global-pile-100", "as pile-100, solved by the global method at 2 substeps x 1 iteration",
-     [] { return pile(100, 0, tire::SolverMethod::global, 2); }, {}},
-    {"global-pile-1000", "as pile-1000, solved by the global method at 2 substeps x 1 iteration",
-     [] { return pile(1000, 0, tire::SolverMethod::global, 2); }, {}},
+    {"global-pile-100",
+     "as pile-100, solved by the global method at 2 substeps x 1 iteration",
+     [] { return pile(100, 0, tire::SolverMethod::global, 2); },
+     {}},
+    {"global-pile-1000",
+     "as pile-1000, solved by the global method at 2 substeps x 1 iteration",
+     [] { return pile(1000, 0, tire::SolverMethod::global, 2); },
+     {}},
 };
 
 // The prototype's figure for its own scene, per 60 Hz frame (REFERENCE.md).

@@ -110,11 +110,11 @@ class TireNeighbours {
   const Tire* first_ = nullptr;
   std::vector<std::uint32_t> adjacency_begin_;
   std::vector<std::uint32_t> adjacency_;
-  std::vector<std::uint32_t> colour_;         // per tire
-  std::vector<std::uint32_t> colour_seen_;    // set_pairs' scratch: per colour, the last tire that saw it
-  std::vector<std::uint32_t> colour_begin_;   // per colour: its first tire in by_colour_
-  std::vector<std::uint32_t> by_colour_;      // the tires sorted by colour, in tire order within one
-  std::vector<std::uint32_t> offset_;  // per tire: its first tread particle in x_ and motion_
+  std::vector<std::uint32_t> colour_;        // per tire
+  std::vector<std::uint32_t> colour_seen_;   // set_pairs' scratch: per colour, the last tire that saw it
+  std::vector<std::uint32_t> colour_begin_;  // per colour: its first tire in by_colour_
+  std::vector<std::uint32_t> by_colour_;     // the tires sorted by colour, in tire order within one
+  std::vector<std::uint32_t> offset_;        // per tire: its first tread particle in x_ and motion_
   std::vector<Vec2> x_;
   std::vector<Vec2> motion_;
   std::vector<Vec2> hub_;

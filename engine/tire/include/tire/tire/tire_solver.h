@@ -4,9 +4,9 @@
 
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
-#include "tire/tire/tire_neighbours.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
+#include "tire/tire/tire_neighbours.h"
 
 namespace tire {
 

@@ -14,10 +14,10 @@
 #include "tire/math/worker_pool.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
-#include "tire/tire/tire_neighbours.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
+#include "tire/tire/tire_neighbours.h"
 
 namespace tire {
 
