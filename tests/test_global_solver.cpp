@@ -167,3 +167,24 @@ TEST_CASE("global: a chain of stiff links under load stretches by Σ α·load in
   CHECK(global_stretch == Approx(expected).epsilon(1e-3));
   CHECK(std::abs(gs_stretch - expected) > 0.5 * expected);
 }
+
+TEST_CASE("global: a free-spinning tire keeps its spin and its shape at any substep count",
+          "[unit][global][physics]") {
+  // No gravity, nothing to touch: angular momentum is conserved, and a rigid spin should go on as
+  // it is. Stepping along straight chords and projecting back onto the ring would take ω²h/3 of it
+  // a second (tire_solver.cpp, turn_velocities); damping a turn read as a shortening would squeeze
+  // the tire (global_solver.cpp, assemble).
+  SolverConfig config = global_config(GENERATE(1, 2, 8));
+  config.tunnel_clamp = 4.0;  // the tread's 12.5 m/s within it at one substep (the default allows 6.7)
+  CAPTURE(config.substeps);
+  World world(config, {0, 0});
+  TireSpec spec = tire_at({0, 0});
+  spec.angular_velocity = 25.0;  // the tread at 12.5 m/s: a tire flat out
+  world.add_tire(spec);
+  const double omega0 = world.tires()[0].angular_velocity();
+  run(world, 120);
+  const Tire& t = world.tires()[0];
+  CHECK(t.angular_velocity() == Approx(omega0).epsilon(0.005));
+  CHECK(t.area_ratio() == Approx(1.0).margin(0.002));
+  CHECK(length(t.velocity()) < 1e-9);
+}

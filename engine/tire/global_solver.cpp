@@ -59,7 +59,7 @@ void GlobalSolver::reserve(std::uint32_t segments) {
   gradient_.assign(segments, Vec2{});
 }
 
-// K = M + (1 + γ) Jᵀ α̃⁻¹ J and f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ J (x − xₙ)) over the distance
+// K = M + (1 + γ) Jᵀ α̃⁻¹ J and f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ ΔC) over the distance
 // constraints (XPBD eq. 9–10 and 26 in the primal form, see the header), without the contacts.
 void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gamma) {
   const std::uint32_t n = t.n;
@@ -90,7 +90,11 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     if (!(len > 0.0)) continue;  // coincident particles: no gradient (as in the Gauss–Seidel kernel)
     const Vec2 nrm = d / len;    // ∇_b C = n = −∇_a C
     const double inv_alpha_tilde = h * h / std::max(c.compliance, min_compliance);
-    const double rate = dot(nrm, (p.x[c.b] - p.x_prev[c.b]) - (p.x[c.a] - p.x_prev[c.a]));  // ∇C·(x − xₙ)
+    // The constraint's change over the substep, C(x) − C(xₙ): eq. 26's ∇C·(x − xₙ) to first order,
+    // but zero for a rigid turn, where the linearisation reads a turn by θ as a shortening by
+    // L(1 − cos θ), and damping then squeezed a fast-spinning tire (its area 96 % at 30 rad/s and
+    // 2 substeps). Its derivative is ∇C, as K's (1 + γ) factor has it.
+    const double rate = len - length(p.x_prev[c.b] - p.x_prev[c.a]);
     const double e = (len - c.rest_length + gamma * rate) * inv_alpha_tilde;
     const std::size_t ka = dof_of(c.a, n), kb = dof_of(c.b, n);
     base_f_[ka] += nrm.x * e;
@@ -115,7 +119,8 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
 }
 
 // An area constraint C = A(x) − p A₀ with compliance α, damped as the distance constraints are:
-// (g K⁻¹ gᵀ + α̃/(1 + γ)) μ = −(C + γ g·(x − xₙ))/(1 + γ) − g K⁻¹ f (XPBD eq. 26 divided by 1 + γ).
+// (g K⁻¹ gᵀ + α̃/(1 + γ)) μ = −(C + γ ΔC)/(1 + γ) − g K⁻¹ f (XPBD eq. 26 divided by 1 + γ, with
+// ΔC = C(x) − C(xₙ) for its g·(x − xₙ): see assemble).
 void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma) {
   const AreaConstraint& c = rim ? t.rim_area_constraint : t.area_constraint;
   if (c.count < 3) return;  // no polygon (tests build chains from a tire's particles)
@@ -123,15 +128,14 @@ void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, b
   polygon_area_gradient(p.x.data() + c.first, c.count, gradient_.data());
   double* g = gradient_of(rows_.size());
   std::fill(g, g + CyclicBlockCholesky::kBlock * t.n, 0.0);
-  double rate = 0.0;
   for (std::uint32_t k = 0; k < c.count; ++k) {
-    const std::uint32_t i = c.first + k;
-    const std::size_t d = dof_of(i, t.n);
+    const std::size_t d = dof_of(c.first + k, t.n);
     g[d] = gradient_[k].x;
     g[d + 1] = gradient_[k].y;
-    rate += dot(gradient_[k], p.x[i] - p.x_prev[i]);
   }
-  const double value = polygon_area(p.x.data() + c.first, c.count) - c.pressure * c.rest_area;
+  const double area = polygon_area(p.x.data() + c.first, c.count);
+  const double value = area - c.pressure * c.rest_area;
+  const double rate = area - polygon_area(p.x_prev.data() + c.first, c.count);  // C(x) − C(xₙ), as above
   Row row;
   row.alpha_tilde = c.compliance / (ctx.h * ctx.h) / (1.0 + gamma);
   row.b = -(value + gamma * rate) / (1.0 + gamma);

@@ -5,9 +5,10 @@
 // The system is XPBD's linearised step (Macklin et al. 2016, eq. 9–10) for all constraints at once.
 // Its distance constraints (α > 0) are taken in the primal form, which the Woodbury identity makes
 // equal to the dual form (J W Jᵀ + α̃) Δλ = −C − α̃ λ:
-//     K Δx = f + Gᵀ μ,   K = M + (1 + γ) Jᵀ α̃⁻¹ J,   f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ J (x − xₙ)),
+//     K Δx = f + Gᵀ μ,   K = M + (1 + γ) Jᵀ α̃⁻¹ J,   f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ ΔC),
 // with x̃ the predicted positions, xₙ those at the substep's start and γ = α̃ β̃ / h = τ / h the
-// constraint damping of XPBD eq. 26 for the tire's Kelvin–Voigt time τ (material_damping). K is
+// constraint damping of XPBD eq. 26 for the tire's Kelvin–Voigt time τ (material_damping), its
+// rate ∇C·(x − xₙ) taken as ΔC = C(x) − C(xₙ) (equal to first order; zero for a rigid turn). K is
 // the mass matrix plus the stiffness of every distance constraint: with the unknowns ordered
 // segment by segment it is block tridiagonal with a cyclic wrap (CyclicBlockCholesky).
 // Contacts are rows of one particle each, so they go into K too, as constraints of compliance
@@ -59,7 +60,7 @@ class GlobalSolver {
   // A row of the capacitance system: an area constraint or the grab.
   struct Row {
     double alpha_tilde = 0.0;  // α̃/(1 + γ)
-    double b = 0.0;            // the right-hand side: −(C + γ ∇C·(x − xₙ))/(1 + γ)
+    double b = 0.0;            // the right-hand side: −(C + γ ΔC)/(1 + γ)
     double yf = 0.0;           // (L⁻¹ g)·(L⁻¹ f)
     double mu = 0.0;           // its multiplier, from the last pass
   };
