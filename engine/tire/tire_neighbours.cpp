@@ -17,6 +17,7 @@ void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) 
   colour_begin_.reserve(tires.size() + 2);
   by_colour_.reserve(tires.size());
   offset_.reserve(tires.size() + 1);
+  pushed_.reserve(tires.size());
   x_.reserve(particles);
   motion_.reserve(particles);
   hub_.reserve(tires.size());
@@ -83,25 +84,33 @@ void TireNeighbours::capture(const std::vector<Tire>& tires) {
   body_.resize(tires.size());
   linear_.assign(tires.size(), Vec2{});
   angular_.assign(tires.size(), 0.0);
+  pushed_.clear();
   if (reactions_.size() < tires.size()) reactions_.resize(tires.size());
-  for (std::size_t i = 0; i < tires.size(); ++i) {
-    const Tire& t = tires[i];
-    Vec2* x = x_.data() + offset_[i];
-    Vec2* motion = motion_.data() + offset_[i];
-    Vec2 hub;
-    for (std::uint32_t k = 0; k < t.n; ++k) {
-      motion[k] = t.particles.x[k] - t.particles.x_prev[k];
-      x[k] = t.particles.x[k];
-      hub += x[k];
-    }
-    hub = hub / static_cast<double>(t.n);
-    double reach2 = 0.0;
-    for (std::uint32_t k = 0; k < t.n; ++k) reach2 = std::max(reach2, length_squared(x[k] - hub));
-    hub_[i] = hub;
-    reach_[i] = std::sqrt(reach2);
-    const RigidMotion rigid = t.rigid_motion();
-    body_[i] = {rigid.centroid, 1.0 / t.total_mass(), rigid.inertia > 0.0 ? 1.0 / rigid.inertia : 0.0};
+  for (std::size_t i = 0; i < tires.size(); ++i) capture_tire(tires[i], i);
+}
+
+void TireNeighbours::refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved) {
+  for (const std::uint32_t i : solved) capture_tire(tires[i], i);
+  for (const std::uint32_t i : pushed_) capture_tire(tires[i], i);
+  pushed_.clear();
+}
+
+void TireNeighbours::capture_tire(const Tire& t, std::size_t i) {
+  Vec2* x = x_.data() + offset_[i];
+  Vec2* motion = motion_.data() + offset_[i];
+  Vec2 hub;
+  for (std::uint32_t k = 0; k < t.n; ++k) {
+    motion[k] = t.particles.x[k] - t.particles.x_prev[k];
+    x[k] = t.particles.x[k];
+    hub += x[k];
   }
+  hub = hub / static_cast<double>(t.n);
+  double reach2 = 0.0;
+  for (std::uint32_t k = 0; k < t.n; ++k) reach2 = std::max(reach2, length_squared(x[k] - hub));
+  hub_[i] = hub;
+  reach_[i] = std::sqrt(reach2);
+  const RigidMotion rigid = t.rigid_motion();
+  body_[i] = {rigid.centroid, 1.0 / t.total_mass(), rigid.inertia > 0.0 ? 1.0 / rigid.inertia : 0.0};
 }
 
 TreadView TireNeighbours::tread(std::uint32_t tire) const {
@@ -136,6 +145,7 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
   if (!any) return;
   for (std::size_t i = 0; i < tires.size(); ++i) {
     if (linear_[i] == Vec2{} && angular_[i] == 0.0) continue;
+    pushed_.push_back(static_cast<std::uint32_t>(i));
     Tire& t = tires[i];
     const RigidMotion rigid = t.rigid_motion();
     // The angular push was taken about the captured centroid; moved to the current one.

@@ -284,13 +284,14 @@ void World::solve_positions(const SubstepContext& ctx, int iteration) {
 // A colour at a time, its tires solved in parallel against their neighbours' treads as the colours
 // before left them; then the pushes they owe the neighbours, in tire order.
 void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
+  neighbours_.capture(tires_);
   for (std::size_t c = 0; c < neighbours_.colours(); ++c) {
     const std::span<const std::uint32_t> tires = neighbours_.tires_of_colour(c);
-    neighbours_.capture(tires_);
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) solve_iteration(tires_[tires[k]], ctx, last);
     });
     neighbours_.apply_reactions(tires_, config_.tunnel_clamp, ctx.h);
+    if (c + 1 < neighbours_.colours()) neighbours_.refresh(tires_, tires);
   }
 }
 

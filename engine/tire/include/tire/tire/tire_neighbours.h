@@ -90,8 +90,11 @@ class TireNeighbours {
   std::span<const std::uint32_t> tires_of_colour(std::size_t c) const {
     return {by_colour_.data() + colour_begin_[c], by_colour_.data() + colour_begin_[c + 1]};
   }
-  // The treads where they are now, as the next colour's tires see them.
+  // The treads where they are now, as the next colour's tires see them: every tire (at the start
+  // of an iteration), or only those that moved since, the colour just `solved` and the tires its
+  // pushes moved (the rest are as captured, bit for bit).
   void capture(const std::vector<Tire>& tires);
+  void refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved);
   // The index in the world's tires of `tire`, one of the tires captured.
   std::uint32_t index_of(const Tire& tire) const { return static_cast<std::uint32_t>(&tire - first_); }
   std::span<const std::uint32_t> neighbours(std::uint32_t tire) const {
@@ -125,10 +128,13 @@ class TireNeighbours {
     double inverse_inertia = 0.0;
   };
   std::vector<Body> body_;
-  // apply_reactions' sums per tire: the linear and angular push, and whether any came.
+  void capture_tire(const Tire& t, std::size_t i);
+  // apply_reactions' sums per tire: the linear and angular push, and whether any came; the tires it
+  // moved, for refresh.
   mutable std::vector<Vec2> linear_;
   mutable std::vector<double> angular_;
   mutable std::vector<std::vector<TireReaction>> reactions_;
+  mutable std::vector<std::uint32_t> pushed_;
 };
 
 }  // namespace tire
