@@ -110,6 +110,7 @@ TEST_CASE("global: a resting tire's sag is its compliances', at any substep coun
   // Gauss–Seidel with the same material at 2 substeps: hundreds of times softer.
   if (factor == 1.0) {
     SolverConfig gs;
+    gs.method = SolverMethod::gauss_seidel;
     gs.substeps = 2;
     CHECK(rest_sag(gs, compliance) > 100.0 * sag2);
   }
@@ -159,6 +160,7 @@ TEST_CASE("global: a chain of stiff links under load stretches by Σ α·load in
   // Gauss–Seidel, one substep of one sweep, on the same chain.
   Tire gs_chain = hanging_chain(n, link, alpha, 1e-6);
   SolverConfig gs;
+  gs.method = SolverMethod::gauss_seidel;
   gs.substeps = 1;
   hang(gs_chain, gs, 3.0);
   const double gs_stretch = chain_stretch(gs_chain, n, link);

@@ -45,7 +45,9 @@ inline void tick_lone_tire(Tire& t, RigidWorld& rigid, const SolverConfig& confi
   rigid.begin_tick(config.dt);
   begin_tick(t, config, rigid);
   const double h = config.dt / config.substeps;
-  SubstepContext ctx{h, 0.0, gravity, &config, &rigid};
+  GlobalSolverPool global;  // the global method's solver (a test may allocate)
+  global.reserve(1, t.n);
+  SubstepContext ctx{h, 0.0, gravity, &config, &rigid, false, &global};
   for (int s = 0; s < config.substeps; ++s) {
     ctx.time = s * h;
     substep(t, ctx, rigid);

@@ -4,32 +4,36 @@
 #include <cmath>
 
 #include "tire/math/check.h"
+#include "tire/math/reserve_doubling.h"
 
 namespace tire {
 
 void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) {
   std::size_t particles = 0;
   for (const Tire& t : tires) particles += t.n;
-  adjacency_begin_.reserve(tires.size() + 1);
-  adjacency_.reserve(2 * pairs);
-  colour_.reserve(tires.size());
-  colour_seen_.reserve(tires.size() + 1);
-  colour_begin_.reserve(tires.size() + 2);
-  by_colour_.reserve(tires.size());
-  offset_.reserve(tires.size() + 1);
-  pushed_.reserve(tires.size());
-  x_.reserve(particles);
-  motion_.reserve(particles);
-  hub_.reserve(tires.size());
-  reach_.reserve(tires.size());
-  body_.reserve(tires.size());
-  linear_.reserve(tires.size());
-  angular_.reserve(tires.size());
+  reserve_doubling(adjacency_begin_, tires.size() + 1);
+  reserve_doubling(adjacency_, 2 * pairs);
+  reserve_doubling(colour_, tires.size());
+  reserve_doubling(colour_seen_, tires.size() + 1);
+  reserve_doubling(colour_begin_, tires.size() + 2);
+  reserve_doubling(by_colour_, tires.size());
+  reserve_doubling(offset_, tires.size() + 1);
+  reserve_doubling(pushed_, tires.size());
+  reserve_doubling(x_, particles);
+  reserve_doubling(motion_, particles);
+  reserve_doubling(hub_, tires.size());
+  reserve_doubling(reach_, tires.size());
+  reserve_doubling(body_, tires.size());
+  reserve_doubling(linear_, tires.size());
+  reserve_doubling(angular_, tires.size());
   // A tire owes at most one push per tread particle an iteration; a list's room stays with its
   // index, which a later tire may take (a removed one's slot): room for the largest tread.
   std::uint32_t largest = 0;
   for (const Tire& t : tires) largest = std::max(largest, t.n);
-  if (reactions_.size() < tires.size()) reactions_.resize(tires.size());
+  if (reactions_.size() < tires.size()) {
+    reserve_doubling(reactions_, tires.size());
+    reactions_.resize(tires.size());
+  }
   for (auto& list : reactions_) list.reserve(largest);
 }
 

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "tire/math/check.h"
+#include "tire/math/reserve_doubling.h"
 #include "tire/math/state_hash.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/soft_contact.h"
@@ -172,10 +173,10 @@ TireId World::add_tire(const TireSpec& spec) {
   // Room for the contacts between tires, so that stepping never allocates: a tire in a pile
   // touches at most six others, and a pair is counted once.
   const std::size_t pairs = 4 * tires_.size();
-  tire_pairs_.reserve(pairs);
-  colored_pairs_.reserve(pairs);
-  pair_color_.reserve(pairs);
-  tire_colors_.reserve(tires_.size());
+  reserve_doubling(tire_pairs_, pairs);
+  reserve_doubling(colored_pairs_, pairs);
+  reserve_doubling(pair_color_, pairs);
+  reserve_doubling(tire_colors_, tires_.size());
   reserve_global_solvers();
   return id;
 }

@@ -35,10 +35,22 @@ inline std::optional<SurfaceContact> box_contact(Vec2 p, const Aabb& box) {
   return best;
 }
 
+// The contact of p against the face of `box` whose outward normal is `normal` (an axis): the
+// distance from p back to that face's plane, along the normal; nullopt when p is on its outer side.
+inline std::optional<SurfaceContact> face_contact(Vec2 normal, Vec2 p, const Aabb& box) {
+  const double face = normal.x < 0   ? box.min.x
+                      : normal.x > 0 ? box.max.x
+                      : normal.y < 0 ? box.min.y
+                                     : box.max.y;
+  const double depth = normal.x != 0.0 ? (face - p.x) * normal.x : (face - p.y) * normal.y;
+  if (depth <= 0.0) return std::nullopt;
+  return SurfaceContact{normal, depth};
+}
+
 // Contact of a particle that moved from `from` (its position at the start of the substep) to `to`.
 // A particle that started outside the box and entered it, or crossed it entirely, is sent back
-// through the face it came in by (slab test on the segment); one that started inside gets the
-// minimal-overlap contact. With the anti-tunneling clamp this stops even walls thinner than one
+// through the face it came in by (slab test on the segment); one that started inside, through the
+// face nearest where it started. With the anti-tunneling clamp this stops even walls thinner than one
 // substep's travel. Depth is measured from `to` to the entry face.
 inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const Aabb& box) {
   // Cheap reject: the segment's bounds miss the box (touching counts as missing: no margin).
@@ -47,7 +59,17 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
     return std::nullopt;
   const bool inside_x = from.x > box.min.x && from.x < box.max.x;
   const bool inside_y = from.y > box.min.y && from.y < box.max.y;
-  if (inside_x && inside_y) return box_contact(to, box);
+  if (inside_x && inside_y) {
+    // It began the substep inside (a resting contact's residue, or a push by a neighbour): the face
+    // nearest where it began, not where it is predicted to be, is the one it came in by. A particle
+    // resting a nanometre inside a thin wall and predicted past its middle must go back, not through.
+    // One that left through a side face (beyond the box across that face's axis) is free.
+    const Vec2 n = box_contact(from, box)->normal;
+    const bool beside =
+        n.x != 0.0 ? !(to.y > box.min.y && to.y < box.max.y) : !(to.x > box.min.x && to.x < box.max.x);
+    if (beside) return std::nullopt;
+    return face_contact(n, to, box);
+  }
   // Common case, exactly: the particle is now inside and started outside one slab only, so it came
   // in through that slab's face (a particle resting on the ground starts each substep on it).
   const bool now_inside = to.x > box.min.x && to.x < box.max.x && to.y > box.min.y && to.y < box.max.y;
@@ -78,14 +100,7 @@ inline std::optional<SurfaceContact> swept_box_contact(Vec2 from, Vec2 to, const
     t_exit = std::min(t_exit, t_out);
   }
   if (t_enter >= t_exit || normal == Vec2{}) return std::nullopt;
-  // Distance from `to` back to the entry face's plane, along its normal.
-  const double face = normal.x < 0   ? box.min.x
-                      : normal.x > 0 ? box.max.x
-                      : normal.y < 0 ? box.min.y
-                                     : box.max.y;
-  const double depth = normal.x != 0.0 ? (face - to.x) * normal.x : (face - to.y) * normal.y;
-  if (depth <= 0.0) return std::nullopt;
-  return SurfaceContact{normal, depth};
+  return face_contact(normal, to, box);
 }
 
 // What friction needs to know about one particle's contact during one substep.
