@@ -1,6 +1,7 @@
 // Props: the contact geometry of each shape, and the physics of tires against Box2D bodies.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "tire/rigid/prop_geometry.h"
@@ -119,9 +120,11 @@ namespace {
 
 // A slope of angle θ (rad, downhill towards +x) as a long static prop whose top surface passes
 // through the origin, and a tire resting on it, its flat bottom segment along the slope.
-World slope_world(double theta, PropShape shape, double friction, double rolling_resistance = 0.0) {
+World slope_world(double theta, PropShape shape, double friction, double rolling_resistance = 0.0,
+                  SolverMethod method = SolverConfig{}.method, int segments = TireSpec{}.segments) {
   SolverConfig config;
   config.substeps = 16;
+  config.method = method;
   World world(config, {0, -9.81});
   const Pose slope = Pose::make({}, -theta);
   PropSpec prop;
@@ -137,6 +140,7 @@ World slope_world(double theta, PropShape shape, double friction, double rolling
   }
   world.add_prop(prop);
   TireSpec tire;
+  tire.segments = segments;
   tire.angle = -theta;
   tire.friction = tire.kinetic_friction = friction;
   tire.rolling_resistance = rolling_resistance;
@@ -168,6 +172,29 @@ TEST_CASE("a tire rolls down a slope at g sin(theta) / (1 + I/(M R^2))", "[unit]
     INFO((shape == PropShape::chain ? "chain" : "box") << " slope: " << a << " m/s², expected " << expected);
     CHECK(a == Approx(expected).epsilon(0.10));
     CHECK(world.tires().front().angular_velocity() < -1.0);  // it is rolling, not sliding
+  }
+}
+
+TEST_CASE("global: a tire rolls down a slope as a round wheel does once its polygon is fine enough",
+          "[unit][props][physics][global]") {
+  // g sin θ / (1 + I/(M R²)) is a round wheel's. The global method holds the default tire as stiff as
+  // its material (0.11 mm rest sag), so at this speed it rolls as the rigid 28-sided polygon it is:
+  // each tread particle lands in turn, and the landing keeps only the angular momentum about the new
+  // corner, (I + M R² cos 2π/N) / (I + M R²) of the spin (98.5 % at N = 28). That loss falls as 1/N,
+  // so the acceleration must rise towards the round wheel's as the segments double.
+  const double theta = 20.0 * std::numbers::pi / 180.0;
+  const TireSpec spec;
+  const double i_ratio = (1.0 + std::pow(spec.inner_radius / spec.outer_radius, 2)) / 2.0;
+  const double expected = 9.81 * std::sin(theta) / (1.0 + i_ratio);
+  double previous = 0.0;
+  for (const int segments : {28, 56, 112}) {
+    World world = slope_world(theta, PropShape::box, 0.9, 0.0, SolverMethod::global, segments);
+    const double a = downhill_acceleration(world, theta);
+    INFO(segments << " segments: " << a << " m/s², a round wheel " << expected);
+    CHECK(a > previous);  // rounder rolls faster
+    CHECK(a < expected * 1.02);
+    if (segments == 112) CHECK(a == Approx(expected).epsilon(0.05));
+    previous = a;
   }
 }
 
@@ -283,6 +310,40 @@ TEST_CASE("a moving platform carries a tire by friction, as a free wheel", "[uni
   CHECK(m.velocity.x == Approx(1.5 * i_ratio / (1.0 + i_ratio)).epsilon(0.10));
   CHECK(m.velocity.x + m.omega * spec.outer_radius == Approx(1.5).epsilon(0.05));  // no slip on the belt
   CHECK(t.grounded());
+}
+
+TEST_CASE("global: a moving platform carries a free wheel as a round wheel once its polygon is fine enough",
+          "[unit][props][physics][global]") {
+  // As above for the belt (v = V·I/(I + M R²)): the 28-sided polygon's landings drain its spin and
+  // it creeps towards the belt's speed; with 112 segments it keeps the round wheel's speed.
+  double previous = std::numeric_limits<double>::infinity();
+  for (const int segments : {28, 112}) {
+    SolverConfig config;
+    config.method = SolverMethod::global;
+    World world(config, {0, -9.81});
+    PropSpec platform;
+    platform.name = "belt";
+    platform.type = PropType::kinematic_body;
+    platform.size = {20, 0.4};
+    platform.position = {0, -0.2};
+    platform.path.waypoints = {{0, -0.2}, {50, -0.2}};
+    platform.path.speed = 1.5;
+    platform.path.mode = PathMode::once;
+    world.add_prop(platform);
+    TireSpec spec = tire_at({0, 0.5});
+    spec.segments = segments;
+    spec.rolling_resistance = 0.0;
+    world.add_tire(spec);
+    run(world, 60);
+    const RigidMotion m = world.tires().front().rigid_motion();
+    const double i_ratio = m.inertia / (spec.mass * spec.outer_radius * spec.outer_radius);
+    const double expected = 1.5 * i_ratio / (1.0 + i_ratio);
+    INFO(segments << " segments: hub " << m.velocity.x << " m/s, a round wheel " << expected);
+    CHECK(m.velocity.x < previous);
+    CHECK(m.velocity.x + m.omega * spec.outer_radius == Approx(1.5).epsilon(0.05));  // no slip on the belt
+    if (segments == 112) CHECK(m.velocity.x == Approx(expected).epsilon(0.05));
+    previous = m.velocity.x;
+  }
 }
 
 TEST_CASE("an elevator lifts a tire", "[unit][props][physics]") {
