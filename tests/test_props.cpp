@@ -149,6 +149,29 @@ World slope_world(double theta, PropShape shape, double friction, double rolling
   return world;
 }
 
+// A free wheel (no rolling resistance) of `segments` segments resting on a 20 m belt, a kinematic
+// platform that starts at once at 1.5 m/s along +x.
+TireSpec belt_tire(int segments) {
+  TireSpec spec = tire_at({0, 0.5});
+  spec.segments = segments;
+  spec.rolling_resistance = 0.0;
+  return spec;
+}
+World belt_world(const SolverConfig& config, const TireSpec& tire) {
+  World world(config, {0, -9.81});
+  PropSpec platform;
+  platform.name = "belt";
+  platform.type = PropType::kinematic_body;
+  platform.size = {20, 0.4};
+  platform.position = {0, -0.2};
+  platform.path.waypoints = {{0, -0.2}, {50, -0.2}};
+  platform.path.speed = 1.5;
+  platform.path.mode = PathMode::once;
+  world.add_prop(platform);
+  world.add_tire(tire);
+  return world;
+}
+
 // Acceleration along the slope, from the velocity gained between 0.5 s and 1.5 s.
 double downhill_acceleration(World& world, double theta) {
   const Vec2 downhill{std::cos(theta), -std::sin(theta)};
@@ -289,19 +312,8 @@ TEST_CASE("a moving platform carries a tire by friction, as a free wheel", "[uni
   // A free wheel on a platform that starts moving at V: friction acts at the contact, so the
   // wheel's angular momentum about the contact point stays 0 and it settles rolling without
   // slipping at v = V·I/(I + M R²), turning backwards relative to the platform.
-  World world(SolverConfig{}, {0, -9.81});
-  PropSpec platform;
-  platform.name = "belt";
-  platform.type = PropType::kinematic_body;
-  platform.size = {20, 0.4};
-  platform.position = {0, -0.2};
-  platform.path.waypoints = {{0, -0.2}, {50, -0.2}};
-  platform.path.speed = 1.5;
-  platform.path.mode = PathMode::once;
-  world.add_prop(platform);
-  TireSpec spec = tire_at({0, 0.5});
-  spec.rolling_resistance = 0.0;
-  world.add_tire(spec);
+  const TireSpec spec = belt_tire(TireSpec{}.segments);
+  World world = belt_world(SolverConfig{}, spec);
   run(world, 60);
   const Tire& t = world.tires().front();
   const RigidMotion m = t.rigid_motion();
@@ -320,20 +332,8 @@ TEST_CASE("global: a moving platform carries a free wheel as a round wheel once 
   for (const int segments : {28, 112}) {
     SolverConfig config;
     config.method = SolverMethod::global;
-    World world(config, {0, -9.81});
-    PropSpec platform;
-    platform.name = "belt";
-    platform.type = PropType::kinematic_body;
-    platform.size = {20, 0.4};
-    platform.position = {0, -0.2};
-    platform.path.waypoints = {{0, -0.2}, {50, -0.2}};
-    platform.path.speed = 1.5;
-    platform.path.mode = PathMode::once;
-    world.add_prop(platform);
-    TireSpec spec = tire_at({0, 0.5});
-    spec.segments = segments;
-    spec.rolling_resistance = 0.0;
-    world.add_tire(spec);
+    const TireSpec spec = belt_tire(segments);
+    World world = belt_world(config, spec);
     run(world, 60);
     const RigidMotion m = world.tires().front().rigid_motion();
     const double i_ratio = m.inertia / (spec.mass * spec.outer_radius * spec.outer_radius);
