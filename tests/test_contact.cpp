@@ -31,6 +31,30 @@ TEST_CASE("box contact pushes out through the face of least overlap", "[unit][co
   CHECK(box_contact({0.5, 1.5}, box)->normal == Vec2{0, 1});
 }
 
+TEST_CASE("a particle sent through a thin wall goes back by the face it came in by", "[unit][contact]") {
+  const Aabb wall{{5.0, -10.0}, {5.05, 10.0}};  // 5 cm thick
+  // From outside, straight through in one substep (the slab test): back to the near face.
+  const auto through = swept_box_contact({4.9, 0.0}, {5.2, 0.0}, wall);
+  REQUIRE(through);
+  CHECK(through->normal == Vec2{-1, 0});
+  CHECK(through->depth == Approx(0.2));
+  // From a nanometre inside (a resting contact's residue), predicted past the wall's middle: still
+  // back by the near face, where the face nearest the predicted point is the far one.
+  const auto resting = swept_box_contact({5.0 + 1e-9, 0.0}, {5.04, 0.0}, wall);
+  REQUIRE(resting);
+  CHECK(resting->normal == Vec2{-1, 0});
+  CHECK(resting->depth == Approx(0.04));
+  CHECK(box_contact({5.04, 0.0}, wall)->normal == Vec2{1, 0});  // what it got before
+  // ... and predicted right through it: back as well.
+  const auto beyond = swept_box_contact({5.0 + 1e-9, 0.0}, {5.3, 0.0}, wall);
+  REQUIRE(beyond);
+  CHECK(beyond->normal == Vec2{-1, 0});
+  CHECK(beyond->depth == Approx(0.3));
+  // One that started inside near the top and left over it is free.
+  CHECK_FALSE(swept_box_contact({5.0 + 1e-9, 10.0 - 1e-3}, {4.9, 10.2}, wall));
+  CHECK_FALSE(swept_box_contact({5.0 + 1e-9, 0.0}, {4.9, 0.0}, wall));  // and one that backed out
+}
+
 namespace {
 
 // ∂f/∂x by central differences.
