@@ -150,7 +150,8 @@ World slope_world(double theta, PropShape shape, double friction, double rolling
 }
 
 // A free wheel (no rolling resistance) of `segments` segments resting on a 20 m belt, a kinematic
-// platform that starts at once at 1.5 m/s along +x.
+// platform that starts at once at kBeltSpeed along +x.
+constexpr double kBeltSpeed = 1.5;  // m/s
 TireSpec belt_tire(int segments) {
   TireSpec spec = tire_at({0, 0.5});
   spec.segments = segments;
@@ -165,11 +166,26 @@ World belt_world(const SolverConfig& config, const TireSpec& tire) {
   platform.size = {20, 0.4};
   platform.position = {0, -0.2};
   platform.path.waypoints = {{0, -0.2}, {50, -0.2}};
-  platform.path.speed = 1.5;
+  platform.path.speed = kBeltSpeed;
   platform.path.mode = PathMode::once;
   world.add_prop(platform);
   world.add_tire(tire);
   return world;
+}
+
+// A round wheel of the default tire's rings rolling down a slope of angle θ without slipping:
+// g sin θ / (1 + I/(M R²)), with equal masses on both rings, I = M (R² + r²) / 2 about the hub.
+double round_wheel_slope_acceleration(double theta) {
+  const TireSpec spec;
+  const double i_ratio = (1.0 + std::pow(spec.inner_radius / spec.outer_radius, 2)) / 2.0;
+  return 9.81 * std::sin(theta) / (1.0 + i_ratio);
+}
+
+// A free round wheel on a belt started at kBeltSpeed: it rolls without slipping at V·I/(I + M R²),
+// I its measured inertia about the hub.
+double round_wheel_belt_speed(const RigidMotion& m, const TireSpec& spec) {
+  const double i_ratio = m.inertia / (spec.mass * spec.outer_radius * spec.outer_radius);
+  return kBeltSpeed * i_ratio / (1.0 + i_ratio);
 }
 
 // Acceleration along the slope, from the velocity gained between 0.5 s and 1.5 s.
@@ -185,10 +201,7 @@ double downhill_acceleration(World& world, double theta) {
 
 TEST_CASE("a tire rolls down a slope at g sin(theta) / (1 + I/(M R^2))", "[unit][props][physics]") {
   const double theta = 20.0 * std::numbers::pi / 180.0;
-  const TireSpec spec;
-  // Equal masses on both rings: I = M (R² + r²) / 2 about the hub.
-  const double i_ratio = (1.0 + std::pow(spec.inner_radius / spec.outer_radius, 2)) / 2.0;
-  const double expected = 9.81 * std::sin(theta) / (1.0 + i_ratio);
+  const double expected = round_wheel_slope_acceleration(theta);
   for (const PropShape shape : {PropShape::box, PropShape::chain}) {
     World world = slope_world(theta, shape, 0.9);
     const double a = downhill_acceleration(world, theta);
@@ -206,9 +219,7 @@ TEST_CASE("global: a tire rolls down a slope as a round wheel does once its poly
   // corner, (I + M R² cos 2π/N) / (I + M R²) of the spin (98.5 % at N = 28). That loss falls as 1/N,
   // so the acceleration must rise towards the round wheel's as the segments double.
   const double theta = 20.0 * std::numbers::pi / 180.0;
-  const TireSpec spec;
-  const double i_ratio = (1.0 + std::pow(spec.inner_radius / spec.outer_radius, 2)) / 2.0;
-  const double expected = 9.81 * std::sin(theta) / (1.0 + i_ratio);
+  const double expected = round_wheel_slope_acceleration(theta);
   double previous = 0.0;
   for (const int segments : {28, 56, 112}) {
     World world = slope_world(theta, PropShape::box, 0.9, 0.0, SolverMethod::global, segments);
@@ -317,10 +328,10 @@ TEST_CASE("a moving platform carries a tire by friction, as a free wheel", "[uni
   run(world, 60);
   const Tire& t = world.tires().front();
   const RigidMotion m = t.rigid_motion();
-  const double i_ratio = m.inertia / (spec.mass * spec.outer_radius * spec.outer_radius);
   INFO("hub " << m.velocity.x << " m/s, tread at the contact " << m.velocity.x + m.omega * spec.outer_radius);
-  CHECK(m.velocity.x == Approx(1.5 * i_ratio / (1.0 + i_ratio)).epsilon(0.10));
-  CHECK(m.velocity.x + m.omega * spec.outer_radius == Approx(1.5).epsilon(0.05));  // no slip on the belt
+  CHECK(m.velocity.x == Approx(round_wheel_belt_speed(m, spec)).epsilon(0.10));
+  CHECK(m.velocity.x + m.omega * spec.outer_radius ==
+        Approx(kBeltSpeed).epsilon(0.05));  // no slip on the belt
   CHECK(t.grounded());
 }
 
@@ -336,11 +347,10 @@ TEST_CASE("global: a moving platform carries a free wheel as a round wheel once 
     World world = belt_world(config, spec);
     run(world, 60);
     const RigidMotion m = world.tires().front().rigid_motion();
-    const double i_ratio = m.inertia / (spec.mass * spec.outer_radius * spec.outer_radius);
-    const double expected = 1.5 * i_ratio / (1.0 + i_ratio);
+    const double expected = round_wheel_belt_speed(m, spec);
     INFO(segments << " segments: hub " << m.velocity.x << " m/s, a round wheel " << expected);
     CHECK(m.velocity.x < previous);
-    CHECK(m.velocity.x + m.omega * spec.outer_radius == Approx(1.5).epsilon(0.05));  // no slip on the belt
+    CHECK(m.velocity.x + m.omega * spec.outer_radius == Approx(kBeltSpeed).epsilon(0.05));  // no slip
     if (segments == 112) CHECK(m.velocity.x == Approx(expected).epsilon(0.05));
     previous = m.velocity.x;
   }
