@@ -50,11 +50,11 @@ b2BodyType body_type(PropType t) {
 
 Pose Prop::pose_at(double t) const {
   // The centre of mass moves with `velocity`, the body turns about it with `omega`.
-  const Pose turned = Pose::make({}, start_pose.angle + omega * t);
+  const Pose turned = Pose::make({}, start_pose.angle + omega * t - untravelled_angle);
   return Pose::make(center_at(t) - turned.rotate(local_center), turned.angle);
 }
 
-RigidWorld::RigidWorld(Vec2 gravity) : world_(std::make_unique<b2World>(to_b2(gravity))) {
+RigidWorld::RigidWorld(Vec2 gravity) : world_(std::make_unique<b2World>(to_b2(gravity))), gravity_(gravity) {
   b2BodyDef def;
   def.type = b2_staticBody;
   ground_ = world_->CreateBody(&def);
@@ -213,7 +213,10 @@ bool RigidWorld::path_command(std::string_view name, PathCommand command) {
   return true;
 }
 
-void RigidWorld::set_gravity(Vec2 gravity) { world_->SetGravity(to_b2(gravity)); }
+void RigidWorld::set_gravity(Vec2 gravity) {
+  world_->SetGravity(to_b2(gravity));
+  gravity_ = gravity;
+}
 
 void RigidWorld::apply_impulse_now(std::string_view name, Vec2 impulse) {
   const auto i = find_prop(name);
@@ -257,7 +260,8 @@ void RigidWorld::steer_along_path(std::uint32_t i, double dt) {
   bodies_[i]->SetLinearVelocity(to_b2(velocity));
 }
 
-void RigidWorld::begin_tick(double dt) {
+void RigidWorld::begin_tick(double dt, bool substep_motion) {
+  substep_motion_ = substep_motion;
   for (std::uint32_t i = 0; i < props_.size(); ++i) {
     Prop& p = props_[i];
     if (!p.alive) continue;
@@ -278,11 +282,16 @@ void RigidWorld::begin_tick(double dt) {
     p.inverse_inertia = inertia > 0.0 ? 1.0 / inertia : 0.0;
     p.impulse = {};
     p.angular_impulse = 0.0;
+    p.untravelled = {};
+    p.untravelled_angle = 0.0;
     p.support_count = 0;
+    p.airborne = false;
     if (!dynamic) continue;
+    p.airborne = substep_motion;
     for (const b2ContactEdge* edge = b.GetContactList(); edge && p.support_count < Prop::kMaxSupports;
          edge = edge->next) {
       const b2Contact* contact = edge->contact;
+      if (contact->IsTouching()) p.airborne = false;
       if (!contact->IsTouching() || edge->other->GetType() == b2_dynamicBody) continue;
       b2WorldManifold manifold;
       contact->GetWorldManifold(&manifold);
@@ -293,7 +302,18 @@ void RigidWorld::begin_tick(double dt) {
   }
 }
 
-void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t) {
+void RigidWorld::begin_substep(double time, double h) {
+  if (!substep_motion_) return;
+  for (Prop& p : props_) {
+    if (!p.alive || !p.airborne) continue;
+    // v ← v + h g, travelled from this substep on.
+    const Vec2 dv = gravity_ * h;
+    p.velocity += dv;
+    p.untravelled += dv * time;
+  }
+}
+
+void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t, double since) {
   Prop& p = props_[i];
   if (!p.is_dynamic()) return;
   const double moment = cross(point - p.center_at(t), impulse);
@@ -303,14 +323,29 @@ void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t
   // something is moved by Box2D alone, which weighs the push against its support's contact and
   // friction; within the tick it stays on its course.
   if (p.support_count > 0) return;
-  p.velocity += impulse * p.inverse_mass;
-  p.omega += moment * p.inverse_inertia;
+  const Vec2 dv = impulse * p.inverse_mass;
+  const double dw = moment * p.inverse_inertia;
+  p.velocity += dv;
+  p.omega += dw;
+  if (!substep_motion_) return;
+  p.untravelled += dv * since;
+  p.untravelled_angle += dw * since;
 }
 
 void RigidWorld::end_tick(double dt) {
   for (std::uint32_t i = 0; i < props_.size(); ++i) {
     const Prop& p = props_[i];
-    if (!p.alive || !p.is_dynamic() || (p.impulse == Vec2{} && p.angular_impulse == 0.0)) continue;
+    if (!p.alive || !p.is_dynamic()) continue;
+    if (p.untravelled != Vec2{} || p.untravelled_angle != 0.0) {
+      // Box2D's step ends at its start plus dt times the final velocity (gravity and the pushes in
+      // it): started this much short, it ends where the substeps left the prop.
+      const double angle = p.start_pose.angle - p.untravelled_angle;
+      const Vec2 center = p.start_center - p.untravelled;
+      const Vec2 origin = center - Pose::make({}, angle).rotate(p.local_center);
+      bodies_[i]->SetTransform(to_b2(origin), static_cast<float>(angle));
+      bodies_[i]->SetAwake(true);  // Box2D may have put a prop lying on a tire to sleep
+    }
+    if (p.impulse == Vec2{} && p.angular_impulse == 0.0) continue;
     bodies_[i]->ApplyLinearImpulseToCenter(to_b2(p.impulse), true);
     bodies_[i]->ApplyAngularImpulse(static_cast<float>(p.angular_impulse), true);
   }

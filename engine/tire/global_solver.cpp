@@ -53,6 +53,8 @@ void GlobalSolver::reserve(std::uint32_t segments) {
   rows_.reserve(kMaxRows);
   g_.assign(kMaxRows * stride_, 0.0);
   y_.assign(kMaxRows * stride_, 0.0);
+  yb_.assign(3 * kMaxBodies * stride_, 0.0);
+  bodies_.reserve(kMaxBodies);
   contacts_.reserve(2 * std::size_t{segments});
   contact_of_.assign(2 * std::size_t{segments}, -1);
   depth_.assign(2 * std::size_t{segments}, 0.0);
@@ -145,7 +147,7 @@ void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, b
 GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepContext& ctx,
                                                  std::uint32_t particle, Vec2 normal, double plane,
                                                  const ContactPair& pair, std::int32_t prop,
-                                                 Vec2 surface_velocity) const {
+                                                 Vec2 surface_velocity) {
   Contact c;
   c.particle = particle;
   c.normal = normal;
@@ -159,7 +161,11 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
   double give_n = 0.0, give_t = 0.0;
   if (prop >= 0) {
     const Prop& body = ctx.rigid->props()[static_cast<std::size_t>(prop)];
-    if (body.is_dynamic()) {
+    if (body.is_dynamic() && body.support_count == 0 && body.inverse_inertia > 0.0) {
+      c.body = body_of(static_cast<std::uint32_t>(prop), body);
+      c.arm = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
+    }
+    if (body.is_dynamic() && c.body < 0) {
       // What the prop gives way at the contact, w = 1/M + (r × d)²/I along d (Müller 2020 eq. 2),
       // times its mobility along the push (0 into what holds it up; rounding can take 1 − (n·s)² a
       // few 1e-9 below zero, see resolve_contact: clamped).
@@ -174,6 +180,39 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
   c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + give_n);
   c.stiffness_t = 1.0 / (rigid_alpha_tilde_ + give_t);
   return c;
+}
+
+std::int32_t GlobalSolver::body_of(std::uint32_t prop, const Prop& body) {
+  for (std::size_t j = 0; j < bodies_.size(); ++j)
+    if (bodies_[j].prop == prop) return static_cast<std::int32_t>(j);
+  if (bodies_.size() == kMaxBodies) return -1;
+  bodies_.emplace_back();
+  bodies_.back().prop = prop;
+  bodies_.back().mass = 1.0 / body.inverse_mass;
+  bodies_.back().inertia = 1.0 / body.inverse_inertia;
+  return static_cast<std::int32_t>(bodies_.size() - 1);
+}
+
+bool GlobalSolver::solve_border(std::size_t size) {
+  auto& a = border_;
+  for (std::size_t c = 0; c < size; ++c) {
+    std::size_t pivot = c;
+    for (std::size_t r = c + 1; r < size; ++r)
+      if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
+    if (!(std::abs(a[pivot][c]) > 0.0) || !std::isfinite(a[pivot][c])) return false;
+    if (pivot != c)
+      for (std::size_t k = c; k <= size; ++k) std::swap(a[c][k], a[pivot][k]);
+    for (std::size_t r = c + 1; r < size; ++r) {
+      const double factor = a[r][c] / a[c][c];
+      for (std::size_t k = c; k <= size; ++k) a[r][k] -= factor * a[c][k];
+    }
+  }
+  for (std::size_t r = size; r-- > 0;) {
+    double v = a[r][size];
+    for (std::size_t k = r + 1; k < size; ++k) v -= a[r][k] * a[k][size];
+    a[r][size] = v / a[r][r];
+  }
+  return true;
 }
 
 bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx) {
@@ -284,27 +323,49 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     k_.coupling(k) = base_coupling_[k];
   }
   std::copy(base_f_.begin(), base_f_.begin() + static_cast<std::ptrdiff_t>(size), f_.begin());
-  // Each active contact: stiffness k along its direction d into K, and −k d C into f.
+  // The free props' K_qq = diag(M, M, I) and f_q, and their columns of B, empty.
+  const std::size_t nb = bodies_.size();
+  for (Body& b : bodies_) {
+    for (auto& row : b.kqq) std::fill(std::begin(row), std::end(row), 0.0);
+    b.kqq[0][0] = b.kqq[1][1] = b.mass;
+    b.kqq[2][2] = b.inertia;
+    std::fill(std::begin(b.fq), std::end(b.fq), 0.0);
+  }
+  std::fill(yb_.begin(), yb_.begin() + static_cast<std::ptrdiff_t>(3 * nb * stride_), 0.0);
+  // A constraint C = d·x − plane − a·q of stiffness k (a = 0 off a body): k d dᵀ into K and its
+  // −k d C into f; on a body also −k d aᵀ into B, k a aᵀ into K_qq and k a C into f_q.
+  const auto add_row = [&](const Contact& c, Vec2 d, double k, double force) {
+    const std::uint32_t i = c.particle;
+    const std::size_t dof = dof_of(i, n);
+    add_outer(k_.diagonal(block_of(i, n)), offset_of(i, n), offset_of(i, n), d, k);
+    f_[dof] += d.x * force;
+    f_[dof + 1] += d.y * force;
+    if (c.body < 0) return;
+    Body& b = bodies_[static_cast<std::size_t>(c.body)];
+    const double a[3] = {d.x, d.y, cross(c.arm, d)};
+    for (std::size_t r = 0; r < 3; ++r) {
+      double* column = yb_.data() + (3 * static_cast<std::size_t>(c.body) + r) * stride_;
+      column[dof] -= k * d.x * a[r];
+      column[dof + 1] -= k * d.y * a[r];
+      b.fq[r] -= force * a[r];
+      for (std::size_t q = 0; q < 3; ++q) b.kqq[r][q] += k * a[r] * a[q];
+    }
+  };
+  // Each active contact: its normal, and its static friction while it holds.
   for (const Contact& c : contacts_) {
     if (!c.normal_active) continue;
-    const std::uint32_t i = c.particle;
-    const std::size_t o = offset_of(i, n), d = dof_of(i, n);
-    Block4& block = k_.diagonal(block_of(i, n));
-    add_outer(block, o, o, c.normal, c.stiffness_n);
-    const double push = c.stiffness_n * (c.plane - dot(c.normal, p.x[i]));
-    f_[d] += c.normal.x * push;
-    f_[d + 1] += c.normal.y * push;
+    const Vec2 x = p.x[c.particle];
+    add_row(c, c.normal, c.stiffness_n, c.stiffness_n * (c.plane - dot(c.normal, x)));
     if (!c.friction_active) continue;
     const Vec2 tangent = perp(c.normal);
-    add_outer(block, o, o, tangent, c.stiffness_t);
-    const double hold = -c.stiffness_t * dot(tangent, p.x[i] - p.x_prev[i] - c.surface_displacement);
-    f_[d] += tangent.x * hold;
-    f_[d + 1] += tangent.y * hold;
+    add_row(c, tangent, c.stiffness_t,
+            -c.stiffness_t * dot(tangent, x - p.x_prev[c.particle] - c.surface_displacement));
   }
   ++counts_.factorisations;
   if (!k_.factor()) return false;
-  // L⁻¹ f and the capacitance rows' y_r = L⁻¹ g_r, in one forward sweep; then S = Yᵀ Y + α̃ (at
-  // most 3 × 3), solved by Cholesky.
+  // L⁻¹ f, the capacitance rows' y_r = L⁻¹ g_r and the bodies' L⁻¹ B in forward sweeps; then the
+  // border system (header), at most kMaxUnknowns: by Cholesky when it is the rows' S = Yᵀ Y + α̃
+  // alone (symmetric positive definite), else by elimination.
   const std::size_t m = rows_.size();
   double* sides[kMaxRows + 1] = {f_.data()};
   for (std::size_t r = 0; r < m; ++r) {
@@ -313,51 +374,94 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     std::copy(g, g + size, sides[r + 1]);
   }
   k_.forward(sides, m + 1);
-  double s[kMaxRows][kMaxRows] = {};
-  double mu[kMaxRows] = {};
-  for (std::size_t r = 0; r < m; ++r) {
-    const double* y = y_.data() + r * stride_;
-    rows_[r].yf = dot_n(y, f_.data(), size);
-    for (std::size_t q = 0; q <= r; ++q) s[r][q] = dot_n(y, y_.data() + q * stride_, size);
-    s[r][r] += rows_[r].alpha_tilde;
-    mu[r] = rows_[r].b - rows_[r].yf;
+  for (std::size_t j = 0; j < 3 * nb; j += CyclicBlockCholesky::kMaxRightHandSides) {
+    double* columns[CyclicBlockCholesky::kMaxRightHandSides];
+    const std::size_t count = std::min(CyclicBlockCholesky::kMaxRightHandSides, 3 * nb - j);
+    for (std::size_t v = 0; v < count; ++v) columns[v] = yb_.data() + (j + v) * stride_;
+    k_.forward(columns, count);
   }
-  for (std::size_t r = 0; r < m; ++r) {  // Cholesky of S, in its lower triangle
-    for (std::size_t q = 0; q <= r; ++q) {
-      double v = s[r][q];
-      for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
-      if (q < r)
-        s[r][q] = v / s[q][q];
-      else if (v > 0.0)
-        s[r][r] = std::sqrt(v);
-      else
-        return false;
+  const auto column = [&](std::size_t u) {  // unknown u's column of Y: a row's, then the bodies'
+    return u < m ? y_.data() + u * stride_ : yb_.data() + (u - m) * stride_;
+  };
+  const std::size_t unknowns = m + 3 * nb;
+  double z[kMaxUnknowns] = {};
+  for (std::size_t r = 0; r < m; ++r) rows_[r].yf = dot_n(column(r), f_.data(), size);
+  if (nb == 0) {
+    double s[kMaxRows][kMaxRows] = {};
+    for (std::size_t r = 0; r < m; ++r) {
+      for (std::size_t q = 0; q <= r; ++q) s[r][q] = dot_n(column(r), column(q), size);
+      s[r][r] += rows_[r].alpha_tilde;
+      z[r] = rows_[r].b - rows_[r].yf;
     }
+    for (std::size_t r = 0; r < m; ++r) {  // Cholesky of S, in its lower triangle
+      for (std::size_t q = 0; q <= r; ++q) {
+        double v = s[r][q];
+        for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
+        if (q < r)
+          s[r][q] = v / s[q][q];
+        else if (v > 0.0)
+          s[r][r] = std::sqrt(v);
+        else
+          return false;
+      }
+    }
+    for (std::size_t r = 0; r < m; ++r) {
+      for (std::size_t k = 0; k < r; ++k) z[r] -= s[r][k] * z[k];
+      z[r] /= s[r][r];
+    }
+    for (std::size_t r = m; r-- > 0;) {
+      for (std::size_t k = r + 1; k < m; ++k) z[r] -= s[k][r] * z[k];
+      z[r] /= s[r][r];
+    }
+  } else {
+    for (std::size_t r = 0; r < unknowns; ++r) {
+      const double* yr = column(r);
+      for (std::size_t q = 0; q < unknowns; ++q) {
+        const double yy = dot_n(yr, column(q), size);
+        if (r < m)
+          border_[r][q] = q < m ? yy + (q == r ? rows_[r].alpha_tilde : 0.0) : -yy;
+        else
+          border_[r][q] = yy;
+      }
+      if (r < m) {
+        border_[r][unknowns] = rows_[r].b - rows_[r].yf;
+      } else {  // (K_qq − Y_Bᵀ Y_B) Δq + Y_Bᵀ Y_G μ = f_q − Y_Bᵀ L⁻¹ f
+        const std::size_t j = (r - m) / 3, a = (r - m) % 3;
+        for (std::size_t q = m; q < unknowns; ++q) border_[r][q] = -border_[r][q];
+        for (std::size_t q = 0; q < 3; ++q) border_[r][m + 3 * j + q] += bodies_[j].kqq[a][q];
+        border_[r][unknowns] = bodies_[j].fq[a] - dot_n(yr, f_.data(), size);
+      }
+    }
+    if (!solve_border(unknowns)) return false;
+    for (std::size_t u = 0; u < unknowns; ++u) z[u] = border_[u][unknowns];
   }
-  for (std::size_t r = 0; r < m; ++r) {
-    for (std::size_t k = 0; k < r; ++k) mu[r] -= s[r][k] * mu[k];
-    mu[r] /= s[r][r];
-  }
-  for (std::size_t r = m; r-- > 0;) {
-    for (std::size_t k = r + 1; k < m; ++k) mu[r] -= s[k][r] * mu[k];
-    mu[r] /= s[r][r];
-  }
+  for (std::size_t r = 0; r < m; ++r) rows_[r].mu = z[r];
+  for (std::size_t j = 0; j < nb; ++j)
+    for (std::size_t a = 0; a < 3; ++a) bodies_[j].dq[a] = z[m + 3 * j + a];
+  // Δx = L⁻ᵀ (L⁻¹ f + Y_G μ − Y_B Δq).
   std::copy(f_.begin(), f_.begin() + static_cast<std::ptrdiff_t>(size), dx_.begin());
-  for (std::size_t r = 0; r < m; ++r) {
-    rows_[r].mu = mu[r];
-    const double* y = y_.data() + r * stride_;
-    for (std::size_t k = 0; k < size; ++k) dx_[k] += mu[r] * y[k];
+  for (std::size_t u = 0; u < unknowns; ++u) {
+    const double coefficient = u < m ? z[u] : -z[u];
+    const double* y = column(u);
+    for (std::size_t k = 0; k < size; ++k) dx_[k] += coefficient * y[k];
   }
   k_.backward(dx_.data());
-  // The contacts' multipliers at the new positions: μ = −k C(x + Δx).
+  // The contacts' multipliers at the new positions: μ = −k C(x + Δx, Δq).
   for (Contact& c : contacts_) {
     c.mu_n = c.mu_t = 0.0;
     if (!c.normal_active) continue;
     const std::uint32_t i = c.particle;
     const Vec2 x = p.x[i] + at(dx_.data(), dof_of(i, n));
-    c.mu_n = c.stiffness_n * (c.plane - dot(c.normal, x));
+    const Vec2 tangent = perp(c.normal);
+    double moved_n = 0.0, moved_t = 0.0;  // the prop's point along n and t, when it is a body
+    if (c.body >= 0) {
+      const Body& b = bodies_[static_cast<std::size_t>(c.body)];
+      moved_n = along(b, c.normal, c.arm);
+      moved_t = along(b, tangent, c.arm);
+    }
+    c.mu_n = c.stiffness_n * (c.plane + moved_n - dot(c.normal, x));
     if (c.friction_active)
-      c.mu_t = -c.stiffness_t * dot(perp(c.normal), x - p.x_prev[i] - c.surface_displacement);
+      c.mu_t = -c.stiffness_t * (dot(tangent, x - p.x_prev[i] - c.surface_displacement) - moved_t);
   }
   return true;
 }
@@ -375,7 +479,9 @@ bool GlobalSolver::update_active_set(const Tire& t, const SubstepContext& ctx) {
       }
     } else {  // released: back in if the step would push it into its surface
       const Vec2 x = t.particles.x[c.particle] + at(dx_.data(), dof_of(c.particle, t.n));
-      if (c.plane - dot(c.normal, x) > ctx.config->contact_slop) {
+      const double moved =
+          c.body >= 0 ? along(bodies_[static_cast<std::size_t>(c.body)], c.normal, c.arm) : 0.0;
+      if (c.plane + moved - dot(c.normal, x) > ctx.config->contact_slop) {
         c.normal_active = true;
         changed = true;
       }
@@ -391,6 +497,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   counts_ = {};
   rows_.clear();
   contacts_.clear();
+  bodies_.clear();
   std::fill(contact_of_.begin(), contact_of_.begin() + 2 * std::ptrdiff_t{n}, -1);
   rigid_alpha_tilde_ = ctx.config->rigid_compliance / (ctx.h * ctx.h);
   assemble(t, ctx, gamma);
@@ -448,7 +555,8 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
     if (!ctx.rigid->props()[static_cast<std::size_t>(rec.prop)].is_dynamic()) return;
     const double m = 1.0 / t.particles.w[i];  // λ as a distance is w μ: the impulse is μ/h
     const Vec2 impulse = (rec.normal * d_lambda_n + perp(rec.normal) * d_lambda_t) * (-m / ctx.h);
-    t.prop_impulses.push_back({static_cast<std::uint32_t>(rec.prop), impulse, t.particles.x[i], t_end});
+    t.prop_impulses.push_back(
+        {static_cast<std::uint32_t>(rec.prop), impulse, t.particles.x[i], t_end, ctx.time});
   };
   // Records of the last iteration that this one no longer holds: give back what they owed.
   t.for_each_contact([&](std::uint32_t i) {

@@ -138,7 +138,7 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
   rec.surface_velocity = surface_velocity;
   rec.prop = static_cast<std::int32_t>(frame.prop);
   if (prop.is_dynamic())
-    t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end});
+    t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end, ctx.time});
 }
 
 void solve_contacts(Tire& t, const SubstepContext& ctx) {
@@ -247,7 +247,7 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
     }
     if (c.prop >= 0 && impulse != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
       t.prop_impulses.push_back(
-          {static_cast<std::uint32_t>(c.prop), impulse * -1.0, p.x[i], ctx.time + ctx.h});
+          {static_cast<std::uint32_t>(c.prop), impulse * -1.0, p.x[i], ctx.time + ctx.h, ctx.time + ctx.h});
   });
   if (dv == Vec2{} && dw == 0.0) return;
   for (std::uint32_t i = 0; i < p.size(); ++i) p.v[i] += dv + perp(p.x[i] - m.centroid) * dw;
@@ -266,8 +266,8 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
     // The global method's kinetic friction against surfaces was applied above.
     const Vec2 dv = c.tire >= 0 || global ? Vec2{} : apply_kinetic_friction(p.v[i], c, ctx.h);
     if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
-      t.prop_impulses.push_back(
-          {static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i], ctx.time + ctx.h});
+      t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i],
+                                 ctx.time + ctx.h, ctx.time + ctx.h});
     if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
   });
   // The global method damps inside its solve (XPBD eq. 26); Gauss–Seidel damps here.
@@ -379,7 +379,7 @@ void end_substep(Tire& t, const SubstepContext& ctx) {
 }
 
 void apply_prop_impulses(Tire& t, RigidWorld& rigid) {
-  for (const PropImpulse& p : t.prop_impulses) rigid.add_impulse(p.prop, p.impulse, p.point, p.time);
+  for (const PropImpulse& p : t.prop_impulses) rigid.add_impulse(p.prop, p.impulse, p.point, p.time, p.since);
   t.prop_impulses.clear();
 }
 

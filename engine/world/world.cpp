@@ -220,7 +220,7 @@ void World::step(const TickInput& input) {
   // substep): Box2D's props read and kinematic ones steered; each tire's broad phase against
   // obstacles and props, and its jump; the broad phase between tires (a lone tire skips it), its
   // pairs coloured for the parallel solve.
-  rigid_.begin_tick(config_.dt);
+  rigid_.begin_tick(config_.dt, config_.method == SolverMethod::global);
   sweep_tires([&](Tire& t) { begin_tick(t, config_, rigid_); });
   tire_pairs_.clear();
   if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
@@ -263,6 +263,7 @@ void World::step(const TickInput& input) {
 // anti-tunneling clamp, x_prev ← x, x ← x + h v; then the narrow phase along each particle's path
 // and every λ ← 0.
 void World::predict(const SubstepContext& ctx) {
+  rigid_.begin_substep(ctx.time, ctx.h);
   sweep_tires([&](Tire& t) { begin_substep(t, ctx); });
 }
 
@@ -324,6 +325,7 @@ void World::fused_substeps(SubstepContext ctx) {
     ctx.time = s * ctx.h;
     const bool velocity_pass_here = s > 0 && carry_velocity_pass;
     if (s > 0 && !carry_velocity_pass) update_velocities(previous);
+    rigid_.begin_substep(ctx.time, ctx.h);
     sweep_tires([&](Tire& t) {
       if (velocity_pass_here) end_substep(t, previous);  // the previous substep's update velocities
       begin_substep(t, ctx);                             // predict

@@ -14,13 +14,24 @@
 // Contacts are rows of one particle each, so they go into K too, as constraints of compliance
 // SolverConfig::rigid_compliance (10 nm under a tire's weight): the normal C = n·x − plane with
 // μ_n ≥ 0, and static friction t·(x − xₙ − surface motion) = 0 while |μ_t| ≤ μ_s μ_n (Müller et al.
-// 2020, Sec. 3.5; kinetic friction stays in the velocity pass, Sec. 3.6). Against a dynamic prop a
-// contact's compliance also holds what the prop gives way, its generalised inverse mass (Müller
-// 2020 eq. 2–3) scaled by its mobility, as the Gauss–Seidel contacts take it. Which contacts are in
-// is found by active-set passes, one factorisation each.
+// 2020, Sec. 3.5; kinetic friction stays in the velocity pass, Sec. 3.6). A free dynamic prop (one
+// Box2D holds on nothing: it moves within the tick as it is pushed) is a rigid body in the system:
+// its displacement q = (u, θ) over the substep is three more unknowns, with its mass and inertia as
+// their M and each of its contacts a constraint C = d·x − plane − a·q, a = (d, r × d) (Müller 2020
+// eq. 2–3), so that all its contacts with the tire move it together, by what they push in total.
+// (Each contact taking the prop's give alone, its generalised inverse mass, as the Gauss–Seidel
+// contacts do, lets every contact move it as if the others were not there, and the prop then moves
+// by their sum: a 6 kg crate lying on a tire at 2 substeps bounced on it by 1.3 cm for ever.)
+// A prop resting on something stays on its course within the tick (rigid_world.h): its contacts
+// keep that give, scaled by its mobility. Which contacts are in is found by active-set passes, one
+// factorisation each.
 // The two area constraints (their gradients are dense over a ring) and the mouse grab keep their
 // multipliers μ as unknowns, a dense "capacitance" system of at most three rows:
 //     (G K⁻¹ Gᵀ + α̃_G/(1 + γ)) μ = b − G K⁻¹ f,   then Δx = K⁻¹ (f + Gᵀ μ).
+// The free props' displacements join them as a border of three columns each, B = ∂²E/∂x∂q:
+//     [ S_GG + α̃    −Y_Gᵀ Y_B      ] [ μ  ]   [ b − Y_Gᵀ L⁻¹ f  ]
+//     [ Y_Bᵀ Y_G     K_qq − Y_Bᵀ Y_B ] [ Δq ] = [ f_q − Y_Bᵀ L⁻¹ f ],   Y = L⁻¹ [Gᵀ B],
+// then Δx = K⁻¹ (f + Gᵀ μ − B Δq); K_qq = diag(M, M, I) + Σ k a aᵀ over the prop's contacts.
 // Each iteration solves for the multipliers' totals, not increments, so nothing is carried from one
 // iteration to the next but x and which contacts hold.
 #pragma once
@@ -36,6 +47,7 @@
 namespace tire {
 
 struct SubstepContext;
+struct Prop;
 
 // Scratch for solving one tire, reused tire after tire: sized by reserve(), never allocated in a step.
 class GlobalSolver {
@@ -74,6 +86,8 @@ class GlobalSolver {
     Vec2 surface_displacement;  // of the surface point over the substep (moving props)
     Vec2 surface_velocity;
     std::int32_t prop = -1;  // the prop, or −1 for an obstacle
+    std::int32_t body = -1;  // the prop's slot in bodies_ when it is in the system, else −1
+    Vec2 arm;                // from the prop's centre to the particle (a body's contacts)
     std::int32_t tire = -1;  // or the other tire (tire_neighbours.h), against its tread edge at point
     std::uint32_t edge = 0;
     Vec2 point;
@@ -87,11 +101,30 @@ class GlobalSolver {
     double mu_t = 0.0;
   };
 
+  // A free dynamic prop in the system: its three unknowns q = (u.x, u.y, θ).
+  struct Body {
+    std::uint32_t prop = 0;
+    double mass = 0.0;
+    double inertia = 0.0;
+    double kqq[3][3] = {};  // K_qq
+    double fq[3] = {};      // f_q
+    double dq[3] = {};      // the last pass's Δq
+  };
+  // The prop's slot in bodies_, added if there is room (kMaxBodies), or −1.
+  std::int32_t body_of(std::uint32_t prop, const Prop& body);
+  // Along d at a body's contact with arm r: a = (d, r × d), what q moves the prop's point along d.
+  static double along(const Body& b, Vec2 d, Vec2 r) {
+    return d.x * b.dq[0] + d.y * b.dq[1] + cross(r, d) * b.dq[2];
+  }
+  // The small dense system of the rows and the bodies (at most kMaxUnknowns), by Gaussian
+  // elimination with partial pivoting: false when it is singular or not finite.
+  bool solve_border(std::size_t size);
+
   void assemble(const Tire& t, const SubstepContext& ctx, double gamma);
   void add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma);
   double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
   Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal,
-                       double plane, const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity) const;
+                       double plane, const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity);
   // Finds the particles of `t` that penetrate a surface (an obstacle, a prop or a neighbour's tread)
   // at x + dx (dx null: at x) and have no contact yet, and adds a contact for each, the deepest
   // where a particle meets several. True when any was added.
@@ -109,7 +142,9 @@ class GlobalSolver {
   bool update_active_set(const Tire& t, const SubstepContext& ctx);
   void write_back(Tire& t, const SubstepContext& ctx);
 
-  static constexpr std::size_t kMaxRows = 3;  // the two areas and the grab
+  static constexpr std::size_t kMaxRows = 3;    // the two areas and the grab
+  static constexpr std::size_t kMaxBodies = 2;  // free props in one tire's system; more keep their give
+  static constexpr std::size_t kMaxUnknowns = kMaxRows + 3 * kMaxBodies;
 
   std::uint32_t segments_ = 0;
   std::size_t stride_ = 0;  // 4 × capacity: the length of one column
@@ -120,8 +155,11 @@ class GlobalSolver {
   std::vector<double> f_;       // f with them, then L⁻¹ f
   std::vector<double> dx_;      // the last pass's Δx, in block order
   std::vector<Row> rows_;
-  std::vector<double> g_;  // column r: the gradient g_r
-  std::vector<double> y_;  // column r: L⁻¹ g_r
+  std::vector<double> g_;   // column r: the gradient g_r
+  std::vector<double> y_;   // column r: L⁻¹ g_r
+  std::vector<double> yb_;  // column 3j + c: L⁻¹ of body j's column c of B
+  std::vector<Body> bodies_;
+  double border_[kMaxUnknowns][kMaxUnknowns + 1] = {};  // the border system, its right side last
   std::vector<Contact> contacts_;
   std::vector<std::int32_t> contact_of_;  // per particle: its contact, or −1
   std::vector<double> depth_;             // find_contacts: the depth of each contact found

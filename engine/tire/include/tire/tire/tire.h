@@ -55,6 +55,7 @@ struct PropImpulse {
   Vec2 impulse;  // N·s
   Vec2 point;    // where it acts (world)
   double time;   // into the tick (s)
+  double since;  // when the change of velocity it makes acts from (RigidWorld::add_impulse)
 };
 
 // A nearby prop's predicted pose at the start and end of the current substep.
