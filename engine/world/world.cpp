@@ -457,6 +457,17 @@ void World::guard_divergence(Tire& t) {
   t.reset();
 }
 
+std::size_t World::asleep_count() const {
+  return static_cast<std::size_t>(std::count_if(tires_.begin(), tires_.end(), [](const Tire& t) { return t.asleep; }));
+}
+
+void World::wake_all() {
+  for (Tire& t : tires_) {
+    t.asleep = false;
+    t.still_time = 0.0;
+  }
+}
+
 std::uint64_t World::state_hash() const {
   StateHash h;
   hash_into(h);

@@ -35,6 +35,18 @@ struct SolverConfig {
   // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state.
   double divergence_limit = 1.0e5;
 
+  // Sleeping (world/sleep.h): bodies that touch form islands; an island whose bodies have all been
+  // still for sleep_time stops being simulated until something wakes it. The level's
+  // "solver": {"sleep": false} turns it off.
+  bool sleep = true;
+  // Still: every particle of a tire slower than this (its rigid motion and its deformation alike),
+  // a dynamic prop's centre and its rim about it too (m/s). Box2D's b2_linearSleepTolerance is
+  // 0.01 m/s for rigid bodies; a resting tire's particles keep a few mm/s of solver noise.
+  double sleep_speed = 0.05;
+  // How long an island's bodies must all have been still before it sleeps (s): Box2D's
+  // b2_timeToSleep.
+  double sleep_time = 0.5;
+
   // The global method's own numbers.
   // Contact active-set passes per iteration: each solves the system with the contacts found so far,
   // then drops those that pull (λ_n < 0) or slip (|λ_t| > μ_s λ_n) and adds particles that now

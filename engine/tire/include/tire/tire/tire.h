@@ -182,6 +182,11 @@ struct Tire {
   Vec2 grab_target;
   double grab_compliance = 1e-4;  // m/N: 10 kg hangs 1 cm below the mouse
   double grab_lambda = 0.0;
+
+  // Sleeping (world/sleep.h): an asleep tire is not simulated until its island is woken; still_time
+  // is how long it has been still (SolverConfig::sleep_speed), counted while it is awake.
+  bool asleep = false;
+  double still_time = 0.0;
 };
 
 }  // namespace tire

@@ -94,6 +94,11 @@ class World {
   void debug_draw(DebugDraw& draw) const;
 
   const std::vector<Tire>& tires() const { return tires_; }
+  // Tires asleep now (SolverConfig::sleep).
+  std::size_t asleep_count() const;
+  // Wakes every sleeping tire and prop: what a change of the world's rules (live tuning, gravity)
+  // does, as no island can tell whether it still rests under the new ones.
+  void wake_all();
   std::size_t tire_pair_count() const { return tire_pairs_.size(); }  // broad-phase pairs, last tick
   Tire* find_tire(TireId id);
   const Tire* player() const;
