@@ -20,6 +20,7 @@ SolverConfig global_config(int substeps, int iterations = 1) {
   c.method = SolverMethod::global;
   c.substeps = substeps;
   c.iterations = iterations;
+  c.sleep = false;  // the solve's own figures, not where a still tire is frozen (sleep_islands.h)
   return c;
 }
 

@@ -130,6 +130,8 @@ std::uint32_t RigidWorld::add_prop(const PropSpec& spec) {
   if (spec.type == PropType::dynamic_body) ++dynamic_props_;
   props_.push_back(std::move(prop));
   bodies_.push_back(body);
+  group_.reserve(props_.size());
+  grouped_.push_back(0);
   return index;
 }
 
@@ -167,6 +169,7 @@ bool RigidWorld::remove_prop(std::string_view name) {
   world_->DestroyBody(bodies_[*i]);
   bodies_[*i] = nullptr;
   p.alive = false;
+  ++removals_;
   if (p.spec.type != PropType::static_body) --moving_props_;
   if (p.spec.type == PropType::dynamic_body) --dynamic_props_;
   return true;
@@ -286,8 +289,9 @@ void RigidWorld::begin_tick(double dt, bool substep_motion) {
     p.untravelled_angle = 0.0;
     p.support_count = 0;
     p.airborne = false;
+    p.awake = dynamic && b.IsAwake();
     if (!dynamic) continue;
-    p.airborne = substep_motion;
+    p.airborne = substep_motion && b.IsAwake();
     for (const b2ContactEdge* edge = b.GetContactList(); edge && p.support_count < Prop::kMaxSupports;
          edge = edge->next) {
       const b2Contact* contact = edge->contact;
@@ -351,6 +355,66 @@ void RigidWorld::end_tick(double dt) {
   }
   if (needs_stepping())
     world_->Step(static_cast<float>(dt), kBox2dVelocityIterations, kBox2dPositionIterations);
+}
+
+bool RigidWorld::moving(std::uint32_t i) const {
+  const Prop& p = props_[i];
+  if (!p.alive) return false;
+  if (p.spec.type == PropType::kinematic_body) return p.velocity != Vec2{} || p.omega != 0.0;
+  return p.awake;
+}
+
+Aabb RigidWorld::swept_bounds(std::uint32_t i, double dt) const {
+  const Prop& p = props_[i];
+  const Aabb local = p.geometry.local_bounds();
+  const double reach = length(local.max - local.min) * 0.5;
+  const double travel = (length(p.velocity) + std::abs(p.omega) * reach) * dt;
+  return p.start_pose.to_world(local).expanded(travel);
+}
+
+void RigidWorld::gather_group(std::span<const std::uint32_t> props) {
+  group_.clear();
+  const auto visit = [&](std::uint32_t i) {
+    if (!props_[i].alive || grouped_[i] || bodies_[i]->GetType() != b2_dynamicBody) return;
+    grouped_[i] = 1;
+    group_.push_back(i);
+  };
+  for (const std::uint32_t i : props) visit(i);
+  for (std::size_t k = 0; k < group_.size(); ++k)
+    for (const b2ContactEdge* e = bodies_[group_[k]]->GetContactList(); e; e = e->next) {
+      if (!e->contact->IsTouching() || e->other->GetType() != b2_dynamicBody) continue;
+      b2Fixture* f = e->other->GetFixtureList();
+      if (f && (f->GetUserData().pointer & kPropTag))
+        visit(static_cast<std::uint32_t>(f->GetUserData().pointer & ~kPropTag));
+    }
+  for (const std::uint32_t i : group_) grouped_[i] = 0;
+}
+
+bool RigidWorld::group_still(std::span<const std::uint32_t> props, double speed) {
+  gather_group(props);
+  for (const std::uint32_t i : group_) {
+    const b2Body& b = *bodies_[i];
+    const Aabb local = props_[i].geometry.local_bounds();
+    const double reach = length(local.max - local.min) * 0.5;
+    if (length(from_b2(b.GetLinearVelocity())) + std::abs(b.GetAngularVelocity()) * reach >= speed)
+      return false;
+  }
+  return true;
+}
+
+void RigidWorld::sleep_group(std::span<const std::uint32_t> props) {
+  gather_group(props);
+  for (const std::uint32_t i : group_) bodies_[i]->SetAwake(false);
+}
+
+void RigidWorld::wake_group(std::span<const std::uint32_t> props) {
+  gather_group(props);
+  for (const std::uint32_t i : group_) bodies_[i]->SetAwake(true);
+}
+
+void RigidWorld::set_sleeping_allowed(std::uint32_t i, bool allowed) {
+  b2Body* b = bodies_[i];
+  if (b && b->IsSleepingAllowed() != allowed) b->SetSleepingAllowed(allowed);
 }
 
 void RigidWorld::hash_into(StateHash& h) const {

@@ -8,13 +8,14 @@
 
 namespace tire {
 
-void TirePairFinder::find(const std::vector<Tire>& tires, double dt, double gravity,
-                          std::vector<TirePair>& out) {
+void TirePairFinder::find(const std::vector<Tire>& tires, std::span<const std::uint32_t> which, double dt,
+                          double gravity, std::vector<TirePair>& out) {
   out.clear();
-  const auto n = static_cast<std::uint32_t>(tires.size());
-  bounds_.resize(n);
+  const auto n = static_cast<std::uint32_t>(which.size());
+  bounds_.resize(tires.size());
   order_.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) {
+  for (std::uint32_t w = 0; w < n; ++w) {
+    const std::uint32_t i = which[w];
     const ArrayView<Vec2>& x = tires[i].particles.x;
     const ArrayView<Vec2>& v = tires[i].particles.v;
     Aabb b{x.front(), x.front()};
@@ -26,7 +27,7 @@ void TirePairFinder::find(const std::vector<Tire>& tires, double dt, double grav
     }
     // Both tires of a pair are expanded, so each covers its own travel.
     bounds_[i] = b.expanded(std::sqrt(speed2) * dt + 0.5 * gravity * dt * dt + kTirePairSkin);
-    order_[i] = {bounds_[i].min.x, i};
+    order_[w] = {bounds_[i].min.x, i};
   }
   std::sort(order_.begin(), order_.end(), [](const Entry& l, const Entry& r) {
     return l.min_x < r.min_x || (l.min_x == r.min_x && l.index < r.index);

@@ -33,6 +33,7 @@ World& World::operator=(World&&) noexcept = default;
 void World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   Tire* t = find_tire(id);
   if (!t) return;
+  sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
   const Vec2 dv = impulse / t->total_mass();
   for (Vec2& v : t->particles.v) v += dv;
 }
@@ -106,6 +107,7 @@ std::optional<double> tire_parameter(const Tire& t, ParamId id) {
 bool World::set_parameter(std::string_view key, double value) {
   const Parameter* p = find_parameter(key);
   if (!p || !p->runtime() || !p->accepts(value)) return false;
+  wake_all();  // live tuning: no island can tell whether it still rests under the new value
   switch (p->id) {
     case ParamId::solver_substeps: config_.substeps = static_cast<int>(value); return true;
     case ParamId::solver_iterations: config_.iterations = static_cast<int>(value); return true;
@@ -147,12 +149,14 @@ void World::reset_tire(TireId id, std::optional<Vec2> position) {
   Tire* t = find_tire(id);
   if (!t) return;
   if (position) t->spec.position = *position;
+  sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
   t->reset();
 }
 
 void World::grab_particle(TireId id, std::uint32_t particle, Vec2 target) {
   Tire* t = find_tire(id);
   if (!t || particle >= t->n) return;
+  sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
   t->grabbed = true;
   t->grab_particle = particle;
   t->grab_target = target;
@@ -177,14 +181,23 @@ TireId World::add_tire(const TireSpec& spec) {
   reserve_doubling(colored_pairs_, pairs);
   reserve_doubling(pair_color_, pairs);
   reserve_doubling(tire_colors_, tires_.size());
+  sleep_.reserve(tires_.capacity(), rigid_.props().size());
   reserve_global_solvers();
   return id;
+}
+
+std::uint32_t World::add_prop(const PropSpec& spec) {
+  const std::uint32_t i = rigid_.add_prop(spec);
+  sleep_.reserve(tires_.capacity(), rigid_.props().size());
+  return i;
 }
 
 bool World::remove_tire(TireId id) {
   const auto it = std::find_if(tires_.begin(), tires_.end(), [id](const Tire& t) { return t.id == id; });
   if (it == tires_.end()) return false;
+  wake_all();  // what rested on it falls; indices shift
   tires_.erase(it);
+  sleep_.mark_stale();
   if (player_ == id) player_.reset();
   return true;
 }
@@ -209,21 +222,30 @@ const Tire* World::player() const {
 void World::step(const TickInput& input) {
   TIRE_ASSERT(config_.substeps >= 1 && config_.iterations >= 1, "fewer than one substep or iteration a tick");
   TIRE_ASSERT(config_.dt > 0.0 && std::isfinite(config_.dt), "the tick is not a positive length of time");
+  std::optional<std::uint32_t> held;  // the player while a key is held: its island stays awake
   if (player_) {
     if (Tire* p = find_tire(*player_)) {
       p->control.steer = input.steer;
       p->control.jump = input.jump;
+      if (input.steer != 0.0 || input.jump) {
+        held = static_cast<std::uint32_t>(index_of(*p));
+        sleep_.wake(tires_, *held, rigid_);
+      }
     }
   }
 
   // Once per tick, before the substeps (the paper detects collisions once per frame, not per
-  // substep): Box2D's props read and kinematic ones steered; each tire's broad phase against
-  // obstacles and props, and its jump; the broad phase between tires (a lone tire skips it), its
-  // pairs coloured for the parallel solve.
+  // substep): Box2D's props read and kinematic ones steered; the sleeping islands that something
+  // moving may reach woken; each awake tire's broad phase against obstacles and props, and its
+  // jump; the broad phase between tires (a lone tire skips it), its pairs coloured for the
+  // parallel solve.
   rigid_.begin_tick(config_.dt, config_.method == SolverMethod::global);
+  if (!config_.sleep && sleep_.asleep_count() > 0) wake_all();  // sleeping was turned off
+  wake_for_props();
+  if (sleep_.stale()) sleep_.refresh(tires_);
   sweep_tires([&](Tire& t) { begin_tick(t, config_, rigid_); });
-  tire_pairs_.clear();
-  if (tires_.size() > 1) pair_finder_.find(tires_, config_.dt, length(gravity_), tire_pairs_);
+  sleep_.clear_woken();
+  find_tire_pairs();
   color_pairs();
   // The global method solves the contacts between tires inside each tire's system instead
   // (tire_neighbours.h): each tire's neighbours.
@@ -255,8 +277,51 @@ void World::step(const TickInput& input) {
   // After the substeps: the impulses the tires gave props go to Box2D, which steps them; a tire
   // that diverged is reset.
   rigid_.end_tick(config_.dt);
-  for (Tire& t : tires_) guard_divergence(t);
+  for (const std::uint32_t i : sleep_.awake()) guard_divergence(tires_[i]);
+  if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, config_, held);
+  if (sleep_.stale()) sleep_.refresh(tires_);
+  sleep_.hold_props_near_awake_tires(tires_, rigid_);
   ++tick_;
+}
+
+void World::find_tire_pairs() {
+  tire_pairs_.clear();
+  if (tires_.size() < 2) return;  // a lone tire has no pairs
+  for (;;) {
+    pair_finder_.find(tires_, sleep_.awake(), config_.dt, length(gravity_), tire_pairs_);
+    if (sleep_.asleep_count() == 0) return;
+    // An awake tire that may reach a sleeping one this tick wakes its island, whose tires then
+    // begin their tick and join the broad phase (and may reach another island: again).
+    for (const std::uint32_t i : sleep_.awake())
+      sleep_.overlapping(pair_finder_.bounds(i), [&](std::uint32_t j) { sleep_.wake(tires_, j, rigid_); });
+    if (sleep_.woken().empty()) return;
+    for (const std::uint32_t j : sleep_.woken()) begin_tick(tires_[j], config_, rigid_);
+    sleep_.clear_woken();
+    sleep_.refresh(tires_);
+  }
+}
+
+void World::wake_for_props() {
+  if (sleep_.asleep_count() == 0) {
+    seen_removals_ = rigid_.removals();
+    return;
+  }
+  const auto& props = rigid_.props();
+  for (std::uint32_t p = 0; p < props.size(); ++p)
+    if (rigid_.moving(p))
+      sleep_.overlapping(rigid_.swept_bounds(p, config_.dt).expanded(kTirePairSkin),
+                         [&](std::uint32_t j) { sleep_.wake(tires_, j, rigid_); });
+  if (rigid_.removals() != seen_removals_) {
+    seen_removals_ = rigid_.removals();
+    for (std::uint32_t i = 0; i < tires_.size(); ++i) {
+      if (!tires_[i].asleep) continue;
+      for (const std::uint32_t p : tires_[i].prop_candidates)
+        if (!props[p].alive) {
+          sleep_.wake(tires_, i, rigid_);
+          break;
+        }
+    }
+  }
 }
 
 // Predict (begin_substep): v ← v + h f_ext/m (gravity, and steering's torque about the hub), the
@@ -340,7 +405,7 @@ void World::fused_substeps(SubstepContext ctx) {
 }
 
 void World::hand_over_impulses() {
-  for (Tire& t : tires_) apply_prop_impulses(t, rigid_);
+  for (const std::uint32_t i : sleep_.awake()) apply_prop_impulses(tires_[i], rigid_);
 }
 
 // The contacts between tires, a colour at a time; a colour's pairs share no tire, so they are solved
@@ -385,10 +450,11 @@ void World::reserve_global_solvers() {
 
 template <typename F>
 void World::sweep_tires(F&& fn) {
-  for_tires(tires_.size(), [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) {
-      if (i + 1 < e) tires_[i + 1].prefetch();  // memory-bound in big scenes: load the next one early
-      fn(tires_[i]);
+  const std::span<const std::uint32_t> awake = sleep_.awake();
+  for_tires(awake.size(), [&](std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k) {
+      if (k + 1 < e) tires_[awake[k + 1]].prefetch();  // memory-bound in big scenes: load the next one early
+      fn(tires_[awake[k]]);
     }
   });
 }
@@ -457,15 +523,14 @@ void World::guard_divergence(Tire& t) {
   t.reset();
 }
 
-std::size_t World::asleep_count() const {
-  return static_cast<std::size_t>(std::count_if(tires_.begin(), tires_.end(), [](const Tire& t) { return t.asleep; }));
+void World::wake_all() {
+  sleep_.wake_all(tires_, rigid_);
+  sleep_.clear_woken();
 }
 
-void World::wake_all() {
-  for (Tire& t : tires_) {
-    t.asleep = false;
-    t.still_time = 0.0;
-  }
+void World::wake_tire(TireId id) {
+  if (Tire* t = find_tire(id)) sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
+  sleep_.clear_woken();
 }
 
 std::uint64_t World::state_hash() const {
@@ -481,6 +546,11 @@ void World::hash_into(StateHash& h) const {
     h.add_bytes(t.particles.x.data(), t.particles.x.size() * sizeof(Vec2));
     h.add_bytes(t.particles.v.data(), t.particles.v.size() * sizeof(Vec2));
     h.add_bytes(t.grounded_flags.data(), t.grounded_flags.size());
+    if (config_.sleep) {  // the sleep state, where sleeping is on (sleep_islands.h)
+      h.add(t.asleep);
+      h.add(t.still_time);
+      h.add(t.island);
+    }
   }
   rigid_.hash_into(h);
 }

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -53,7 +54,8 @@ struct Prop {
   // changes of velocity this tick having acted only from when they were made: Σ Δv·t_from.
   Vec2 untravelled;
   double untravelled_angle = 0.0;
-  bool airborne = false;  // substep motion: touching nothing in Box2D this tick
+  bool airborne = false;  // substep motion: awake, and touching nothing in Box2D this tick
+  bool awake = false;     // Box2D simulates it this tick (a dynamic prop not asleep)
 
   // What holds a dynamic prop up (shock propagation, one level deep): the normals, pointing into
   // the prop, of its Box2D contacts with static and kinematic bodies at the start of the tick. A
@@ -150,7 +152,27 @@ class RigidWorld {
 
   void hash_into(StateHash& h) const;
 
+  // Sleeping (world/sleep_islands.h).
+  // Props removed so far: a change tells that something under a sleeping tire may be gone.
+  std::uint64_t removals() const { return removals_; }
+  // Whether live prop i moves this tick: a kinematic prop with a velocity, a dynamic one awake.
+  bool moving(std::uint32_t i) const;
+  // The world box around live prop i at the start of the tick, widened by its travel over dt.
+  Aabb swept_bounds(std::uint32_t i, double dt) const;
+  // The dynamic props among `props` and every dynamic body joined to them through touching Box2D
+  // contacts (props resting on each other sleep together, as Box2D's islands do): whether all of
+  // them are slower than `speed` (their centre, and their outline about it); sleep_group puts them
+  // all to sleep, wake_group wakes them.
+  bool group_still(std::span<const std::uint32_t> props, double speed);
+  void sleep_group(std::span<const std::uint32_t> props);
+  void wake_group(std::span<const std::uint32_t> props);
+  // Whether Box2D may put dynamic prop i to sleep on its own (not while it touches an awake tire,
+  // which Box2D does not see: the tire's pushes would keep waking it).
+  void set_sleeping_allowed(std::uint32_t i, bool allowed);
+
  private:
+  // Breadth-first over touching Box2D contacts from the dynamic props among `props`: fills group_.
+  void gather_group(std::span<const std::uint32_t> props);
   void steer_along_path(std::uint32_t i, double dt);
 
   // Box2D stays behind this wall (the layer links it privately): its types are only named here.
@@ -161,6 +183,9 @@ class RigidWorld {
   std::vector<b2Body*> bodies_;  // props_[i]'s Box2D body; null once the prop is removed
   std::size_t moving_props_ = 0;
   std::size_t dynamic_props_ = 0;
+  std::uint64_t removals_ = 0;
+  std::vector<std::uint32_t> group_;   // gather_group's answer (scratch, one entry a prop at most)
+  std::vector<std::uint8_t> grouped_;  // per prop: in group_ (scratch)
   Vec2 gravity_;
   bool substep_motion_ = false;  // this tick's
 };

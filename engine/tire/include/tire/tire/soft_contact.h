@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "tire/math/aabb.h"
@@ -27,7 +28,11 @@ struct TirePair {
 // warmed up.
 class TirePairFinder {
  public:
-  void find(const std::vector<Tire>& tires, double dt, double gravity, std::vector<TirePair>& out);
+  // The pairs among tires[which[k]] (indices ascending), into `out`.
+  void find(const std::vector<Tire>& tires, std::span<const std::uint32_t> which, double dt, double gravity,
+            std::vector<TirePair>& out);
+  // Tire i's bounds in the last find (i one of `which`): its tread, widened by its travel in dt.
+  const Aabb& bounds(std::uint32_t i) const { return bounds_[i]; }
 
  private:
   struct Entry {

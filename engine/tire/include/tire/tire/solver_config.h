@@ -35,14 +35,18 @@ struct SolverConfig {
   // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state.
   double divergence_limit = 1.0e5;
 
-  // Sleeping (world/sleep.h): bodies that touch form islands; an island whose bodies have all been
+  // Sleeping (world/sleep_islands.h): bodies that touch form islands; an island whose bodies have all been
   // still for sleep_time stops being simulated until something wakes it. The level's
   // "solver": {"sleep": false} turns it off.
   bool sleep = true;
-  // Still: every particle of a tire slower than this (its rigid motion and its deformation alike),
-  // a dynamic prop's centre and its rim about it too (m/s). Box2D's b2_linearSleepTolerance is
-  // 0.01 m/s for rigid bodies; a resting tire's particles keep a few mm/s of solver noise.
+  // Still: a tire's rigid motion slower than sleep_speed where it is fastest (its hub's speed plus
+  // its spin times its radius), and its deformation slower than sleep_deform_speed (every
+  // particle's velocity less the rigid motion's there); a dynamic prop's centre and outline slower
+  // than sleep_speed (m/s). Box2D's b2_linearSleepTolerance is 0.01 m/s for rigid bodies; in a
+  // settled pile a tire's particles keep up to 5 cm/s of solver jitter about a rigid motion of a
+  // few mm/s.
   double sleep_speed = 0.05;
+  double sleep_deform_speed = 0.1;
   // How long an island's bodies must all have been still before it sleeps (s): Box2D's
   // b2_timeToSleep.
   double sleep_time = 0.5;

@@ -183,10 +183,11 @@ struct Tire {
   double grab_compliance = 1e-4;  // m/N: 10 kg hangs 1 cm below the mouse
   double grab_lambda = 0.0;
 
-  // Sleeping (world/sleep.h): an asleep tire is not simulated until its island is woken; still_time
+  // Sleeping (world/sleep_islands.h): an asleep tire is not simulated until its island is woken; still_time
   // is how long it has been still (SolverConfig::sleep_speed), counted while it is awake.
   bool asleep = false;
   double still_time = 0.0;
+  TireId island = 0;  // while asleep: the island it sleeps in (the id of one of its tires)
 };
 
 }  // namespace tire

@@ -18,6 +18,7 @@
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
 #include "tire/tire/tire_neighbours.h"
+#include "tire/world/sleep_islands.h"
 
 namespace tire {
 
@@ -54,7 +55,7 @@ class World {
   TireId add_tire(const TireSpec& spec);
   bool remove_tire(TireId id);
   void add_obstacle(const Obstacle& obstacle) { rigid_.add_obstacle(obstacle); }
-  std::uint32_t add_prop(const PropSpec& spec) { return rigid_.add_prop(spec); }
+  std::uint32_t add_prop(const PropSpec& spec);
 
   // What scripts (and the game's tuning panel) can do between ticks.
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
@@ -94,11 +95,14 @@ class World {
   void debug_draw(DebugDraw& draw) const;
 
   const std::vector<Tire>& tires() const { return tires_; }
-  // Tires asleep now (SolverConfig::sleep).
-  std::size_t asleep_count() const;
+  // Tires asleep now (SolverConfig::sleep; sleep_islands.h).
+  std::size_t asleep_count() const { return sleep_.asleep_count(); }
   // Wakes every sleeping tire and prop: what a change of the world's rules (live tuning, gravity)
-  // does, as no island can tell whether it still rests under the new ones.
+  // does, as no island can tell whether it still rests under the new ones. A caller that changes
+  // config() itself calls it; set_parameter and set_gravity do.
   void wake_all();
+  // Wakes the island of tire `id` (a script's impulse, a grab, a reset do it themselves).
+  void wake_tire(TireId id);
   std::size_t tire_pair_count() const { return tire_pairs_.size(); }  // broad-phase pairs, last tick
   Tire* find_tire(TireId id);
   const Tire* player() const;
@@ -110,6 +114,7 @@ class World {
   void set_gravity(Vec2 g) {
     gravity_ = g;
     rigid_.set_gravity(g);
+    wake_all();
   }
 
   std::uint64_t tick() const { return tick_; }
@@ -136,6 +141,12 @@ class World {
   void solve_tire_pairs();
   void solve_by_tire_colour(const SubstepContext& ctx, bool last);
   void guard_divergence(Tire& t);
+  // The broad phase between the awake tires into tire_pairs_; a sleeping island that an awake tire
+  // may reach this tick is woken first (and its tires begin their tick).
+  void find_tire_pairs();
+  // Wakes the sleeping islands a moving prop may reach this tick, and those a removed prop held.
+  void wake_for_props();
+  std::size_t index_of(const Tire& t) const { return static_cast<std::size_t>(&t - tires_.data()); }
   void color_pairs();
   // Whether no two pairs of one parallel colour share a tire (a check for TIRE_ASSERT: it rebuilds
   // tire_colors_ from colored_pairs_, which leaves that scratch as color_pairs() left it).
@@ -168,6 +179,8 @@ class World {
   // The global method's scratch, one solver a thread, sized for the largest tire (add_tire).
   GlobalSolverPool global_;
   TireNeighbours neighbours_;  // the global method's contacts between tires
+  SleepIslands sleep_;
+  std::uint64_t seen_removals_ = 0;  // RigidWorld::removals() when wake_for_props last looked
   void reserve_global_solvers();
   std::optional<TireId> player_;
   TireId next_id_ = 0;

@@ -1,0 +1,163 @@
+#include "tire/world/sleep_islands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tire {
+
+void SleepIslands::reserve(std::size_t tires, std::size_t props) {
+  awake_.reserve(tires);
+  sleeping_.reserve(tires);
+  bounds_.resize(std::max(bounds_.size(), tires));
+  woken_.reserve(tires);
+  parent_.resize(std::max(parent_.size(), tires + props));
+  still_.resize(std::max(still_.size(), tires));
+  blocked_.resize(std::max(blocked_.size(), tires));
+  members_.reserve(tires);
+  island_.reserve(tires);
+  near_.resize(std::max(near_.size(), props));
+  stale_ = true;
+}
+
+void SleepIslands::refresh(const std::vector<Tire>& tires) {
+  awake_.clear();
+  sleeping_.clear();
+  widest_ = 0.0;
+  for (std::uint32_t i = 0; i < tires.size(); ++i) {
+    const Tire& t = tires[i];
+    if (!t.asleep) {
+      awake_.push_back(i);
+      continue;
+    }
+    // The tread bounds the tire; the skin is the broad phase's between tires.
+    const Aabb b = bounds_of(std::span<const Vec2>(t.particles.x.data(), t.n)).expanded(kTirePairSkin);
+    bounds_[i] = b;
+    widest_ = std::max(widest_, b.max.x - b.min.x);
+    sleeping_.push_back({b.min.x, i});
+  }
+  std::sort(sleeping_.begin(), sleeping_.end(), [](const Entry& l, const Entry& r) {
+    return l.min_x < r.min_x || (l.min_x == r.min_x && l.index < r.index);
+  });
+  asleep_ = sleeping_.size();
+  stale_ = false;
+}
+
+void SleepIslands::gather_props(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
+                                const RigidWorld& rigid) {
+  props_.clear();
+  for (const std::uint32_t i : members)
+    for (const std::uint32_t p : tires[i].prop_candidates)
+      if (rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) props_.push_back(p);
+}
+
+bool SleepIslands::wake(std::vector<Tire>& tires, std::uint32_t i, RigidWorld& rigid) {
+  if (!tires[i].asleep) return false;
+  const TireId island = tires[i].island;
+  island_.clear();
+  for (std::uint32_t j = 0; j < tires.size(); ++j) {
+    Tire& t = tires[j];
+    if (!t.asleep || t.island != island) continue;
+    t.asleep = false;
+    t.still_time = 0.0;
+    island_.push_back(j);
+    woken_.push_back(j);
+  }
+  gather_props(tires, island_, rigid);
+  rigid.wake_group(props_);
+  stale_ = true;
+  return true;
+}
+
+void SleepIslands::wake_all(std::vector<Tire>& tires, RigidWorld& rigid) {
+  for (std::uint32_t i = 0; i < tires.size(); ++i) wake(tires, i, rigid);
+}
+
+std::uint32_t SleepIslands::find(std::uint32_t node) {
+  while (parent_[node] != node) {
+    parent_[node] = parent_[parent_[node]];  // path halving
+    node = parent_[node];
+  }
+  return node;
+}
+
+void SleepIslands::join(std::uint32_t a, std::uint32_t b) {
+  a = find(a);
+  b = find(b);
+  if (a == b) return;
+  // The lower index is the root: an island's root is its first tire, whatever the order of joins.
+  if (b < a) std::swap(a, b);
+  parent_[b] = a;
+}
+
+void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pairs, RigidWorld& rigid,
+                          const SolverConfig& config, std::optional<std::uint32_t> keep_awake) {
+  const auto n = static_cast<std::uint32_t>(tires.size());
+  const double deform2 = config.sleep_deform_speed * config.sleep_deform_speed;
+  bool any_ready = false;
+  for (const std::uint32_t i : awake_) {
+    Tire& t = tires[i];
+    const RigidMotion m = t.rigid_motion();
+    double fastest2 = 0.0;  // of a particle about the rigid motion
+    for (std::uint32_t k = 0; k < t.particles.size(); ++k)
+      fastest2 = std::max(fastest2, length_squared(t.particles.v[k] - m.velocity -
+                                                   perp(t.particles.x[k] - m.centroid) * m.omega));
+    // A tire held, driven or grabbed is not resting, however slowly it moves.
+    const bool still = length(m.velocity) + std::abs(m.omega) * t.spec.outer_radius < config.sleep_speed &&
+                       fastest2 < deform2 && !t.grabbed && t.control.steer == 0.0;
+    t.still_time = still ? t.still_time + config.dt : 0.0;
+    any_ready = any_ready || t.still_time >= config.sleep_time;
+  }
+  if (any_ready) {
+    // The islands of the awake bodies: tires joined through their pairs, and through the dynamic
+    // props near them (a prop's node is n + its index).
+    for (const std::uint32_t i : awake_) parent_[i] = i;
+    const auto& props = rigid.props();
+    for (std::uint32_t p = 0; p < props.size(); ++p) parent_[n + p] = n + p;
+    for (const TirePair& pair : pairs) join(pair.a, pair.b);
+    for (const std::uint32_t i : awake_)
+      for (const std::uint32_t p : tires[i].prop_candidates)
+        if (props[p].alive && props[p].spec.type == PropType::dynamic_body) join(i, n + p);
+    for (const std::uint32_t i : awake_) {
+      still_[i] = std::numeric_limits<double>::infinity();
+      blocked_[i] = 0;
+    }
+    members_.clear();
+    for (const std::uint32_t i : awake_) {
+      const std::uint32_t r = find(i);
+      still_[r] = std::min(still_[r], tires[i].still_time);
+      if (keep_awake && *keep_awake == i) blocked_[r] = 1;
+      members_.push_back(std::uint64_t{r} << 32 | i);
+    }
+    std::sort(members_.begin(), members_.end());
+    for (std::size_t k = 0; k < members_.size();) {
+      const auto r = static_cast<std::uint32_t>(members_[k] >> 32);
+      island_.clear();
+      for (; k < members_.size() && members_[k] >> 32 == r; ++k)
+        island_.push_back(static_cast<std::uint32_t>(members_[k]));
+      if (blocked_[r] || still_[r] < config.sleep_time) continue;
+      gather_props(tires, island_, rigid);
+      if (!rigid.group_still(props_, config.sleep_speed)) continue;
+      rigid.sleep_group(props_);
+      for (const std::uint32_t i : island_) {
+        Tire& t = tires[i];
+        t.asleep = true;
+        t.island = tires[r].id;
+        std::fill(t.particles.v.begin(), t.particles.v.end(), Vec2{});
+      }
+      stale_ = true;
+    }
+  }
+}
+
+void SleepIslands::hold_props_near_awake_tires(const std::vector<Tire>& tires, RigidWorld& rigid) {
+  const auto& props = rigid.props();
+  std::fill(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(props.size()), std::uint8_t{0});
+  for (const std::uint32_t i : awake_)
+    for (const std::uint32_t p : tires[i].prop_candidates) near_[p] = 1;
+  for (std::uint32_t p = 0; p < props.size(); ++p)
+    if (props[p].alive && props[p].spec.type == PropType::dynamic_body)
+      rigid.set_sleeping_allowed(p, !near_[p]);
+}
+
+}  // namespace tire
