@@ -126,3 +126,35 @@ TEST_CASE("set overrides numeric keys by dotted path, and validation judges the 
   CHECK(has(errors_of(text, {"tires=1"}), "is an object or array, not a number"));
   CHECK(has(errors_of(text, {"nonsense"}), "expected key=value"));
 }
+
+TEST_CASE("solver.sleep is read as a boolean, true unless the level says false", "[unit][level]") {
+  const auto solver_of = [](const std::string& solver) {
+    const std::string text = R"({"name": "n", )" + solver + R"("tires": [{"position": [0, 1]}]})";
+    LevelLoad load = load_level_text(text, "x.json");
+    INFO(text << "\n" << joined(load.errors));
+    REQUIRE(load.level);
+    return load.level->solver;
+  };
+  CHECK(SolverConfig{}.sleep);
+  CHECK(solver_of("").sleep);
+  CHECK(solver_of(R"("solver": {"substeps": 4}, )").sleep);
+  CHECK(solver_of(R"("solver": {"sleep": true}, )").sleep);
+  const SolverConfig off = solver_of(R"("solver": {"sleep": false, "method": "global"}, )");
+  CHECK_FALSE(off.sleep);
+  CHECK(off.method == SolverMethod::global);
+}
+
+TEST_CASE("a solver.sleep that is not a boolean is reported with its path", "[unit][level]") {
+  const std::string before = R"({"name": "n", "solver": {"sleep": )";
+  const std::string after = R"(}, "tires": [{"position": [0, 1]}]})";
+  for (const auto& [value, got] : std::vector<std::pair<std::string, std::string>>{
+           {"\"no\"", "\"no\""}, {"0", "0"}, {"1", "1"}, {"null", "null"}, {"[true]", "[true]"}}) {
+    const auto errors = errors_of(before + value + after);
+    INFO(value << "\n" << joined(errors));
+    CHECK(errors.size() == 1);
+    CHECK(has(errors, "x.json: /solver/sleep: must be true or false, got " + got));
+  }
+  // A --set gives a number, never a boolean: refused like the file's.
+  CHECK(has(errors_of(R"({"name": "n", "tires": [{"position": [0, 1]}]})", {"solver.sleep=0"}),
+            "x.json: /solver/sleep: must be true or false, got 0"));
+}

@@ -26,7 +26,11 @@ tirectl_test("validate reports truncated JSON" 2 ARGS validate ${BAD}/bad-trunca
 tirectl_test("validate reports a missing file" 2 ARGS validate ${BAD}/no-such-level.json
   STDERR "no-such-level.json: no such file")
 tirectl_test("run prints the final state" 0 ARGS run ${LEVELS}/01-first-roll.json --ticks 120 --steer 1
-  STDOUT "\"ticks\": 120,.*\"status\": \"running\".*\"centroid\".*\"area_ratio\".*\"grounded\".*\"hash\": \"[0-9a-f]+\"")
+  STDOUT "\"ticks\": 120,.*\"status\": \"running\".*\"centroid\".*\"area_ratio\".*\"grounded\": [a-z]+,[ \n]*\"asleep\": false.*\"hash\": \"[0-9a-f]+\"")
+tirectl_test("validate refuses a solver.sleep that is not a boolean" 2 ARGS validate ${BAD}/bad-sleep.json
+  STDERR "bad-sleep.json: /solver/sleep: must be true or false, got \"no\"")
+tirectl_test("run refuses a solver.sleep that is not a boolean" 2 ARGS run ${BAD}/bad-sleep.json --ticks 10
+  STDERR "bad-sleep.json: /solver/sleep: must be true or false, got \"no\"")
 tirectl_test("run refuses an invalid level" 2 ARGS run ${BAD}/bad-segments.json --ticks 10
   STDERR "/tires/0/segments")
 tirectl_test("run applies --set and validates it" 2 ARGS run ${LEVELS}/01-first-roll.json --set solver.substeps=0

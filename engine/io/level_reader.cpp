@@ -20,14 +20,16 @@ const Range kFriction{0.0, 10.0};
 
 SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) {
   SolverConfig s;
-  if (!r.object(j, path,
-                {"dt", "substeps", "iterations", "damping", "tunnel_clamp", "ground_normal_y", "method"}))
+  if (!r.object(
+          j, path,
+          {"dt", "substeps", "iterations", "damping", "tunnel_clamp", "ground_normal_y", "method", "sleep"}))
     return s;
   const std::string method =
       r.choice(j, path, "method", method_name(s.method),
                {method_name(SolverMethod::gauss_seidel), method_name(SolverMethod::global)});
   for (const SolverMethod m : kSolverMethods)
     if (method == method_name(m)) s.method = m;
+  s.sleep = r.boolean(j, path, "sleep", s.sleep);
   s.dt = read_parameter(r, j, path, ParamId::solver_dt, s.dt);
   s.substeps = read_integer_parameter(r, j, path, ParamId::solver_substeps, s.substeps);
   s.iterations = read_integer_parameter(r, j, path, ParamId::solver_iterations, s.iterations);

@@ -26,7 +26,8 @@ nlohmann::ordered_json summary(const tire::LevelSession& session) {
                      {"centroid", vec(t.centroid())},
                      {"velocity", vec(t.velocity())},
                      {"area_ratio", t.area_ratio()},
-                     {"grounded", t.grounded()}});
+                     {"grounded", t.grounded()},
+                     {"asleep", t.asleep}});
   nlohmann::ordered_json props = nlohmann::ordered_json::array();
   const tire::RigidWorld& rigid = world.rigid();
   for (std::uint32_t i = 0; i < rigid.props().size(); ++i) {
@@ -45,9 +46,9 @@ void trace(const tire::World& world) {
   const tire::Vec2 c = p->centroid(), v = p->velocity();
   std::fprintf(
       stderr,
-      "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s\n",
+      "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s\n",
       world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
-      p->grounded() ? "grounded" : "in the air");
+      p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "");
 }
 
 }  // namespace
