@@ -67,9 +67,20 @@ tirectl_test("tradeoff refuses a nan inside a list" 2 ARGS tradeoff --tunnel-cla
 tirectl_test("validate refuses keys given twice" 2 ARGS validate ${BAD}/bad-duplicate-keys.json
   STDERR "bad-duplicate-keys.json: /name: key given twice \\(first at line 1\\).*bad-duplicate-keys.json: /solver: key given twice \\(first at line 3\\).*bad-duplicate-keys.json: /tires/0/mass: key given twice \\(first at line 5\\)")
 tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --steps 50
-  STDOUT "^scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,p99_ms,[^\n]*\nprototype,1,56,[1-9][0-9]*,0,1,28,1,22,50,")
+  STDOUT "^scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype,asleep\nprototype,1,56,[1-9][0-9]*,0,1,28,1,22,50,[^\n]*,[0-9]+\n")
 tirectl_test("bench counts the contacts and tire pairs of a pile" 0 ARGS bench --scene pile-100 --threads 2 --steps 3 --warmup 10
   STDOUT "\npile-100,100,5600,[1-9][0-9]*,[1-9][0-9]*,2,28,8,1,3,")
+# The big scenes, built and stepped once, so that ctest stays quick (a full run takes minutes): the
+# settled pile settles for 2 ticks only; the crowd's 9 900 shelf tires each touch their shelf with
+# the two particles of their bottom segment from the first tick, the 100 falling ones touch nothing.
+tirectl_test("bench settles pile-1000-settled for at most --settle ticks" 0
+  ARGS bench --scene pile-1000-settled --settle 2 --warmup 0 --steps 1
+  STDOUT "\npile-1000-settled,1000,56000,[0-9]+,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n"
+  STDERR "pile-1000-settled: settled for 2 ticks, 0 of 1000 tires asleep")
+tirectl_test("bench builds crowd-100" 0 ARGS bench --scene crowd-100 --warmup 0 --steps 1
+  STDOUT "\ncrowd-100,100,5600,0,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
+tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS bench --scene crowd-10000 --warmup 0 --steps 1
+  STDOUT "\ncrowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
 tirectl_test("bench refuses an unknown scene" 2 ARGS bench --scene pile-7 STDERR "unknown scene \"pile-7\"")
 tirectl_test("bench steps with the plain schedule when asked" 0 ARGS bench --scene pile-10 --schedule plain --steps 3 --warmup 2
   STDOUT "\npile-10,10,560,")

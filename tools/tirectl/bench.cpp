@@ -6,6 +6,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <string_view>
 
 #include "commands.h"
@@ -33,11 +34,17 @@ class Steppable {
   // tire pairs from the broad phase.
   virtual std::size_t contacts() const = 0;
   virtual std::size_t tire_pairs() const = 0;
+  // Tires asleep now (SolverConfig::sleep).
+  virtual std::size_t asleep() const = 0;
+  // What the scene does to its world between two ticks (the crowd's re-drop), outside the timing.
+  virtual void between_ticks() {}
 };
 
 class WorldScene final : public Steppable {
  public:
-  explicit WorldScene(std::unique_ptr<tire::World> world) : world_(std::move(world)) {}
+  // `between`: what the scene does between ticks, if anything.
+  explicit WorldScene(std::unique_ptr<tire::World> world, std::function<void(tire::World&)> between = nullptr)
+      : world_(std::move(world)), between_(std::move(between)) {}
   void step(const tire::TickInput& input) override { world_->step(input); }
   const tire::Tire& first_tire() const override { return world_->tires().front(); }
   std::size_t tire_count() const override { return world_->tires().size(); }
@@ -51,9 +58,14 @@ class WorldScene final : public Steppable {
     return count;
   }
   std::size_t tire_pairs() const override { return world_->tire_pair_count(); }
+  std::size_t asleep() const override { return world_->asleep_count(); }
+  void between_ticks() override {
+    if (between_) between_(*world_);
+  }
 
  private:
   std::unique_ptr<tire::World> world_;
+  std::function<void(tire::World&)> between_;
 };
 
 // One tire and its ground, stepped by the tire solver alone: no World around it (no level, no
@@ -81,6 +93,7 @@ class BareTireScene final : public Steppable {
   unsigned threads() const override { return 1; }
   std::size_t contacts() const override { return tire_.touching_particles(); }
   std::size_t tire_pairs() const override { return 0; }
+  std::size_t asleep() const override { return tire_.asleep ? 1 : 0; }
 
  private:
   static tire::TireSpec spec() {
@@ -140,11 +153,75 @@ std::unique_ptr<Steppable> pile(int count, int crates = 0,
   return std::make_unique<WorldScene>(std::move(world));
 }
 
+// The crowd: `resting` default tires at rest on shelves beside a pit into which 100 tires are dropped
+// again and again (the "9 900 resting beside 100 falling"; the 100 alone with resting = 0).
+//
+// The shelves: 11 static boxes 0.2 m thick (the lowest is the ground), their tops 1.5 m apart
+// (y = 0, 1.5, ..., 15), each holding up to 900 tires side by side 1.05 m apart (5 cm between
+// treads, so no two touch) from x = 0.55 to 944.5: 9 900 tires fill them. Each tire starts exactly
+// at rest on its shelf, a tread segment flat on it (hub r·cos(π/segments) above the shelf's top);
+// the shelf above clears its top by 0.3 m. Fewer resting tires fill the same shelves from the bottom.
+//
+// The pit, right of the shelves behind a 1 m wall: 11 m wide (x from 946.5 to 957.5), its floor at
+// y = -12, its walls up to y = 16. The 100 tires start above it in a block of 10 rows of 10 (1.05 m
+// apart, odd rows shifted 0.25 m as in the pile; rows 1.1 m apart, the lowest at y = 2). The lowest
+// lands 1.6 s later at 16 m/s, and the pile's impact throws more than a quarter of them back up
+// above the ground (to y ≈ 7); 70 still move faster than 1 m/s at 4 s. Every 240 ticks (4 s) all
+// 100 are put back where they started (World::reset_tire: still, in their spawn shape) and fall
+// again, so however many ticks the timing takes, its steps see falling, landing and bouncing in the
+// same proportions. The re-drop is counted in ticks (World::tick), never in time, and runs between
+// ticks (Steppable::between_ticks), outside the timing.
+constexpr int kCrowdShelves = 11;
+constexpr int kCrowdPerShelf = 900;
+constexpr double kCrowdShelfPitch = 1.5;
+constexpr double kCrowdSpacing = 1.05;
+constexpr double kCrowdPitLeft = kCrowdPerShelf * kCrowdSpacing + 1.5;  // 946.5
+constexpr double kCrowdPitWidth = 11.0;
+constexpr double kCrowdPitFloor = -12.0;
+constexpr int kCrowdFalling = 100;
+constexpr std::uint64_t kCrowdDropTicks = 240;
+
+std::unique_ptr<Steppable> crowd(int resting) {
+  auto world = std::make_unique<tire::World>(tire::SolverConfig{}, tire::Vec2{0.0, -9.81});
+  const double shelves_right = kCrowdPitLeft - 1.0;
+  // The ground under the shelves is the lowest shelf; the pit's floor and walls.
+  world->add_obstacle({{{-1.0, -1.0}, {shelves_right, 0.0}}});
+  for (int k = 1; k < kCrowdShelves; ++k)
+    world->add_obstacle({{{-1.0, k * kCrowdShelfPitch - 0.2}, {shelves_right, k * kCrowdShelfPitch}}});
+  world->add_obstacle({{{-2.0, 0.0}, {-1.0, kCrowdShelves * kCrowdShelfPitch}}});  // the rack's left end
+  const double pit_right = kCrowdPitLeft + kCrowdPitWidth;
+  world->add_obstacle({{{kCrowdPitLeft - 1.0, kCrowdPitFloor - 1.0}, {pit_right + 1.0, kCrowdPitFloor}}});
+  world->add_obstacle({{{kCrowdPitLeft - 1.0, kCrowdPitFloor}, {kCrowdPitLeft, 16.0}}});
+  world->add_obstacle({{{pit_right, kCrowdPitFloor}, {pit_right + 1.0, 16.0}}});
+
+  std::vector<tire::TireId> falling;
+  for (int i = 0; i < kCrowdFalling; ++i) {
+    tire::TireSpec spec;
+    const int row = i / 10, column = i % 10;
+    spec.position = {kCrowdPitLeft + 0.55 + kCrowdSpacing * column + 0.25 * (row % 2), 2.0 + 1.1 * row};
+    falling.push_back(world->add_tire(spec));
+  }
+  for (int i = 0; i < resting; ++i) {
+    tire::TireSpec spec;
+    const int shelf = i / kCrowdPerShelf, column = i % kCrowdPerShelf;
+    const double rest = spec.outer_radius * std::cos(std::numbers::pi / spec.segments);
+    spec.position = {0.55 + kCrowdSpacing * column, shelf * kCrowdShelfPitch + rest};
+    world->add_tire(spec);
+  }
+  return std::make_unique<WorldScene>(std::move(world), [falling](tire::World& w) {
+    if (w.tick() == 0 || w.tick() % kCrowdDropTicks != 0) return;
+    for (const tire::TireId id : falling) w.reset_tire(id);
+  });
+}
+
 struct Scene {
   const char* name;
   const char* what;
   std::function<std::unique_ptr<Steppable>()> build;
   tire::TickInput input;
+  // Settled first: stepped, before the warm-up, until as many tires have been asleep for 60 ticks
+  // running (at least one) or --settle ticks have passed (bench() below).
+  bool settled = false;
 };
 
 // The prototype's scene (../shared/REFERENCE.md): one tire of 28 segments with radial spokes,
@@ -203,6 +280,12 @@ const Scene kScenes[] = {
     {"pile-10", "10 tires piled in a walled box, soft-soft contacts on", [] { return pile(10); }, {}},
     {"pile-100", "100 tires piled in a walled box", [] { return pile(100); }, {}},
     {"pile-1000", "1000 tires piled in a walled box", [] { return pile(1000); }, {}},
+    {"pile-1000-settled",
+     "as pile-1000, stepped until its count of sleeping tires holds for 60 ticks (at most --settle ticks) "
+     "before the warm-up",
+     [] { return pile(1000); },
+     {},
+     true},
     {"mixed-200", "200 tires and 40 dynamic Box2D crates in a walled box", [] { return pile(200, 40); }, {}},
     {"global-pile-100",
      "as pile-100, solved by the global method at 2 substeps x 1 iteration",
@@ -211,6 +294,14 @@ const Scene kScenes[] = {
     {"global-pile-1000",
      "as pile-1000, solved by the global method at 2 substeps x 1 iteration",
      [] { return pile(1000, 0, tire::SolverMethod::global, 2); },
+     {}},
+    {"crowd-100",
+     "100 tires dropped into a pit again every 4 s, beside empty shelves",
+     [] { return crowd(0); },
+     {}},
+    {"crowd-10000",
+     "as crowd-100, beside 9900 tires resting on the shelves",
+     [] { return crowd(kCrowdShelves * kCrowdPerShelf); },
      {}},
 };
 
@@ -222,6 +313,26 @@ double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   const auto i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
   return v[std::min(v.size() - 1, i == 0 ? 0 : i - 1)];
+}
+
+// A settled scene: stepped until its count of sleeping tires has held for 60 ticks running while
+// at least one tire sleeps (a pile whose tires have not yet slept is still settling), or all sleep,
+// or `max_ticks` ticks have passed. Bounded by ticks, never by time: with sleeping off (or nothing
+// falling asleep) it takes all `max_ticks`. Says how it went on stderr.
+void settle(Steppable& world, const Scene& scene, int max_ticks) {
+  constexpr int kHeld = 60;
+  std::size_t asleep = world.asleep();
+  int held = 0, ticks = 0;
+  while (ticks < max_ticks && held < kHeld && asleep < world.tire_count()) {
+    world.between_ticks();
+    world.step(scene.input);
+    ++ticks;
+    const std::size_t now = world.asleep();
+    held = now == asleep && now > 0 ? held + 1 : 0;
+    asleep = now;
+  }
+  std::fprintf(stderr, "%s: settled for %d ticks, %zu of %zu tires asleep\n", scene.name, ticks, asleep,
+               world.tire_count());
 }
 
 }  // namespace
@@ -242,7 +353,7 @@ int bench(const BenchOptions& options) {
   }
   std::cout
       << "scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,"
-         "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype\n";
+         "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype,asleep\n";
   using Clock = std::chrono::steady_clock;
   std::vector<double> step_ms;
   for (const Scene& scene : kScenes) {
@@ -252,7 +363,11 @@ int bench(const BenchOptions& options) {
     auto world = scene.build();
     if (options.threads > 0) world->set_threads(static_cast<unsigned>(options.threads));
     world->set_schedule(options.schedule == "plain" ? tire::StepSchedule::plain : tire::StepSchedule::fused);
-    for (int i = 0; i < options.warmup; ++i) world->step(scene.input);  // settle and warm the caches
+    if (scene.settled) settle(*world, scene, options.settle);
+    for (int i = 0; i < options.warmup; ++i) {  // settle and warm the caches
+      world->between_ticks();
+      world->step(scene.input);
+    }
     // Each step timed on its own: the median is the typical step, the p99 the hitches a player sees.
     // Either exactly --steps steps, or at least 30 and until --seconds have passed.
     step_ms.clear();
@@ -264,6 +379,7 @@ int bench(const BenchOptions& options) {
                             : s >= 30 && std::chrono::duration<double>(Clock::now() - scene_start).count() >=
                                              options.seconds)
         break;
+      world->between_ticks();
       const auto start = Clock::now();
       world->step(scene.input);
       step_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
@@ -291,7 +407,7 @@ int bench(const BenchOptions& options) {
     // The prototype's figure is for its own scene only.
     if (std::string_view(scene.name).starts_with("prototype"))
       std::cout << kPrototypeUsPerFrame / (median * 1000.0);
-    std::cout << std::endl;  // a row at a time: long runs show progress
+    std::cout << "," << world->asleep() << std::endl;  // a row at a time: long runs show progress
   }
   return 0;
 }

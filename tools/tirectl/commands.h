@@ -43,6 +43,7 @@ struct BenchOptions {
   int steps = 0;                    // timed steps per scene; 0: at least 30, for `seconds`
   double seconds = 2.0;             // timing budget per scene when `steps` is 0
   int warmup = 120;                 // untimed steps first: the pile settles, caches warm
+  int settle = 1800;                // a *-settled scene's most ticks of settling, before the warm-up
   int report_every = 0;             // >0: every this many steps, a progress line on stderr (time, RSS, heap)
   std::string schedule = "fused";   // World::step's schedule: fused (the default) or plain
 };

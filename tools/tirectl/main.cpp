@@ -67,6 +67,12 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")
       ->transform(integer_in({0, 1e6}));
   bench_cmd
+      ->add_option("--settle", bench.settle,
+                   "A *-settled scene's most untimed ticks before the warm-up, stepped until its count of "
+                   "sleeping tires holds for 60 ticks")
+      ->transform(integer_in({0, 1e6}))
+      ->capture_default_str();
+  bench_cmd
       ->add_option("--report-every", bench.report_every,
                    "Every N timed steps, print the recent median and p99, RSS and heap in use to stderr")
       ->transform(integer_in({1, 1e7}));
