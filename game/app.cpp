@@ -346,6 +346,7 @@ void App::draw_ui() {
   hud.physics_ms = physics_ms_;
   hud.steps_last_frame = steps_this_frame_;
   hud.tires = world.tires().size();
+  hud.asleep = world.asleep_count();
   hud.paused = paused_;
   hud.status = tire::to_string(session_.level_session().status());
   draw_hud(hud);

@@ -47,48 +47,59 @@ unsigned debug_flags(const DebugOptions& o) {
   return flags;
 }
 
+SDL_Color SdlDebugDraw::color(SDL_Color c, DebugShape kind) const {
+  // Every kind but these two is reported for one tire (debug_draw.cpp's draw_tire).
+  const bool of_tire = kind != DebugShape::prop_bounds && kind != DebugShape::obstacle_bounds;
+  return asleep_ && of_tire ? asleep_shade(c) : c;
+}
+
 void SdlDebugDraw::segment(tire::Vec2 a, tire::Vec2 b, DebugShape kind) {
   SDL_Color c = kSpoke;
   if (kind == DebugShape::candidate_obstacle)
     c = kCandidateObstacle;
   else if (kind == DebugShape::candidate_prop)
     c = kCandidateProp;
-  d_.line(camera_.to_screen(a), camera_.to_screen(b), 1.0f, c);
+  d_.line(camera_.to_screen(a), camera_.to_screen(b), 1.0f, color(c, kind));
 }
 
 void SdlDebugDraw::polygon(std::span<const tire::Vec2> points, DebugShape kind) {
   points_.clear();
   for (const tire::Vec2& p : points) points_.push_back(camera_.to_screen(p));
-  d_.polyline(points_, true, 1.5f, kind == DebugShape::rim ? kRim : kTread);
+  d_.polyline(points_, true, 1.5f, color(kind == DebugShape::rim ? kRim : kTread, kind));
 }
 
 void SdlDebugDraw::point(tire::Vec2 p, DebugShape kind) {
   const ScreenPoint s = camera_.to_screen(p);
   switch (kind) {
-    case DebugShape::contact: d_.circle(s, 3.5f, kContact, 8); break;
-    case DebugShape::pair: d_.circle(s, 3.0f, kCandidateProp, 6); break;
-    case DebugShape::rim: d_.circle(s, 2.0f, kRim, 6); break;
-    default: d_.circle(s, 2.0f, kTreadParticle, 6); break;
+    case DebugShape::contact: d_.circle(s, 3.5f, color(kContact, kind), 8); break;
+    case DebugShape::pair: d_.circle(s, 3.0f, color(kCandidateProp, kind), 6); break;
+    case DebugShape::rim: d_.circle(s, 2.0f, color(kRim, kind), 6); break;
+    default: d_.circle(s, 2.0f, color(kTreadParticle, kind), 6); break;
   }
 }
 
 void SdlDebugDraw::vector(tire::Vec2 at, tire::Vec2 v, DebugShape kind) {
   if (kind == DebugShape::velocity)
-    arrow(d_, camera_.to_screen(at), camera_.to_screen(at + v * kVelocityArrowSeconds), 3.0f, kVelocity);
+    arrow(d_, camera_.to_screen(at), camera_.to_screen(at + v * kVelocityArrowSeconds), 3.0f,
+          color(kVelocity, kind));
   else
-    arrow(d_, camera_.to_screen(at), camera_.to_screen(at + v * kNormalArrowMetres), 2.0f, kContact);
+    arrow(d_, camera_.to_screen(at), camera_.to_screen(at + v * kNormalArrowMetres), 2.0f,
+          color(kContact, kind));
 }
 
 void SdlDebugDraw::box(const tire::Aabb& b, DebugShape kind) {
   const ScreenPoint min = camera_.to_screen(b.min), max = camera_.to_screen(b.max);
   switch (kind) {
-    case DebugShape::candidate_obstacle: d_.rect_outline(min, max, 3.0f, kCandidateObstacle); break;
-    case DebugShape::candidate_prop: d_.rect_outline(min, max, 3.0f, kCandidateProp); break;
-    default: d_.rect_outline(min, max, 1.5f, kBounds); break;
+    case DebugShape::candidate_obstacle:
+      d_.rect_outline(min, max, 3.0f, color(kCandidateObstacle, kind));
+      break;
+    case DebugShape::candidate_prop: d_.rect_outline(min, max, 3.0f, color(kCandidateProp, kind)); break;
+    default: d_.rect_outline(min, max, 1.5f, color(kBounds, kind)); break;
   }
 }
 
 std::span<const tire::Vec2> SdlDebugDraw::tire_positions(const tire::Tire& t) {
+  asleep_ = t.asleep;
   session_.interpolated_positions(t, alpha_, positions_);
   return positions_;
 }

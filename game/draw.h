@@ -46,4 +46,14 @@ constexpr SDL_Color rgba(int r, int g, int b, int a = 255) {
   return {static_cast<Uint8>(r), static_cast<Uint8>(g), static_cast<Uint8>(b), static_cast<Uint8>(a)};
 }
 
+// `c` with its red, green and blue times f (in [0, 1]), alpha kept.
+constexpr SDL_Color darker(SDL_Color c, float f = 0.6f) {
+  return rgba(static_cast<int>(c.r * f), static_cast<int>(c.g * f), static_cast<int>(c.b * f), c.a);
+}
+
+// The debug view (F3) draws a sleeping tire, and what the engine reports about it, in this shade of
+// the colours an awake one has.
+constexpr float kAsleepShade = 0.55f;
+constexpr SDL_Color asleep_shade(SDL_Color c) { return darker(c, kAsleepShade); }
+
 }  // namespace game

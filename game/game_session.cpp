@@ -66,6 +66,7 @@ void GameSession::apply(const SessionEvent& event) {
         } else if constexpr (std::is_same_v<T, ReleaseGrabEvent>) {
           session_->release_grab();
         } else if constexpr (std::is_same_v<T, TuneEvent>) {
+          // Wakes the world when the change is made (tuning.h).
           if (apply_tuning(session_->world(), e.key, e.value)) tuning_.set(e.key, e.value);
         }
       },

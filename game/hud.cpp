@@ -25,12 +25,18 @@ const char* const kKeys[][2] = {
     {"Esc", "level menu"},
     {"F1", "this help"},
     {"F2", "tuning panel"},
-    {"F3", "debug drawing"},
+    {"F3", "debug drawing (sleeping tires darker)"},
     {"F5", "save a replay of this session into replays/"},
     {"Left click (empty space)", "spawn a tire"},
     {"Left drag (on a tire)", "grab and pull it"},
 };
 }  // namespace
+
+bool format_asleep_line(std::span<char> out, std::size_t asleep, std::size_t tires) {
+  if (tires == 0 || out.empty()) return false;
+  std::snprintf(out.data(), out.size(), "asleep %7zu / %zu", asleep, tires);
+  return true;
+}
 
 void draw_hud(const HudInfo& info) {
   ImGui::SetNextWindowPos({10, 10});
@@ -44,6 +50,8 @@ void draw_hud(const HudInfo& info) {
     ImGui::Text("FPS    %7.0f", info.fps);
     ImGui::Text("physics %6.2f ms/frame (%d ticks)", info.physics_ms, info.steps_last_frame);
     ImGui::Text("tires  %7zu", info.tires);
+    char asleep[64];
+    if (format_asleep_line(asleep, info.asleep, info.tires)) ImGui::TextUnformatted(asleep);
     if (info.paused) ImGui::TextColored({1.0f, 0.85f, 0.3f, 1.0f}, "PAUSED  (P resume, . step)");
     ImGui::TextDisabled("F1 help   F2 tuning   F3 debug   Esc levels");
   }

@@ -1,9 +1,10 @@
 // The text on top of the world, all drawn with ImGui: the HUD (level, time, speed, FPS, physics
-// time), the help overlay (F1), the script's messages, the level's validation errors after a failed
-// hot reload, and the world's warnings.
+// time, tires and how many sleep), the help overlay (F1), the script's messages, the level's validation
+// errors after a failed hot reload, and the world's warnings.
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,12 +26,16 @@ struct HudInfo {
   double physics_ms = 0.0;  // wall time spent in World::step per frame (smoothed)
   int steps_last_frame = 0;
   std::size_t tires = 0;
+  std::size_t asleep = 0;  // tires asleep (World::asleep_count)
   bool paused = false;
   bool grounded = false;
   const char* status = "";  // running, won, lost
 };
 
 void draw_hud(const HudInfo& info);
+// The HUD's line on sleeping, "asleep      12 / 300" (tires asleep / tires), written into `out`
+// (cut to fit, terminated); false, leaving `out` alone, when there are no tires or no room.
+bool format_asleep_line(std::span<char> out, std::size_t asleep, std::size_t tires);
 void draw_help(bool* open);
 void draw_script_messages(const tire::LevelSession& session, ImFont* big);
 // A red window listing why the level file failed to reload (the last good level keeps playing).

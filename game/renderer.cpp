@@ -32,10 +32,6 @@ constexpr SDL_Color kRimPlayer = rgba(240, 176, 48);
 constexpr SDL_Color kRimOther = rgba(176, 182, 194);
 constexpr SDL_Color kHubCap = rgba(60, 60, 66);
 
-SDL_Color darker(SDL_Color c, float f = 0.6f) {
-  return rgba(static_cast<int>(c.r * f), static_cast<int>(c.g * f), static_cast<int>(c.b * f), c.a);
-}
-
 SDL_Color prop_color(const tire::Prop& p) {
   switch (p.spec.type) {
     case tire::PropType::dynamic_body: return kDynamic;
@@ -142,15 +138,17 @@ void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& sessi
   // The tires are opaque: a batch of their own is drawn without blending. Small ones go into one
   // textured batch per look, drawn first.
   d.flush();
+  // The debug view shades sleeping tires.
+  const auto shaded = [&debug](const tire::Tire& t) { return debug.enabled && t.asleep; };
   for (const tire::Tire& t : world.tires())
-    if (&t != player) draw_tire(d, camera, session, t, alpha, false);
+    if (&t != player) draw_tire(d, camera, session, t, alpha, false, shaded(t));
   for (TireTexture& tex : tire_textures_) {
     if (tex.vertices.empty()) continue;
     SDL_RenderGeometry(d.renderer(), tex.texture, tex.vertices.data(), static_cast<int>(tex.vertices.size()),
                        nullptr, 0);
     tex.vertices.clear();
   }
-  if (player) draw_tire(d, camera, session, *player, alpha, true);
+  if (player) draw_tire(d, camera, session, *player, alpha, true, shaded(*player));
   if (debug.enabled) draw_debug(d, camera, session, alpha, debug);
   draw_grab(d, camera, session, alpha);
   d.flush();
@@ -278,7 +276,8 @@ void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::LevelSe
 }
 
 void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::Tire& t,
-                              double alpha, bool is_player) {
+                              double alpha, bool is_player, bool shaded) {
+  const auto shade = [shaded](SDL_Color c) { return shaded ? asleep_shade(c) : c; };
   session.interpolated_positions(t, alpha, positions_);
   const std::uint32_t n = t.n;
   tire::Vec2 hub_world;
@@ -314,10 +313,12 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
         }
         uv_segments_ = n, uv_step_ = step, uv_radius_ = uv_radius;
       }
-      const auto vertex = [](ScreenPoint p, SDL_FPoint uv) {
+      // The vertex colour multiplies the picture's.
+      const SDL_Color tint = shade(rgba(255, 255, 255));
+      const auto vertex = [tint](ScreenPoint p, SDL_FPoint uv) {
         SDL_Vertex out{};
         out.position = {p.x, p.y};
-        out.color = {255, 255, 255, 255};
+        out.color = tint;
         out.tex_coord = uv;
         return out;
       };
@@ -332,7 +333,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
       return;
     }
   // Sidewall: the whole tire as a fan from the hub over the tread.
-  d.fan(hub, outer_, kSidewall);
+  d.fan(hub, outer_, shade(kSidewall));
   // Tread: a band along the outer ring in alternating blocks, which turn as the tire rolls. The
   // dark blocks are barely darker than the sidewall: only a tire drawn in full detail gets them.
   band_.resize(m);
@@ -340,14 +341,14 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
   for (std::uint32_t i = 0; i < m; ++i) {
     const std::uint32_t j = (i + 1) % m;
     if (i % 2)
-      d.quad(outer_[i], outer_[j], band_[j], band_[i], kTreadLight);
+      d.quad(outer_[i], outer_[j], band_[j], band_[i], shade(kTreadLight));
     else if (step == 1)
-      d.quad(outer_[i], outer_[j], band_[j], band_[i], kTreadDark);
+      d.quad(outer_[i], outer_[j], band_[j], band_[i], shade(kTreadDark));
   }
   // Rim, with spokes and a hub cap. In full detail the rim has a dark edge (a fan under a fan 1.5 px
   // smaller) and four spokes; a reduced tire, small on screen, gets a plain rim and two spokes
   // across it.
-  const SDL_Color rim = is_player ? kRimPlayer : kRimOther;
+  const SDL_Color rim = shade(is_player ? kRimPlayer : kRimOther);
   if (step == 1) {
     d.fan(hub, inner_, darker(rim, 0.55f));
     for (ScreenPoint& p : inner_) {
@@ -368,7 +369,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
   }
   // The cap: a circle of about one triangle per 1.5 px of radius, 4 to 16.
   const float cap = std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.3));
-  d.circle(hub, cap, kHubCap, std::clamp(static_cast<int>(cap / 1.5f), 4, 16));
+  d.circle(hub, cap, shade(kHubCap), std::clamp(static_cast<int>(cap / 1.5f), 4, 16));
   if (t.grabbed) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
 }
 

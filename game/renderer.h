@@ -1,6 +1,6 @@
 // Draws the world: sky, obstacles, props, chain terrain, the goal flag, the tires (filled, with a
-// tread that shows them roll) and, on request, the debug overlays. Positions are interpolated
-// between the last two ticks by `alpha`.
+// tread that shows them roll) and, on request, the debug overlays, in which sleeping tires are darker.
+// Positions are interpolated between the last two ticks by `alpha`.
 #pragma once
 
 #include <cstdint>
@@ -60,8 +60,9 @@ class WorldRenderer {
   void draw_obstacles(Draw& d, const Camera& camera, const tire::World& world);
   void draw_props(Draw& d, const Camera& camera, const GameSession& session, double alpha);
   void draw_goal(Draw& d, const Camera& camera, const tire::LevelSession& session);
+  // `shaded`: in asleep_shade() (draw.h), as the debug view draws a sleeping tire.
   void draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::Tire& t, double alpha,
-                 bool is_player);
+                 bool is_player, bool shaded);
   void draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                   const DebugOptions& debug);
 

@@ -34,7 +34,8 @@ struct ReleaseGrabEvent {};
 // A tuning change, key = value. Keys are the parameter table's rows the panel may set
 // ("tires.compliance.outer", "tires.pressure", "tires.mass_scale", "solver.substeps", "gravity.x",
 // ...; tire/parameters.h), applied through World::set_parameter; "tires.friction" sets the static
-// and the kinetic friction together. See tuning.h.
+// and the kinetic friction together; "solver.sleep" (1 or 0) turns sleeping on or off. Applying one
+// wakes every sleeping tire. See tuning.h.
 struct TuneEvent {
   std::string key;
   double value = 0.0;

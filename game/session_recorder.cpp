@@ -62,7 +62,9 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
             input(in);
           } else if constexpr (std::is_same_v<T, TuneEvent>) {
             // A panel change becomes what apply_tuning (tuning.cpp) does to the World; one the
-            // table refuses changed nothing there, so it is not recorded either.
+            // table refuses changed nothing there, so it is not recorded either. Neither is the
+            // sleep checkbox (no row of the table) nor the World::wake_all apply_tuning does: a
+            // replay's `set` and `gravity` wake nothing unless the engine does it.
             const tire::Parameter* p = tire::find_parameter(e.key);
             if (!p || !p->may(tire::by_panel) || e.key != p->key) return;
             const double value = p->integer ? std::round(e.value) : e.value;

@@ -45,6 +45,22 @@ std::size_t index_of(std::string_view key) {
   return static_cast<std::size_t>(std::find(keys.begin(), keys.end(), key) - keys.begin());
 }
 
+// apply_tuning's change, without the waking.
+bool set_tuned(tire::World& world, std::string_view key, double value) {
+  if (key == kSleepKey) {
+    if (value != 0.0 && value != 1.0) return false;
+    world.config().sleep = value == 1.0;
+    return true;
+  }
+  const tire::Parameter* p = tire::find_parameter(key);
+  if (!p || !p->may(tire::by_panel) || key != p->key) return false;
+  if (p->integer) value = std::round(value);
+  if (p->id == tire::ParamId::tire_friction)
+    return world.set_parameter("tires.friction", value) &&
+           world.set_parameter("tires.kinetic_friction", value);
+  return world.set_parameter(key, value);
+}
+
 }  // namespace
 
 const std::vector<const tire::Parameter*>& tuning_parameters() {
@@ -75,10 +91,15 @@ Tuning Tuning::from_world(const tire::World& world) {
   for (std::size_t i = 0; i < t.values.size(); ++i)
     t.values[i] =
         world.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
+  t.sleep = world.config().sleep;
   return t;
 }
 
 bool Tuning::set(std::string_view key, double value) {
+  if (key == kSleepKey) {
+    sleep = value != 0.0;
+    return true;
+  }
   const std::size_t i = index_of(key);
   if (i == values.size()) return false;
   values[i] = value;
@@ -86,6 +107,7 @@ bool Tuning::set(std::string_view key, double value) {
 }
 
 double tuning_value(const Tuning& t, std::string_view key) {
+  if (key == kSleepKey) return t.sleep ? 1.0 : 0.0;
   const std::size_t i = index_of(key);
   return i < t.values.size() ? t.values[i] : 0.0;
 }
@@ -95,17 +117,16 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to) {
   const auto& keys = tuning_keys();
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (from.values.at(i) != to.values.at(i)) out.push_back({keys[i], to.values[i]});
+  if (from.sleep != to.sleep) out.push_back({std::string(kSleepKey), to.sleep ? 1.0 : 0.0});
   return out;
 }
 
 bool apply_tuning(tire::World& world, std::string_view key, double value) {
-  const tire::Parameter* p = tire::find_parameter(key);
-  if (!p || !p->may(tire::by_panel) || key != p->key) return false;
-  if (p->integer) value = std::round(value);
-  if (p->id == tire::ParamId::tire_friction)
-    return world.set_parameter("tires.friction", value) &&
-           world.set_parameter("tires.kinetic_friction", value);
-  return world.set_parameter(key, value);
+  if (!set_tuned(world, key, value)) return false;
+  // No sleeping island can tell whether it still rests under the new rules, and turning sleep off
+  // must leave no tire asleep.
+  world.wake_all();
+  return true;
 }
 
 const std::vector<const char*>& slider_sections() {

@@ -19,8 +19,14 @@ const std::vector<const tire::Parameter*>& tuning_parameters();
 // Their keys, in the same order: the order changes are emitted in.
 const std::vector<std::string>& tuning_keys();
 
+// The panel's "sleep" checkbox, SolverConfig::sleep, changed as this key = 1 (on) or 0 (off), after
+// the table's keys. It is no row of the parameter table: replays do not record it (tirectl replay
+// would refuse the key).
+inline constexpr std::string_view kSleepKey = "solver.sleep";
+
 struct Tuning {
   std::vector<double> values;  // one per tuning_keys(), in that order
+  bool sleep = tire::SolverConfig{}.sleep;
 
   // The table's defaults.
   Tuning();
@@ -28,20 +34,22 @@ struct Tuning {
   // table's defaults without tires), the solver's settings and the gravity.
   static Tuning from_world(const tire::World& world);
 
-  // Sets the value a key names; false for a key the panel does not tune.
+  // Sets the value a key names (kSleepKey: on unless 0); false for a key the panel does not tune.
   bool set(std::string_view key, double value);
   bool operator==(const Tuning&) const = default;
 };
 
-// The value of `key` in `t`; 0 for a key the panel does not tune.
+// The value of `key` in `t` (kSleepKey: 1 or 0); 0 for a key the panel does not tune.
 double tuning_value(const Tuning& t, std::string_view key);
 
 // The key = value changes that turn `from` into `to`.
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 
 // Applies one change to the world through World::set_parameter (an integer key's value rounded
-// first; "tires.friction" sets the kinetic friction too: the panel has one friction slider).
-// False for a key the panel does not tune or a value outside its range.
+// first; "tires.friction" sets the kinetic friction too: the panel has one friction slider), or,
+// for kSleepKey, to SolverConfig::sleep; then wakes every sleeping tire (World::wake_all), as a
+// change of the rules does. False, changing and waking nothing, for a key the panel does not tune
+// or a value outside its range (kSleepKey: other than 0 and 1).
 bool apply_tuning(tire::World& world, std::string_view key, double value);
 
 // How the panel shows a key: its slider. The slider's range may be narrower than the table's

@@ -64,7 +64,7 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
   ImGui::SetNextWindowSize({430, 0}, ImGuiCond_Appearing);
   if (ImGui::Begin("Tuning (F2)", open, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::PushItemWidth(230);
-    ImGui::TextDisabled("Applies live to every tire in the world.");
+    ImGui::TextDisabled("Applies live to every tire in the world, and wakes them.");
     // The keys are the parameter table's (tuning_keys()); each is shown in its slider's section,
     // in the table's order, within the table's range.
     const auto& rows = tuning_parameters();
@@ -101,6 +101,12 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
             slider(label, value, range.min, range.max, spec->format, tip, ImGuiSliderFlags_Logarithmic);
             break;
         }
+      }
+      // The last section, the world's and the solver's, ends with the sleep checkbox.
+      if (section + 1 == sections.size()) {
+        ImGui::Checkbox("sleep", &t.sleep);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("solver.sleep: tires that rest stop being simulated until something wakes them");
       }
     }
     if (ImGui::Button("Reset to the level's values")) t = level_defaults;

@@ -1,6 +1,6 @@
-// The tuning panel (F2): sliders over a copy of the session's Tuning and toggles for the debug
-// overlays. It changes nothing itself: it returns the key = value changes for the session to
-// apply (as TuneEvents, so that a replay can record them).
+// The tuning panel (F2): sliders and the sleep checkbox over a copy of the session's Tuning, and
+// toggles for the debug overlays. It changes nothing itself: it returns the key = value changes for the
+// session to apply (as TuneEvents, so that a replay can record them).
 #pragma once
 
 #include <vector>

@@ -1,6 +1,7 @@
-// The game's logic that needs no window: the --press parser, tuning changes, the session's event
-// routing and interpolation, hot reload, the level list, the camera, the frame-time statistics and
-// the picture small tires are drawn with.
+// The game's logic that needs no window: the --press parser, tuning changes (and the waking they
+// do), the session's event routing and interpolation, hot reload, the level list, the camera, the
+// frame-time statistics, the HUD's sleep line, the sleeping shade and the picture small tires are
+// drawn with.
 #define CATCH_CONFIG_MAIN
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -9,9 +10,11 @@
 #include <thread>
 
 #include "camera.h"
+#include "draw.h"
 #include "frame_stats.h"
 #include "game_session.h"
 #include "hot_reload.h"
+#include "hud.h"
 #include "key_script.h"
 #include "level_list.h"
 #include "renderer.h"
@@ -38,6 +41,14 @@ struct Recorder : SessionObserver {
   void on_step(std::uint64_t tick, const tire::TickInput&) override { steps.push_back(tick); }
   void on_stepped(const tire::LevelSession&) override {}
 };
+
+// Marks every tire of the session asleep, by hand (nothing on this branch puts one to sleep).
+void put_to_sleep(GameSession& session) {
+  std::vector<tire::TireId> ids;
+  for (const tire::Tire& t : session.world().tires()) ids.push_back(t.id);
+  for (const tire::TireId id : ids) session.world().find_tire(id)->asleep = true;
+  REQUIRE(session.world().asleep_count() == ids.size());
+}
 
 }  // namespace
 
@@ -358,4 +369,102 @@ TEST_CASE("the picture of a small tire: hub cap, rim with spokes, sidewall, trea
   tire_image(look, 32, pixels);
   REQUIRE(pixels.size() == 32u * 32u);
   for (std::uint32_t p : pixels) CHECK(reinterpret_cast<const std::uint8_t*>(&p)[3] == 255);
+}
+
+TEST_CASE("every tuning change the session applies wakes the sleeping tires; a refused one does not",
+          "[unit][game]") {
+  GameSession session;
+  session.start("flat.json", flat_level());
+  session.queue(SpawnTireEvent{{3, 2}});
+  session.flush();
+  REQUIRE(session.world().tires().size() == 2);
+  // A key of each kind: a tire's, the one friction slider (two keys), the solver's, the gravity,
+  // the sleep checkbox.
+  for (const TuneEvent& change :
+       {TuneEvent{"tires.pressure", 1.2}, TuneEvent{"tires.friction", 0.4}, TuneEvent{"solver.substeps", 9},
+        TuneEvent{"gravity.x", 1.0}, TuneEvent{std::string(kSleepKey), 0.0},
+        TuneEvent{std::string(kSleepKey), 1.0}}) {
+    INFO(change.key << " = " << change.value);
+    put_to_sleep(session);
+    session.queue(change);
+    session.flush();
+    CHECK(tuning_value(session.tuning(), change.key) == change.value);
+    CHECK(session.world().asleep_count() == 0);
+    for (const tire::Tire& t : session.world().tires()) CHECK_FALSE(t.asleep);
+  }
+  // Changes the world refuses change nothing, and wake nothing.
+  put_to_sleep(session);
+  for (const TuneEvent& refused : {TuneEvent{"tires.nonsense", 1.0}, TuneEvent{"tires.mass_scale", 0.0},
+                                   TuneEvent{std::string(kSleepKey), 0.5}}) {
+    session.queue(refused);
+    session.flush();
+  }
+  CHECK(session.world().asleep_count() == 2);
+  CHECK(session.world().config().sleep);
+}
+
+TEST_CASE("the sleep checkbox is SolverConfig::sleep, carried as key = 1 or 0", "[unit][game]") {
+  GameSession session;
+  session.start("flat.json", flat_level());
+  REQUIRE(session.world().config().sleep);  // the engine's default
+  const Tuning level = session.tuning();
+  CHECK(level.sleep);
+  CHECK(Tuning().sleep);
+  CHECK(tuning_value(level, kSleepKey) == 1.0);
+
+  Tuning off = session.tuning();
+  off.sleep = false;
+  const std::vector<TuneEvent> changes = tuning_changes(session.tuning(), off);
+  REQUIRE(changes.size() == 1);
+  CHECK(changes[0].key == kSleepKey);
+  CHECK(changes[0].value == 0.0);
+  session.queue(changes[0]);
+  session.flush();
+  CHECK_FALSE(session.world().config().sleep);
+  CHECK(session.tuning() == off);
+  // A freshly loaded world's tuning reads the flag from the world.
+  CHECK_FALSE(Tuning::from_world(session.world()).sleep);
+
+  // "Reset to the level's values" turns it back on.
+  for (const TuneEvent& e : tuning_changes(session.tuning(), level)) session.queue(e);
+  session.flush();
+  CHECK(session.world().config().sleep);
+  CHECK(session.tuning() == level);
+}
+
+TEST_CASE("the HUD counts the sleeping tires, when there are tires", "[unit][game]") {
+  char line[64] = "untouched";
+  CHECK_FALSE(format_asleep_line(line, 0, 0));
+  CHECK(std::string_view(line) == "untouched");
+  REQUIRE(format_asleep_line(line, 123, 300));
+  CHECK(std::string_view(line) == "asleep     123 / 300");
+  REQUIRE(format_asleep_line(line, 0, 1));
+  CHECK(std::string_view(line) == "asleep       0 / 1");
+  // Too small a buffer: cut, still terminated.
+  char small[8];
+  REQUIRE(format_asleep_line(small, 5, 10));
+  CHECK(std::string_view(small) == "asleep ");
+
+  // Fed from the world: a tire marked asleep by hand counts.
+  GameSession session;
+  session.start("flat.json", flat_level());
+  session.queue(SpawnTireEvent{{3, 2}});
+  session.flush();
+  session.world().find_tire(session.world().tires()[1].id)->asleep = true;
+  REQUIRE(format_asleep_line(line, session.world().asleep_count(), session.world().tires().size()));
+  CHECK(std::string_view(line) == "asleep       1 / 2");
+}
+
+TEST_CASE("the debug view's shade of a sleeping tire is darker in every channel, alpha kept",
+          "[unit][game]") {
+  for (const SDL_Color c :
+       {rgba(255, 255, 255, 220), rgba(0, 200, 255), rgba(176, 182, 194), rgba(38, 38, 42)}) {
+    const SDL_Color s = asleep_shade(c);
+    CHECK(s.a == c.a);
+    CHECK(s.r <= c.r);
+    CHECK(s.g <= c.g);
+    CHECK(s.b <= c.b);
+    // Enough to see: at least a quarter less light.
+    CHECK(s.r + s.g + s.b <= 0.75 * (c.r + c.g + c.b));
+  }
 }
