@@ -60,6 +60,7 @@ bool SleepIslands::wake(std::vector<Tire>& tires, std::uint32_t i, RigidWorld& r
     if (!t.asleep || t.island != island) continue;
     t.asleep = false;
     t.still_time = 0.0;
+    --asleep_;
     island_.push_back(j);
     woken_.push_back(j);
   }
@@ -142,6 +143,7 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
       for (const std::uint32_t i : island_) {
         Tire& t = tires[i];
         t.asleep = true;
+        ++asleep_;
         t.island = tires[r].id;
         std::fill(t.particles.v.begin(), t.particles.v.end(), Vec2{});
       }

@@ -25,7 +25,7 @@ class SleepIslands {
   // Room for `tires` tires and `props` props, so that a tick never allocates (allocates).
   void reserve(std::size_t tires, std::size_t props);
 
-  // The awake tires' indices, ascending; how many sleep. Current after refresh().
+  // The awake tires' indices, ascending (current after refresh()); how many sleep (always current).
   std::span<const std::uint32_t> awake() const { return awake_; }
   std::size_t asleep_count() const { return asleep_; }
   // Whether a tire fell asleep, woke, came or went since the last refresh().
