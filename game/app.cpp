@@ -483,6 +483,7 @@ void App::print_summary(long long frames) const {
     out["player"] = nullptr;
   }
   out["tires"] = session_.world().tires().size();
+  out["asleep"] = session_.world().asleep_count();
   // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
   // (World::step), the rendering (drawing, ImGui, present) and the whole frame.
   const auto stats = [](const TimeStats& t) {
@@ -490,6 +491,7 @@ void App::print_summary(long long frames) const {
   };
   out["frame_ms"] = {{"samples", frame_stats_.size()},
                      {"sim", stats(frame_stats_.sim())},
+                     {"sim_last_600", stats(frame_stats_.sim_last(600))},
                      {"render", stats(frame_stats_.render())},
                      {"present", stats(frame_stats_.present())},
                      {"frame", stats(frame_stats_.frame())}};

@@ -35,10 +35,13 @@ double percentile(std::vector<double>& values, double p) {
   return values[k];
 }
 
-TimeStats FrameStats::column(float FrameSample::*field) const {
+TimeStats FrameStats::column(float FrameSample::*field, std::size_t count) const {
   std::vector<double> values;
-  values.reserve(samples_.size());
-  for (const FrameSample& s : samples_) values.push_back(s.*field);
+  count = std::min(count, samples_.size());
+  values.reserve(count);
+  // The newest sample is just before next_ (the ring's oldest once it is full).
+  for (std::size_t k = 0; k < count; ++k)
+    values.push_back(samples_[(next_ + samples_.size() - 1 - k) % samples_.size()].*field);
   TimeStats out;
   if (values.empty()) return out;
   out.max = *std::max_element(values.begin(), values.end());
@@ -47,9 +50,10 @@ TimeStats FrameStats::column(float FrameSample::*field) const {
   return out;
 }
 
-TimeStats FrameStats::sim() const { return column(&FrameSample::sim_ms); }
-TimeStats FrameStats::render() const { return column(&FrameSample::render_ms); }
-TimeStats FrameStats::present() const { return column(&FrameSample::present_ms); }
-TimeStats FrameStats::frame() const { return column(&FrameSample::frame_ms); }
+TimeStats FrameStats::sim() const { return column(&FrameSample::sim_ms, samples_.size()); }
+TimeStats FrameStats::render() const { return column(&FrameSample::render_ms, samples_.size()); }
+TimeStats FrameStats::present() const { return column(&FrameSample::present_ms, samples_.size()); }
+TimeStats FrameStats::frame() const { return column(&FrameSample::frame_ms, samples_.size()); }
+TimeStats FrameStats::sim_last(std::size_t count) const { return column(&FrameSample::sim_ms, count); }
 
 }  // namespace game

@@ -37,9 +37,12 @@ class FrameStats {
   TimeStats render() const;
   TimeStats present() const;
   TimeStats frame() const;
+  // The simulation's over the last `count` frames held (all of them if fewer): a level's cost once
+  // it has settled, where sim() mixes in how it got there.
+  TimeStats sim_last(std::size_t count) const;
 
  private:
-  TimeStats column(float FrameSample::*field) const;
+  TimeStats column(float FrameSample::*field, std::size_t count) const;
 
   std::vector<FrameSample> samples_;
   std::size_t capacity_ = 0;

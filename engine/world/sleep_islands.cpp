@@ -60,6 +60,8 @@ bool SleepIslands::wake(std::vector<Tire>& tires, std::uint32_t i, RigidWorld& r
     if (!t.asleep || t.island != island) continue;
     t.asleep = false;
     t.still_time = 0.0;
+    t.still_anchor = t.centroid();
+    t.still_turn = 0.0;
     --asleep_;
     island_.push_back(j);
     woken_.push_back(j);
@@ -94,19 +96,26 @@ void SleepIslands::join(std::uint32_t a, std::uint32_t b) {
 void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pairs, RigidWorld& rigid,
                           const SolverConfig& config, std::optional<std::uint32_t> keep_awake) {
   const auto n = static_cast<std::uint32_t>(tires.size());
-  const double deform2 = config.sleep_deform_speed * config.sleep_deform_speed;
+  const double limit2 = config.sleep_deform_speed * config.sleep_deform_speed;
   bool any_ready = false;
   for (const std::uint32_t i : awake_) {
     Tire& t = tires[i];
     const RigidMotion m = t.rigid_motion();
-    double fastest2 = 0.0;  // of a particle about the rigid motion
+    double deform2 = 0.0;  // Σ |v − rigid motion's|² over the particles (all of one mass)
     for (std::uint32_t k = 0; k < t.particles.size(); ++k)
-      fastest2 = std::max(fastest2, length_squared(t.particles.v[k] - m.velocity -
-                                                   perp(t.particles.x[k] - m.centroid) * m.omega));
+      deform2 += length_squared(t.particles.v[k] - m.velocity - perp(t.particles.x[k] - m.centroid) * m.omega);
+    deform2 /= static_cast<double>(t.particles.size());
+    // Where it has got to since it became still: its hub, and its tread by its turning.
+    t.still_turn += m.omega * config.dt;
+    const double drift = length(m.centroid - t.still_anchor) + std::abs(t.still_turn) * t.spec.outer_radius;
     // A tire held, driven or grabbed is not resting, however slowly it moves.
-    const bool still = length(m.velocity) + std::abs(m.omega) * t.spec.outer_radius < config.sleep_speed &&
-                       fastest2 < deform2 && !t.grabbed && t.control.steer == 0.0;
+    const bool still = drift <= config.sleep_speed * config.sleep_time && deform2 < limit2 && !t.grabbed &&
+                       t.control.steer == 0.0;
     t.still_time = still ? t.still_time + config.dt : 0.0;
+    if (!still) {
+      t.still_anchor = m.centroid;
+      t.still_turn = 0.0;
+    }
     any_ready = any_ready || t.still_time >= config.sleep_time;
   }
   if (any_ready) {

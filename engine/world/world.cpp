@@ -549,6 +549,8 @@ void World::hash_into(StateHash& h) const {
     if (config_.sleep) {  // the sleep state, where sleeping is on (sleep_islands.h)
       h.add(t.asleep);
       h.add(t.still_time);
+      h.add(t.still_anchor);
+      h.add(t.still_turn);
       h.add(t.island);
     }
   }

@@ -334,6 +334,12 @@ TEST_CASE("frame times: median and p99 by nearest rank, in a buffer reserved up 
   CHECK(stats.capacity() == capacity);
   CHECK(stats.sim().max == 10);
   CHECK(stats.sim().median == 2);
+  // The last frames, newest first across the ring's wrap: 10 then 2, then 3.
+  CHECK(stats.sim_last(1).max == 10);
+  CHECK(stats.sim_last(2).median == 2);
+  CHECK(stats.sim_last(3).max == 10);
+  CHECK(stats.sim_last(3).median == 3);
+  CHECK(stats.sim_last(99).median == stats.sim().median);
   stats.clear();
   CHECK(stats.sim().median == 0);
 }

@@ -116,20 +116,24 @@ constexpr const char* kFlatLevel = R"json({
 
 std::unique_ptr<Steppable> flat_level() {
   const tire::LevelLoad load = tire::load_level_text(kFlatLevel, "flat-level");
-  auto world = std::make_unique<tire::World>(load.level->solver, load.level->gravity);
+  tire::SolverConfig config = load.level->solver;
+  config.sleep = false;  // the solver's cost: a resting tire would fall asleep
+  auto world = std::make_unique<tire::World>(config, load.level->gravity);
   tire::populate_world(*load.level, *world);
   return std::make_unique<WorldScene>(std::move(world));
 }
 
 // A walled pile: `count` default tires (28 segments, 8 substeps × 1 iteration unless said) stacked in rows in
 // a box as wide as about sqrt(count) tires, already touching, with soft–soft contacts on; optionally with
-// `crates` dynamic Box2D boxes mixed in.
+// `crates` dynamic Box2D boxes mixed in. Sleeping off unless said: the scene times the solver.
+enum class Sleep : bool { off, on };
 std::unique_ptr<Steppable> pile(int count, int crates = 0,
                                 tire::SolverMethod method = tire::SolverMethod::gauss_seidel,
-                                int substeps = 8) {
+                                int substeps = 8, Sleep sleep = Sleep::off) {
   tire::SolverConfig config;
   config.method = method;
   config.substeps = substeps;
+  config.sleep = sleep == Sleep::on;
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
   const int per_row = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)) * 1.5)));
   const double width = per_row * 1.05;
@@ -233,6 +237,7 @@ std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int subste
   config.substeps = substeps;
   config.iterations = iterations;
   config.method = method;
+  config.sleep = false;  // the solver's cost: a resting tire would fall asleep
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
   world->add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
   world->add_obstacle({{{3.0, 0.0}, {4.0, 0.6}}});
@@ -280,10 +285,20 @@ const Scene kScenes[] = {
     {"pile-10", "10 tires piled in a walled box, soft-soft contacts on", [] { return pile(10); }, {}},
     {"pile-100", "100 tires piled in a walled box", [] { return pile(100); }, {}},
     {"pile-1000", "1000 tires piled in a walled box", [] { return pile(1000); }, {}},
+    {"pile-200-settled",
+     "200 tires piled in a walled box, sleeping on, stepped until its count of sleeping tires holds for 60 "
+     "ticks (at most --settle ticks) before the warm-up",
+     [] { return pile(200, 0, tire::SolverMethod::gauss_seidel, 8, Sleep::on); },
+     {},
+     true},
+    {"pile-200-settled-awake",
+     "as pile-200-settled with sleeping off (\"solver\": {\"sleep\": false}): --settle ticks",
+     [] { return pile(200); },
+     {},
+     true},
     {"pile-1000-settled",
-     "as pile-1000, stepped until its count of sleeping tires holds for 60 ticks (at most --settle ticks) "
-     "before the warm-up",
-     [] { return pile(1000); },
+     "as pile-1000 with sleeping on, settled as pile-200-settled",
+     [] { return pile(1000, 0, tire::SolverMethod::gauss_seidel, 8, Sleep::on); },
      {},
      true},
     {"mixed-200", "200 tires and 40 dynamic Box2D crates in a walled box", [] { return pile(200, 40); }, {}},
