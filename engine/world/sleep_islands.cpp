@@ -103,7 +103,8 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
     const RigidMotion m = t.rigid_motion();
     double deform2 = 0.0;  // Σ |v − rigid motion's|² over the particles (all of one mass)
     for (std::uint32_t k = 0; k < t.particles.size(); ++k)
-      deform2 += length_squared(t.particles.v[k] - m.velocity - perp(t.particles.x[k] - m.centroid) * m.omega);
+      deform2 +=
+          length_squared(t.particles.v[k] - m.velocity - perp(t.particles.x[k] - m.centroid) * m.omega);
     deform2 /= static_cast<double>(t.particles.size());
     // Where it has got to since it became still: its hub, and its tread by its turning.
     t.still_turn += m.omega * config.dt;

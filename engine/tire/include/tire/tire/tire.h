@@ -189,7 +189,7 @@ struct Tire {
   double still_time = 0.0;
   Vec2 still_anchor;        // its hub when it last became still
   double still_turn = 0.0;  // how far it has turned since (rad)
-  TireId island = 0;  // while asleep: the island it sleeps in (the id of one of its tires)
+  TireId island = 0;        // while asleep: the island it sleeps in (the id of one of its tires)
 };
 
 }  // namespace tire
