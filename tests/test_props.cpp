@@ -11,6 +11,18 @@ using namespace tire;
 using namespace tire::test;
 
 namespace {
+// A dynamic box named "crate".
+PropSpec crate_spec(Vec2 size, double density, double friction, Vec2 position) {
+  PropSpec crate;
+  crate.name = "crate";
+  crate.type = PropType::dynamic_body;
+  crate.size = size;
+  crate.density = density;
+  crate.friction = friction;
+  crate.position = position;
+  return crate;
+}
+
 PropSpec shape_spec(PropShape shape) {
   PropSpec s;
   s.shape = shape;
@@ -304,18 +316,12 @@ TEST_CASE("global: a crate lying on a tire rests on it at any substep count", "[
   SolverConfig config;
   config.method = SolverMethod::global;
   config.substeps = GENERATE(1, 2, 8);
+  config.sleep = false;  // asleep, it would rest whatever the coupling did
   CAPTURE(config.substeps);
   TireSpec tire;
   tire.position = {0, 0.5};
   World world = flat_world(tire, config);
-  PropSpec crate;
-  crate.name = "crate";
-  crate.type = PropType::dynamic_body;
-  crate.size = {1.0, 0.3};
-  crate.density = 20;  // 6 kg
-  crate.friction = 0.5;
-  crate.position = {0, 1.17};
-  world.add_prop(crate);
+  world.add_prop(crate_spec({1.0, 0.3}, 20, 0.5, {0, 1.17}));  // 6 kg
   run(world, 180);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, fastest = 0.0;
   for (int i = 0; i < 60; ++i) {
@@ -337,14 +343,7 @@ TEST_CASE("a driving tire pushes a crate along the ground", "[unit][props][physi
   World world = flat_world(tire);
   // Taller than the tire, so it cannot climb it (a driven tire climbs a low box by the friction
   // on its face), and light enough for the drive's torque to beat its friction on the ground.
-  PropSpec crate;
-  crate.name = "crate";
-  crate.type = PropType::dynamic_body;
-  crate.size = {1.0, 1.2};
-  crate.density = 5;  // 6 kg
-  crate.friction = 0.4;
-  crate.position = {1.5, 0.6};
-  world.add_prop(crate);
+  world.add_prop(crate_spec({1.0, 1.2}, 5, 0.4, {1.5, 0.6}));  // 6 kg
   run(world, 240, {1.0, false});
   const double crate_x = world.rigid().props().front().start_pose.position.x;
   const Tire& t = world.tires().front();
