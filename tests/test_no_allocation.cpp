@@ -332,6 +332,30 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
   check_untouched(before);
 }
 
+TEST_CASE("falling asleep and waking do not allocate", "[unit][performance]") {
+  // Islands form, sleep (tires and a crate lying on one), and wake whole, again and again.
+  World world(SolverConfig{}, {0, -9.81});
+  world.add_obstacle({{{-50, -1}, {50, 0}}});
+  std::vector<TireId> ids;
+  for (int i = 0; i < 12; ++i)
+    ids.push_back(world.add_tire(tire_at({1.05 * i - 6.0, 0.5 + (i % 3 == 0 ? 1.0 : 0.0)})));
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {0.6, 0.3};
+  crate.position = {0.3, 1.3};
+  world.add_prop(crate);
+  const auto cycle = [&](int k) {
+    for (int i = 0; i < 900 && world.asleep_count() < ids.size(); ++i) world.step({});
+    REQUIRE(world.asleep_count() == ids.size());
+    world.apply_impulse_to_tire(ids[static_cast<std::size_t>(k) % ids.size()], {0.0, 20.0});
+    world.step({});
+  };
+  cycle(0);  // warm up: every scratch list reaches its size
+  const HeapActivity before = HeapActivity::now();
+  for (int k = 1; k < 4; ++k) cycle(k);
+  check_untouched(before);
+}
+
 TEST_CASE("a tire's own state is one block, plus its broad-phase lists", "[unit][performance]") {
   // Issue 12: everything of a tire's own whose size its particle and constraint counts fix
   // (particles, the distance set's lanes, contact records and flags) is one aligned block; the

@@ -17,6 +17,8 @@ void SleepIslands::reserve(std::size_t tires, std::size_t props) {
   members_.reserve(tires);
   island_.reserve(tires);
   near_.resize(std::max(near_.size(), props));
+  picked_.resize(std::max(picked_.size(), props));
+  props_.reserve(props);
   stale_ = true;
 }
 
@@ -48,7 +50,11 @@ void SleepIslands::gather_props(const std::vector<Tire>& tires, std::span<const 
   props_.clear();
   for (const std::uint32_t i : members)
     for (const std::uint32_t p : tires[i].prop_candidates)
-      if (rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) props_.push_back(p);
+      if (!picked_[p] && rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) {
+        picked_[p] = 1;
+        props_.push_back(p);
+      }
+  for (const std::uint32_t p : props_) picked_[p] = 0;
 }
 
 bool SleepIslands::wake(std::vector<Tire>& tires, std::uint32_t i, RigidWorld& rigid) {

@@ -59,7 +59,7 @@ class SleepIslands {
  private:
   std::uint32_t find(std::uint32_t node);
   void join(std::uint32_t a, std::uint32_t b);
-  // The dynamic props near tires `members` into props_ (repeats allowed).
+  // The dynamic props near tires `members` into props_, each once.
   void gather_props(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
                     const RigidWorld& rigid);
 
@@ -81,6 +81,7 @@ class SleepIslands {
   std::vector<std::uint64_t> members_;  // (root << 32 | tire) for the awake tires, sorted
   std::vector<std::uint32_t> island_;   // one island's tires
   std::vector<std::uint32_t> props_;    // one island's props
+  std::vector<std::uint8_t> picked_;    // per prop: in props_ (gather_props' scratch)
   std::vector<std::uint8_t> near_;      // per prop: an awake tire is near it
 };
 
