@@ -33,7 +33,7 @@ World& World::operator=(World&&) noexcept = default;
 void World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   Tire* t = find_tire(id);
   if (!t) return;
-  sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
+  wake_island_of(*t);
   const Vec2 dv = impulse / t->total_mass();
   for (Vec2& v : t->particles.v) v += dv;
 }
@@ -149,14 +149,14 @@ void World::reset_tire(TireId id, std::optional<Vec2> position) {
   Tire* t = find_tire(id);
   if (!t) return;
   if (position) t->spec.position = *position;
-  sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
+  wake_island_of(*t);
   t->reset();
 }
 
 void World::grab_particle(TireId id, std::uint32_t particle, Vec2 target) {
   Tire* t = find_tire(id);
   if (!t || particle >= t->n) return;
-  sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
+  wake_island_of(*t);
   t->grabbed = true;
   t->grab_particle = particle;
   t->grab_target = target;
@@ -228,7 +228,7 @@ void World::step(const TickInput& input) {
       p->control.steer = input.steer;
       p->control.jump = input.jump;
       if (input.steer != 0.0 || input.jump) {
-        held = static_cast<std::uint32_t>(index_of(*p));
+        held = index_of(*p);
         sleep_.wake(tires_, *held, rigid_);
       }
     }
@@ -529,7 +529,7 @@ void World::wake_all() {
 }
 
 void World::wake_tire(TireId id) {
-  if (Tire* t = find_tire(id)) sleep_.wake(tires_, static_cast<std::uint32_t>(index_of(*t)), rigid_);
+  if (Tire* t = find_tire(id)) wake_island_of(*t);
   sleep_.clear_woken();
 }
 

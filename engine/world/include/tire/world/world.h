@@ -146,7 +146,8 @@ class World {
   void find_tire_pairs();
   // Wakes the sleeping islands a moving prop may reach this tick, and those a removed prop held.
   void wake_for_props();
-  std::size_t index_of(const Tire& t) const { return static_cast<std::size_t>(&t - tires_.data()); }
+  std::uint32_t index_of(const Tire& t) const { return static_cast<std::uint32_t>(&t - tires_.data()); }
+  void wake_island_of(const Tire& t) { sleep_.wake(tires_, index_of(t), rigid_); }
   void color_pairs();
   // Whether no two pairs of one parallel colour share a tire (a check for TIRE_ASSERT: it rebuilds
   // tire_colors_ from colored_pairs_, which leaves that scratch as color_pairs() left it).
