@@ -13,7 +13,8 @@ namespace {
 // Issues recorded per document; past it, one line says more follow.
 constexpr std::size_t kMaxIssues = 200;
 
-std::string quoted_list(std::initializer_list<std::string_view> items) {
+template <typename Names>
+std::string quoted_list(const Names& items) {
   std::string out;
   for (const auto& item : items) out += (out.empty() ? "\"" : ", \"") + std::string(item) + "\"";
   return out;
@@ -122,6 +123,10 @@ void JsonReader::fail(const std::string& path, std::string message) {
 
 bool JsonReader::object(const json& j, const std::string& path,
                         std::initializer_list<std::string_view> allowed) {
+  return object(j, path, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+bool JsonReader::object(const json& j, const std::string& path, std::span<const std::string_view> allowed) {
   if (!j.is_object()) {
     fail(path, "must be an object, got " + describe(j));
     return false;
@@ -215,16 +220,32 @@ std::string JsonReader::string(const json& obj, const std::string& path, const c
   return it->get<std::string>();
 }
 
-std::string JsonReader::choice(const json& obj, const std::string& path, const char* key,
-                               const std::string& fallback, std::initializer_list<std::string_view> options) {
+namespace {
+
+template <typename Names>
+std::string read_choice(JsonReader& r, const nlohmann::json& obj, const std::string& path, const char* key,
+                        const std::string& fallback, const Names& options) {
   const auto it = obj.find(key);
   if (it == obj.end()) return fallback;
   if (!it->is_string() ||
       std::find(options.begin(), options.end(), it->get_ref<const std::string&>()) == options.end()) {
-    fail(join_path(path, key), "must be one of " + quoted_list(options) + ", got " + describe(*it));
+    r.fail(join_path(path, key),
+           "must be one of " + quoted_list(options) + ", got " + JsonReader::describe(*it));
     return fallback;
   }
   return it->get<std::string>();
+}
+
+}  // namespace
+
+std::string JsonReader::choice(const json& obj, const std::string& path, const char* key,
+                               const std::string& fallback, std::initializer_list<std::string_view> options) {
+  return read_choice(*this, obj, path, key, fallback, options);
+}
+
+std::string JsonReader::choice(const json& obj, const std::string& path, const char* key,
+                               const std::string& fallback, std::span<const std::string> options) {
+  return read_choice(*this, obj, path, key, fallback, options);
 }
 
 Vec2 JsonReader::vec2(const json& obj, const std::string& path, const char* key, Vec2 fallback,

@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,7 @@ class JsonReader {
 
   // True when `j` is an object; reports keys not in `allowed` (with a did-you-mean).
   bool object(const json& j, const std::string& path, std::initializer_list<std::string_view> allowed);
+  bool object(const json& j, const std::string& path, std::span<const std::string_view> allowed);
   // True when `j` is an array of at most `max_size` elements.
   bool array(const json& j, const std::string& path, std::size_t max_size);
 
@@ -44,6 +46,8 @@ class JsonReader {
                      std::size_t max_length, bool required = false);
   std::string choice(const json& obj, const std::string& path, const char* key, const std::string& fallback,
                      std::initializer_list<std::string_view> options);
+  std::string choice(const json& obj, const std::string& path, const char* key, const std::string& fallback,
+                     std::span<const std::string> options);
   Vec2 vec2(const json& obj, const std::string& path, const char* key, Vec2 fallback, const Range& component,
             const char* unit, bool required = false);
 
