@@ -2,7 +2,9 @@
 #include "level_reader.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
+#include <stdexcept>
 
 #include "script_reader.h"
 #include "tire/io/level.h"
@@ -14,42 +16,96 @@ namespace {
 
 using json = nlohmann::json;
 
-const Range kCoordinate{-LevelLimits::max_coordinate, LevelLimits::max_coordinate};
-const Range kVelocity{-1000.0, 1000.0};
-const Range kFriction{0.0, 10.0};
+// A unit as messages print it: the reference page's "kg/m²" as "kg/m^2".
+std::string message_unit(const LevelKey& key) {
+  std::string out = key.unit;
+  for (const auto& [superscript, ascii] :
+       std::array<std::pair<std::string_view, std::string_view>, 3>{{{"²", "^2"}, {"³", "^3"}, {"⁴", "^4"}}})
+    for (std::size_t at = out.find(superscript); at != std::string::npos; at = out.find(superscript))
+      out.replace(at, superscript.size(), ascii);
+  return out;
+}
+
+// A choice read into an enum whose values are in the order of the key's choices.
+template <typename Enum>
+Enum read_enum(JsonReader& r, const json& j, const std::string& path, const LevelKey& key, Enum fallback) {
+  return static_cast<Enum>(read_choice_index(r, j, path, key, static_cast<std::size_t>(fallback)));
+}
 
 SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) {
+  using O = LevelObject;
   SolverConfig s;
-  if (!r.object(
-          j, path,
-          {"dt", "substeps", "iterations", "damping", "tunnel_clamp", "ground_normal_y", "method", "sleep"}))
-    return s;
-  const std::string method =
-      r.choice(j, path, "method", method_name(s.method),
-               {method_name(SolverMethod::gauss_seidel), method_name(SolverMethod::global)});
-  for (const SolverMethod m : kSolverMethods)
-    if (method == method_name(m)) s.method = m;
-  s.sleep = r.boolean(j, path, "sleep", s.sleep);
-  s.dt = read_parameter(r, j, path, ParamId::solver_dt, s.dt);
-  s.substeps = read_integer_parameter(r, j, path, ParamId::solver_substeps, s.substeps);
-  s.iterations = read_integer_parameter(r, j, path, ParamId::solver_iterations, s.iterations);
-  s.damping = read_parameter(r, j, path, ParamId::solver_damping, s.damping);
-  s.tunnel_clamp = read_parameter(r, j, path, ParamId::solver_tunnel_clamp, s.tunnel_clamp);
-  s.ground_normal_y = read_parameter(r, j, path, ParamId::solver_ground_normal_y, s.ground_normal_y);
+  if (!r.object(j, path, level_key_names(O::solver))) return s;
+  const LevelKey& method = level_key(O::solver, "method");
+  s.method = kSolverMethods[read_choice_index(r, j, path, method, static_cast<std::size_t>(s.method))];
+  s.sleep = read_boolean(r, j, path, level_key(O::solver, "sleep"), s.sleep);
+  s.dt = read_number(r, j, path, level_key(O::solver, "dt"), s.dt);
+  s.substeps = read_integer(r, j, path, level_key(O::solver, "substeps"), s.substeps);
+  s.iterations = read_integer(r, j, path, level_key(O::solver, "iterations"), s.iterations);
+  s.damping = read_number(r, j, path, level_key(O::solver, "damping"), s.damping);
+  s.tunnel_clamp = read_number(r, j, path, level_key(O::solver, "tunnel_clamp"), s.tunnel_clamp);
+  s.ground_normal_y = read_number(r, j, path, level_key(O::solver, "ground_normal_y"), s.ground_normal_y);
   return s;
 }
 
 TireCompliance read_compliance(JsonReader& r, const json& j, const std::string& path) {
+  using O = LevelObject;
   TireCompliance c;
-  if (!r.object(j, path, {"outer", "inner", "spoke", "pressure"})) return c;
-  c.outer = read_parameter(r, j, path, ParamId::tire_compliance_outer, c.outer);
-  c.inner = read_parameter(r, j, path, ParamId::tire_compliance_inner, c.inner);
-  c.spoke = read_parameter(r, j, path, ParamId::tire_compliance_spoke, c.spoke);
-  c.pressure = read_parameter(r, j, path, ParamId::tire_compliance_pressure, c.pressure);
+  if (!r.object(j, path, level_key_names(O::compliance))) return c;
+  c.outer = read_number(r, j, path, level_key(O::compliance, "outer"), c.outer);
+  c.inner = read_number(r, j, path, level_key(O::compliance, "inner"), c.inner);
+  c.spoke = read_number(r, j, path, level_key(O::compliance, "spoke"), c.spoke);
+  c.pressure = read_number(r, j, path, level_key(O::compliance, "pressure"), c.pressure);
   return c;
 }
 
 }  // namespace
+
+const LevelKey& level_key(LevelObject object, std::string_view key) {
+  if (const LevelKey* k = find_level_key(object, key)) return *k;
+  throw std::logic_error("the level key table has no key \"" + std::string(key) + "\" in that object");
+}
+
+std::span<const std::string_view> level_key_names(LevelObject object) {
+  static const std::array<std::vector<std::string_view>, 8> names = [] {
+    std::array<std::vector<std::string_view>, 8> out;
+    for (std::size_t o = 0; o < out.size(); ++o)
+      for (const LevelKey& k : level_keys(static_cast<LevelObject>(o))) out[o].push_back(k.key);
+    return out;
+  }();
+  return names.at(static_cast<std::size_t>(object));
+}
+
+double read_number(JsonReader& r, const json& j, const std::string& path, const LevelKey& key,
+                   double fallback) {
+  if (key.parameter) return read_parameter(r, j, path, *key.parameter, fallback, key.required);
+  return r.number(j, path, key.key.c_str(), fallback, key.range, message_unit(key).c_str(), key.required);
+}
+
+int read_integer(JsonReader& r, const json& j, const std::string& path, const LevelKey& key, int fallback) {
+  if (key.parameter) return read_integer_parameter(r, j, path, *key.parameter, fallback, key.required);
+  return r.integer(j, path, key.key.c_str(), fallback, key.range, key.required);
+}
+
+Vec2 read_vec2(JsonReader& r, const json& j, const std::string& path, const LevelKey& key, Vec2 fallback) {
+  return r.vec2(j, path, key.key.c_str(), fallback, key.range, message_unit(key).c_str(), key.required);
+}
+
+std::string read_string(JsonReader& r, const json& j, const std::string& path, const LevelKey& key,
+                        const std::string& fallback) {
+  return r.string(j, path, key.key.c_str(), fallback, static_cast<std::size_t>(key.range.max), key.required);
+}
+
+bool read_boolean(JsonReader& r, const json& j, const std::string& path, const LevelKey& key, bool fallback) {
+  return r.boolean(j, path, key.key.c_str(), fallback);
+}
+
+std::size_t read_choice_index(JsonReader& r, const json& j, const std::string& path, const LevelKey& key,
+                              std::size_t fallback) {
+  const std::string value = r.choice(j, path, key.key.c_str(), key.choices.at(fallback), key.choices);
+  return static_cast<std::size_t>(std::find(key.choices.begin(), key.choices.end(), value) -
+                                  key.choices.begin());
+}
 
 double read_parameter(JsonReader& r, const json& j, const std::string& path, ParamId id, double fallback,
                       bool required) {
@@ -71,71 +127,68 @@ Vec2 read_gravity(JsonReader& r, const json& j, const std::string& path, const c
 }
 
 TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::tire, name);
+  };
   TireSpec t;
-  if (!r.object(
-          j, path,
-          {"position", "velocity", "angle", "angular_velocity", "outer_radius", "inner_radius", "segments",
-           "mass", "friction", "kinetic_friction", "pressure", "compliance", "spokes", "material_damping",
-           "rolling_resistance", "player", "drive_acceleration", "jump_speed", "max_speed"}))
-    return t;
-  t.position = r.vec2(j, path, "position", t.position, kCoordinate, "m", true);
-  t.velocity = r.vec2(j, path, "velocity", t.velocity, kVelocity, "m/s");
-  t.angle = read_parameter(r, j, path, ParamId::tire_angle, t.angle);
-  t.angular_velocity = read_parameter(r, j, path, ParamId::tire_angular_velocity, t.angular_velocity);
-  t.outer_radius = read_parameter(r, j, path, ParamId::tire_outer_radius, t.outer_radius);
-  t.inner_radius = read_parameter(r, j, path, ParamId::tire_inner_radius, t.inner_radius);
+  if (!r.object(j, path, level_key_names(LevelObject::tire))) return t;
+  t.position = read_vec2(r, j, path, key("position"), t.position);
+  t.velocity = read_vec2(r, j, path, key("velocity"), t.velocity);
+  t.angle = read_number(r, j, path, key("angle"), t.angle);
+  t.angular_velocity = read_number(r, j, path, key("angular_velocity"), t.angular_velocity);
+  t.outer_radius = read_number(r, j, path, key("outer_radius"), t.outer_radius);
+  t.inner_radius = read_number(r, j, path, key("inner_radius"), t.inner_radius);
   if (j.contains("outer_radius") || j.contains("inner_radius")) {
     if (t.inner_radius >= t.outer_radius)
       r.fail(join_path(path, "inner_radius"), "must be less than outer_radius (" +
                                                   JsonReader::describe(t.outer_radius) + "), got " +
                                                   JsonReader::describe(t.inner_radius));
   }
-  t.segments = read_integer_parameter(r, j, path, ParamId::tire_segments, t.segments);
-  t.mass = read_parameter(r, j, path, ParamId::tire_mass, t.mass);
-  t.friction = read_parameter(r, j, path, ParamId::tire_friction, t.friction);
+  t.segments = read_integer(r, j, path, key("segments"), t.segments);
+  t.mass = read_number(r, j, path, key("mass"), t.mass);
+  t.friction = read_number(r, j, path, key("friction"), t.friction);
   // Kinetic friction defaults to the static coefficient (the row's default_follows).
-  t.kinetic_friction = read_parameter(r, j, path, ParamId::tire_kinetic_friction, t.friction);
-  t.pressure = read_parameter(r, j, path, ParamId::tire_pressure, t.pressure);
+  t.kinetic_friction = read_number(r, j, path, key("kinetic_friction"), t.friction);
+  t.pressure = read_number(r, j, path, key("pressure"), t.pressure);
   if (const auto it = j.find("compliance"); it != j.end())
     t.compliance = read_compliance(r, *it, join_path(path, "compliance"));
-  t.spokes = r.choice(j, path, "spokes", "cross", {"radial", "cross"}) == "radial" ? SpokePattern::radial
-                                                                                   : SpokePattern::cross;
-  t.material_damping = read_parameter(r, j, path, ParamId::tire_material_damping, t.material_damping);
-  t.rolling_resistance = read_parameter(r, j, path, ParamId::tire_rolling_resistance, t.rolling_resistance);
-  t.player = r.boolean(j, path, "player", t.player);
-  t.drive_acceleration = read_parameter(r, j, path, ParamId::tire_drive_acceleration, t.drive_acceleration);
-  t.jump_speed = read_parameter(r, j, path, ParamId::tire_jump_speed, t.jump_speed);
-  t.max_speed = read_parameter(r, j, path, ParamId::tire_max_speed, t.max_speed);
+  t.spokes = read_enum(r, j, path, key("spokes"), t.spokes);
+  t.material_damping = read_number(r, j, path, key("material_damping"), t.material_damping);
+  t.rolling_resistance = read_number(r, j, path, key("rolling_resistance"), t.rolling_resistance);
+  t.player = read_boolean(r, j, path, key("player"), t.player);
+  t.drive_acceleration = read_number(r, j, path, key("drive_acceleration"), t.drive_acceleration);
+  t.jump_speed = read_number(r, j, path, key("jump_speed"), t.jump_speed);
+  t.max_speed = read_number(r, j, path, key("max_speed"), t.max_speed);
   return t;
 }
 
 namespace {
 
-// Points far enough apart for Box2D, which welds vertices closer than its linear slop.
-constexpr double kMinPointSpacing = 0.01;  // m
-
-std::vector<Vec2> read_points(JsonReader& r, const json& j, const std::string& path, const char* key,
-                              std::size_t min_count, std::size_t max_count) {
+// A KeyType::points key, with as many points as `count` allows.
+std::vector<Vec2> read_points(JsonReader& r, const json& j, const std::string& path, const LevelKey& key,
+                              const LevelKey::PointCount& count) {
+  const std::size_t min_count = count.min, max_count = count.max;
+  const Range& coordinate = key.range;
   std::vector<Vec2> points;
-  const std::string p = join_path(path, key);
-  const auto it = j.find(key);
+  const std::string p = join_path(path, key.key);
+  const auto it = j.find(key.key);
   if (it == j.end()) {
     r.fail(p, "is required: an array of " + std::to_string(min_count) + " to " + std::to_string(max_count) +
-                  " points [x, y] in m");
+                  " points [x, y] in " + message_unit(key));
     return points;
   }
   if (!it->is_array() || it->size() < min_count || it->size() > max_count) {
     r.fail(p, "must be an array of " + std::to_string(min_count) + " to " + std::to_string(max_count) +
-                  " points [x, y] in m, got " + JsonReader::describe(*it));
+                  " points [x, y] in " + message_unit(key) + ", got " + JsonReader::describe(*it));
     return points;
   }
   for (std::size_t i = 0; i < it->size(); ++i) {
     const json& v = (*it)[i];
     const bool ok = v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() &&
-                    kCoordinate.contains(v[0].get<double>()) && kCoordinate.contains(v[1].get<double>());
+                    coordinate.contains(v[0].get<double>()) && coordinate.contains(v[1].get<double>());
     if (!ok) {
-      r.fail(join_path(p, i),
-             "must be [x, y] with each in " + kCoordinate.text() + " m, got " + JsonReader::describe(v));
+      r.fail(join_path(p, i), "must be [x, y] with each in " + coordinate.text() + " " + message_unit(key) +
+                                  ", got " + JsonReader::describe(v));
       continue;
     }
     points.push_back({v[0].get<double>(), v[1].get<double>()});
@@ -144,81 +197,80 @@ std::vector<Vec2> read_points(JsonReader& r, const json& j, const std::string& p
 }
 
 KinematicPath read_path(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::path, name);
+  };
   KinematicPath k;
-  if (!r.object(j, path, {"waypoints", "speed", "mode", "running"})) return k;
-  k.waypoints = read_points(r, j, path, "waypoints", 1, 1000);
-  k.speed = r.number(j, path, "speed", k.speed, {0.0, 1000.0, true}, "m/s");
-  const std::string mode = r.choice(j, path, "mode", "loop", {"once", "loop", "ping_pong"});
-  k.mode = mode == "once" ? PathMode::once : mode == "ping_pong" ? PathMode::ping_pong : PathMode::loop;
-  k.running = r.boolean(j, path, "running", k.running);
+  if (!r.object(j, path, level_key_names(LevelObject::path))) return k;
+  k.waypoints = read_points(r, j, path, key("waypoints"), *point_count(key("waypoints")));
+  k.speed = read_number(r, j, path, key("speed"), k.speed);
+  k.mode = read_enum(r, j, path, key("mode"), k.mode);
+  k.running = read_boolean(r, j, path, key("running"), k.running);
   return k;
 }
 
 Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::obstacle, name);
+  };
   Obstacle o;
-  if (!r.object(j, path, {"min", "max", "friction"})) return o;
-  o.box.min = r.vec2(j, path, "min", {}, kCoordinate, "m", true);
-  o.box.max = r.vec2(j, path, "max", {}, kCoordinate, "m", true);
+  if (!r.object(j, path, level_key_names(LevelObject::obstacle))) return o;
+  o.box.min = read_vec2(r, j, path, key("min"), {});
+  o.box.max = read_vec2(r, j, path, key("max"), {});
   if (j.contains("min") && j.contains("max") && !(o.box.min.x < o.box.max.x && o.box.min.y < o.box.max.y))
     r.fail(join_path(path, "max"), "must be greater than min on both axes, got " +
                                        JsonReader::describe(j["max"]) + " with min " +
                                        JsonReader::describe(j["min"]));
-  o.friction = r.number(j, path, "friction", o.friction, kFriction, "");
+  o.friction = read_number(r, j, path, key("friction"), o.friction);
   return o;
 }
 
 }  // namespace
 
 PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::prop, name);
+  };
   PropSpec p;
-  if (!r.object(j, path,
-                {"name", "shape", "type", "position", "angle", "size", "radius", "points", "loop",
-                 "thickness", "density", "friction", "restitution", "velocity", "angular_velocity", "path"}))
-    return p;
-  p.name = r.string(j, path, "name", "", 100);
-  if (!j.contains("shape"))
-    r.fail(join_path(path, "shape"), "is required: one of \"box\", \"circle\", \"polygon\", \"chain\"");
-  const std::string shape = r.choice(j, path, "shape", "box", {"box", "circle", "polygon", "chain"});
-  p.shape = shape == "circle"    ? PropShape::circle
-            : shape == "polygon" ? PropShape::polygon
-            : shape == "chain"   ? PropShape::chain
-                                 : PropShape::box;
-  const std::string type = r.choice(j, path, "type", "static", {"static", "dynamic", "kinematic"});
-  p.type = type == "dynamic"     ? PropType::dynamic_body
-           : type == "kinematic" ? PropType::kinematic_body
-                                 : PropType::static_body;
-  p.position = r.vec2(j, path, "position", p.position, kCoordinate, "m");
-  p.angle = r.number(j, path, "angle", p.angle, {-100.0, 100.0}, "rad");
+  if (!r.object(j, path, level_key_names(LevelObject::prop))) return p;
+  p.name = read_string(r, j, path, key("name"), p.name);
+  const LevelKey& shape_key = key("shape");
+  if (!j.contains("shape")) {
+    std::string choices;
+    for (const std::string& c : shape_key.choices) choices += (choices.empty() ? "\"" : ", \"") + c + "\"";
+    r.fail(join_path(path, "shape"), "is required: one of " + choices);
+  }
+  p.shape = read_enum(r, j, path, shape_key, p.shape);
+  const std::string& shape = shape_key.choices[static_cast<std::size_t>(p.shape)];
+  p.type = read_enum(r, j, path, key("type"), p.type);
+  const std::string& type = key("type").choices[static_cast<std::size_t>(p.type)];
+  p.position = read_vec2(r, j, path, key("position"), p.position);
+  p.angle = read_number(r, j, path, key("angle"), p.angle);
 
   // Shape keys: each belongs to some shapes only.
-  auto only_for = [&](const char* key, std::initializer_list<PropShape> shapes, const char* which) {
-    if (j.contains(key) && std::find(shapes.begin(), shapes.end(), p.shape) == shapes.end())
-      r.fail(join_path(path, key),
-             std::string("applies only to ") + which + " props, and this one is a " + shape);
-  };
-  only_for("size", {PropShape::box}, "box");
-  only_for("radius", {PropShape::circle}, "circle");
-  only_for("points", {PropShape::polygon, PropShape::chain}, "polygon and chain");
-  only_for("loop", {PropShape::chain}, "chain");
-  only_for("thickness", {PropShape::chain}, "chain");
+  for (const LevelKey& k : level_keys(LevelObject::prop)) {
+    if (!j.contains(k.key) || applies_to_shape(k, shape)) continue;
+    std::string which;
+    for (std::size_t i = 0; i < k.shapes.size(); ++i)
+      which += (i == 0 ? "" : i + 1 == k.shapes.size() ? " and " : ", ") + k.shapes[i];
+    r.fail(join_path(path, k.key), "applies only to " + which + " props, and this one is a " + shape);
+  }
+  const LevelKey& points = key("points");
   switch (p.shape) {
-    case PropShape::box:
-      p.size =
-          r.vec2(j, path, "size", p.size, {kMinPointSpacing, 2.0 * LevelLimits::max_coordinate}, "m", true);
-      break;
-    case PropShape::circle:
-      p.radius = r.number(j, path, "radius", p.radius, {kMinPointSpacing, 1000.0}, "m", true);
-      break;
-    case PropShape::polygon:
-      p.points = read_points(r, j, path, "points", 3, 8);
-      if (p.points.size() >= 3 && p.points.size() == j["points"].size() && !is_convex_ccw(p.points))
+    case PropShape::box: p.size = read_vec2(r, j, path, key("size"), p.size); break;
+    case PropShape::circle: p.radius = read_number(r, j, path, key("radius"), p.radius); break;
+    case PropShape::polygon: {
+      const LevelKey::PointCount& count = *point_count(points, shape);
+      p.points = read_points(r, j, path, points, count);
+      if (p.points.size() >= count.min && p.points.size() == j["points"].size() && !is_convex_ccw(p.points))
         r.fail(join_path(path, "points"), "must be a convex polygon in counter-clockwise order, got " +
                                               JsonReader::describe(j["points"]));
       break;
+    }
     case PropShape::chain:
-      p.points = read_points(r, j, path, "points", 2, 100000);
-      p.loop = r.boolean(j, path, "loop", p.loop);
-      p.thickness = r.number(j, path, "thickness", p.thickness, {kMinPointSpacing, 100.0}, "m");
+      p.points = read_points(r, j, path, points, *point_count(points, shape));
+      p.loop = read_boolean(r, j, path, key("loop"), p.loop);
+      p.thickness = read_number(r, j, path, key("thickness"), p.thickness);
       if (p.loop && p.points.size() < 3)
         r.fail(join_path(path, "points"), "a closed chain needs at least 3 points");
       if (p.type != PropType::static_body)
@@ -227,17 +279,17 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
   }
   for (std::size_t i = 0; i + 1 < p.points.size() + (p.loop ? 1 : 0) && p.points.size() >= 2; ++i) {
     const Vec2 a = p.points[i], b = p.points[(i + 1) % p.points.size()];
-    if (length(b - a) < kMinPointSpacing) {
+    if (length(b - a) < kMinPropLength) {
       r.fail(join_path(join_path(path, "points"), (i + 1) % p.points.size()),
-             "must be at least 0.01 m from the point before it");
+             "must be at least " + JsonReader::describe(kMinPropLength) + " m from the point before it");
       break;
     }
   }
-  p.density = r.number(j, path, "density", p.density, {0.0, 1e5, true}, "kg/m^2");
-  p.friction = r.number(j, path, "friction", p.friction, kFriction, "");
-  p.restitution = r.number(j, path, "restitution", p.restitution, {0.0, 1.0}, "");
-  p.velocity = r.vec2(j, path, "velocity", p.velocity, kVelocity, "m/s");
-  p.angular_velocity = r.number(j, path, "angular_velocity", p.angular_velocity, {-1000.0, 1000.0}, "rad/s");
+  p.density = read_number(r, j, path, key("density"), p.density);
+  p.friction = read_number(r, j, path, key("friction"), p.friction);
+  p.restitution = read_number(r, j, path, key("restitution"), p.restitution);
+  p.velocity = read_vec2(r, j, path, key("velocity"), p.velocity);
+  p.angular_velocity = read_number(r, j, path, key("angular_velocity"), p.angular_velocity);
   if (const auto it = j.find("path"); it != j.end()) {
     if (p.type != PropType::kinematic_body)
       r.fail(join_path(path, "path"), "applies only to kinematic props, and this one is " + type);
@@ -279,12 +331,15 @@ std::size_t array_size(const json& j, const char* key) {
   return it != j.end() && it->is_array() ? it->size() : 0;
 }
 
-// A spawn action's tire segments as the tire reader takes them (28 when missing or invalid).
+// A spawn action's tire segments as the tire reader takes them (the default when missing or
+// invalid).
 std::size_t spawned_segments(const json& tire) {
+  const Parameter& segments = parameter(ParamId::tire_segments);
+  const auto fallback = static_cast<std::size_t>(segments.default_value);
   const auto it = tire.find("segments");
-  if (it == tire.end() || !it->is_number()) return 28;
+  if (it == tire.end() || !it->is_number()) return fallback;
   const double s = it->get<double>();
-  return s >= 6 && s <= 256 ? static_cast<std::size_t>(s) : 28;
+  return segments.range.contains(s) ? static_cast<std::size_t>(s) : fallback;
 }
 
 void check_totals(JsonReader& r, const json& doc, const Level& level) {
@@ -344,12 +399,9 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
   const std::size_t issues_before = issues.size();
   JsonReader r(issues);
   Level level;
-  if (!r.object(doc, "",
-                {"$schema", "name", "description", "gravity", "solver", "tires", "obstacles", "props",
-                 "regions", "goal", "time_limit", "counters", "triggers"}))
-    return std::nullopt;
-  level.name = r.string(doc, "", "name", "", 200, true);
-  level.description = r.string(doc, "", "description", "", 2000);
+  if (!r.object(doc, "", level_key_names(LevelObject::root))) return std::nullopt;
+  level.name = read_string(r, doc, "", level_key(LevelObject::root, "name"), "");
+  level.description = read_string(r, doc, "", level_key(LevelObject::root, "description"), level.description);
   level.gravity = read_gravity(r, doc, "", "gravity", level.gravity);
   if (const auto it = doc.find("solver"); it != doc.end()) level.solver = read_solver(r, *it, "/solver");
 

@@ -139,14 +139,14 @@ class ScriptReader {
     if (!doc.is_object()) return spec;  // the level reader reports it
     if (const auto it = doc.find("regions"); it != doc.end()) read_regions(*it, spec);
     if (const auto it = doc.find("goal"); it != doc.end()) {
-      const std::string goal = r_.string(doc, "", "goal", "", ScriptLimits::max_name_length);
+      const std::string goal = read_string(r_, doc, "", level_key(LevelObject::root, "goal"), "");
       if (it->is_string()) {
         spec.goal = index_of(region_names_, goal);
         if (!spec.goal) check_reference(r_, "/goal", goal, region_names_, "a region");
       }
     }
     if (doc.contains("time_limit"))
-      spec.time_limit = r_.number(doc, "", "time_limit", 60.0, kPositiveSeconds, "s");
+      spec.time_limit = read_number(r_, doc, "", level_key(LevelObject::root, "time_limit"), 60.0);
     if (const auto it = doc.find("counters"); it != doc.end()) read_counters(*it, spec);
     if (const auto it = doc.find("triggers");
         it != doc.end() && r_.array(*it, "/triggers", ScriptLimits::max_triggers)) {
@@ -172,8 +172,11 @@ class ScriptReader {
       const std::string path = join_path("/regions", i);
       const json& rj = j[i];
       Region region;
-      if (r_.object(rj, path, {"name", "min", "max"})) {
-        region.name = read_name(r_, rj, path, "name");
+      const auto key = [](std::string_view name) -> const LevelKey& {
+        return level_key(LevelObject::region, name);
+      };
+      if (r_.object(rj, path, level_key_names(LevelObject::region))) {
+        region.name = read_string(r_, rj, path, key("name"), "");
         if (is_string_at(rj, "name") && region.name.empty())
           r_.fail(path + "/name", "must be a non-empty string, got \"\"");
         if (!region.name.empty()) {
@@ -185,8 +188,8 @@ class ScriptReader {
           }
         }
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        region.box.min = r_.vec2(rj, path, "min", {nan, nan}, kCoordinate, "m", true);
-        region.box.max = r_.vec2(rj, path, "max", {nan, nan}, kCoordinate, "m", true);
+        region.box.min = read_vec2(r_, rj, path, key("min"), {nan, nan});
+        region.box.max = read_vec2(r_, rj, path, key("max"), {nan, nan});
         if (is_finite(region.box.min) && is_finite(region.box.max) &&
             !(region.box.min.x < region.box.max.x && region.box.min.y < region.box.max.y))
           r_.fail(path + "/max", "must be greater than min on both axes, got " +
