@@ -125,6 +125,66 @@ void App::after_level_change() {
   if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
 }
 
+// ---- Editor --------------------------------------------------------------------------------------
+
+bool App::open_editor(const std::filesystem::path& file) {
+  auto ed = std::make_unique<Editor>();
+  if (const std::string e = ed->open(file); !e.empty()) {
+    level_errors_ = {e};
+    error_file_ = file.string();
+    return false;
+  }
+  editor_ = std::move(ed);
+  editing_ = true;
+  paused_ = false;
+  return true;
+}
+
+// Plays the level as edited (saved or not); the document stays as it is for the way back.
+void App::play_edited_level() {
+  const auto& level = editor_->document().level();
+  if (!level) {
+    warn("cannot play: " + editor_->document().errors().front());
+    return;
+  }
+  const std::string path = editor_->document().file().string();
+  if (!session_.loaded()) {
+    recorder_.begin(path, level->gravity);
+    session_.start(path, level);
+    session_.set_observer(&recorder_);
+  } else {
+    session_.queue(LoadLevelEvent{path, level});
+  }
+  editing_ = false;
+  menu_open_ = false;
+  show_tuning_ = false;
+  held_.clear();
+}
+
+void App::back_to_editor() {
+  held_.clear();
+  grabbing_ = false;
+  if (editor_) {
+    editing_ = true;
+    return;
+  }
+  if (!open_editor(session_.path())) warn("cannot edit " + session_.path() + ": " + level_errors_.front());
+}
+
+// The editor's side of a frame: its requests, its messages, the window's title.
+void App::editor_frame() {
+  for (const std::string& m : editor_->take_messages()) warn(m);
+  switch (editor_->take_request()) {
+    case EditorRequest::play: play_edited_level(); break;
+    case EditorRequest::quit: quit_ = true; break;
+    case EditorRequest::none: break;
+  }
+  if (window_) {
+    const std::string title = editing_ ? editor_->title() : "Soft tire - " + session_.level().name;
+    if (title != SDL_GetWindowTitle(window_)) SDL_SetWindowTitle(window_, title.c_str());
+  }
+}
+
 bool App::level_over() const { return session_.level_session().status() != tire::ScriptStatus::running; }
 
 // Saves the session so far into replays/ beside the levels folder, under a name with the level and
@@ -147,6 +207,18 @@ void App::warn(const std::string& text) {
 // ---- Input ---------------------------------------------------------------------------------------
 
 void App::handle_event(const SDL_Event& e) {
+  if (editing_) {
+    if (e.type == SDL_QUIT) {
+      editor_->request_quit();
+      return;
+    }
+    if (e.type == SDL_KEYUP) held_.erase(e.key.keysym.scancode);
+    imgui_->process_event(e);
+    if (e.type == SDL_KEYDOWN && e.key.keysym.scancode == SDL_SCANCODE_F1 && !e.key.repeat)
+      show_help_ = !show_help_;
+    editor_->handle_event(e, imgui_->wants_mouse(), imgui_->wants_keyboard());
+    return;
+  }
   if (e.type == SDL_QUIT) {
     quit_ = true;
     return;
@@ -183,6 +255,13 @@ void App::key_down(SDL_Scancode k) {
     case SDL_SCANCODE_F2: show_tuning_ = !show_tuning_; return;
     case SDL_SCANCODE_F3: debug_.enabled = !debug_.enabled; return;
     case SDL_SCANCODE_F5: save_replay(); return;
+    case SDL_SCANCODE_F6:
+    case SDL_SCANCODE_E:
+      if (!menu_open_) {
+        back_to_editor();
+        return;
+      }
+      break;
     default: break;
   }
   if (menu_open_) {
@@ -317,6 +396,26 @@ void App::draw_frame(double wall_seconds) {
   int w = 0, h = 0;
   SDL_GetRendererOutputSize(renderer_, &w, &h);
   camera_.resize(w, h);
+  if (editor_) {
+    int ww = 1, wh = 1;
+    SDL_GetWindowSize(window_, &ww, &wh);
+    editor_->set_window_scale(static_cast<double>(w) / std::max(ww, 1),
+                              static_cast<double>(h) / std::max(wh, 1));
+  }
+  if (editing_) {
+    SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
+    SDL_RenderClear(renderer_);
+    editor_->draw(*draw_, world_renderer_, w, h);
+    editor_->draw_ui();
+    if (show_help_) draw_help(&show_help_);
+    std::erase_if(warnings_, [this](const Warning& warning) { return warning.until < now_; });
+    std::vector<std::string> texts;
+    for (const Warning& warning : warnings_) texts.push_back(warning.text);
+    draw_warnings(texts);
+    imgui_->render();
+    editor_frame();
+    return;
+  }
 
   const double dt = session_.world().config().dt;
   const double alpha = paused_ || menu_open_ ? 1.0 : std::clamp(accumulator_ / dt, 0.0, 1.0);
@@ -330,6 +429,7 @@ void App::draw_frame(double wall_seconds) {
   world_renderer_.draw(*draw_, camera_, session_, alpha, debug_);
   draw_ui();
   imgui_->render();
+  if (editor_) editor_frame();
 }
 
 void App::draw_ui() {
@@ -386,12 +486,13 @@ void App::draw_ui() {
 // ---- Loop ----------------------------------------------------------------------------------------
 
 int App::run() {
-  if (!load_level(options_.level)) {
+  const bool edit = !options_.edit.empty();
+  if (edit ? !open_editor(options_.edit) : !load_level(options_.level)) {
     for (const std::string& e : level_errors_) std::cerr << e << "\n";
     return 2;
   }
   if (!open_window()) return 1;
-  after_level_change();
+  if (!edit) after_level_change();
   levels_ = scan_levels(options_.levels_dir);
 
   // Room for every frame's times before the loop starts, so that recording them never allocates.
@@ -407,29 +508,36 @@ int App::run() {
     // Scripted keys go through SDL's queue, exactly like real ones.
     for (const ScriptedKey& k : options_.keys.events_at(frame)) {
       SDL_Event e{};
+      SDL_SetModState(static_cast<SDL_Keymod>(k.down ? k.mod : Uint16{KMOD_NONE}));
       e.type = k.down ? SDL_KEYDOWN : SDL_KEYUP;
       e.key.state = k.down ? SDL_PRESSED : SDL_RELEASED;
       e.key.windowID = SDL_GetWindowID(window_);
       e.key.keysym.scancode = k.key;
       e.key.keysym.sym = SDL_GetKeyFromScancode(k.key);
+      e.key.keysym.mod = k.mod;
       SDL_PushEvent(&e);
     }
     SDL_Event e;
     while (SDL_PollEvent(&e)) handle_event(e);
     imgui_->new_frame();
-    take_clicks();
-    session_.flush();  // spawns, grabs, tuning and loads apply now, between ticks
-    if (session_.generation() != seen_generation_) after_level_change();
+    if (editing_) {
+      clicks_.clear();
+    } else {
+      take_clicks();
+      session_.flush();  // spawns, grabs, tuning and loads apply now, between ticks
+      if (session_.generation() != seen_generation_) after_level_change();
+    }
 
     now_ = seconds_since(start);
     const double wall = std::clamp(now_ - last, 0.0, 0.25);
     last = now_;
     if (wall > 0.0) fps_ = fps_ == 0.0 ? 1.0 / wall : fps_ * 0.95 + 0.05 / wall;
     // --frames: every frame is exactly one tick, so automated runs are reproducible.
-    const double frame_seconds = options_.frames ? session_.world().config().dt : wall;
-    advance(frame_seconds);
+    const double frame_seconds =
+        options_.frames ? (session_.loaded() ? session_.world().config().dt : 1.0 / 60.0) : wall;
+    if (!editing_) advance(frame_seconds);
     physics_ms_ = physics_ms_ * 0.9 + 0.1 * frame_physics_seconds_ * 1000.0;
-    if (hot_reload_.poll(now_)) {
+    if (!editing_ && hot_reload_.poll(now_)) {
       if (load_level(session_.path())) warn("reloaded " + session_.path());
     }
 
@@ -473,6 +581,18 @@ int App::run() {
 void App::print_summary(long long frames) const {
   nlohmann::json out;
   out["frames"] = frames;
+  if (editor_) {
+    const editor::LevelDocument& doc = editor_->document();
+    out["editor"] = {{"file", doc.file().string()},
+                     {"editing", editing_},
+                     {"modified", doc.modified()},
+                     {"errors", doc.errors().size()},
+                     {"undo_steps", doc.history_size()}};
+  }
+  if (!session_.loaded()) {
+    std::cout << out.dump() << std::endl;
+    return;
+  }
   out["level"] = session_.level().name;
   out["ticks"] = session_.world().tick();
   out["status"] = tire::to_string(session_.level_session().status());

@@ -15,6 +15,7 @@
 
 #include "camera.h"
 #include "draw.h"
+#include "editor_mode.h"
 #include "frame_stats.h"
 #include "game_session.h"
 #include "hot_reload.h"
@@ -33,6 +34,7 @@ struct GameOptions {
   KeyScript keys;                    // scripted key presses (--press)
   std::string screenshot;            // save the last frame here (BMP)
   std::string record;                // save the session's replay here on exit
+  std::filesystem::path edit;        // open the editor on this level (made when it does not exist)
 };
 
 // How many frames the exit summary's frame times cover at most: all of a --frames run up to this,
@@ -57,6 +59,11 @@ class App {
  private:
   bool open_window();
   bool load_level(const std::filesystem::path& file);
+  // The editor: opened on a level file, left to play the edited level, come back to.
+  bool open_editor(const std::filesystem::path& file);
+  void play_edited_level();
+  void back_to_editor();
+  void editor_frame();
   void go_to_level(int delta);
   void restart();
   void after_level_change();
@@ -85,6 +92,9 @@ class App {
   std::unique_ptr<Draw> draw_;  // one batch for the whole run: drawing reuses its vertex buffer
   std::unique_ptr<ImGuiLayer> imgui_;
   bool sdl_started_ = false;
+
+  std::unique_ptr<Editor> editor_;
+  bool editing_ = false;
 
   GameSession session_;
   SessionRecorder recorder_;  // every session is recorded; F5 saves

@@ -33,6 +33,11 @@ class Camera {
   void follow(tire::Vec2 target, const tire::Aabb& bounds, double seconds);
   // Jumps straight to the target.
   void snap(tire::Vec2 target, const tire::Aabb& bounds);
+  // Looks at `center` at `scale` pixels per metre, wherever that is: the editor's free view.
+  void set_view(tire::Vec2 center, double scale) {
+    center_ = center;
+    scale_ = scale;
+  }
 
   ScreenPoint to_screen(tire::Vec2 p) const {
     return {static_cast<float>((p.x - center_.x) * scale_ + width_ * 0.5),

@@ -37,7 +37,24 @@ std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& er
     return std::nullopt;
   }
   KeyPress press;
-  const std::string name = spec.substr(0, colon);
+  std::string name = spec.substr(0, colon);
+  // Modifiers: "ctrl+", "shift+", "alt+" before the key.
+  for (std::size_t plus = name.find('+'); plus != std::string::npos && plus + 1 < name.size();
+       plus = name.find('+')) {
+    std::string mod = name.substr(0, plus);
+    for (char& c : mod) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (mod == "ctrl")
+      press.mod = static_cast<Uint16>(press.mod | KMOD_LCTRL);
+    else if (mod == "shift")
+      press.mod = static_cast<Uint16>(press.mod | KMOD_LSHIFT);
+    else if (mod == "alt")
+      press.mod = static_cast<Uint16>(press.mod | KMOD_LALT);
+    else {
+      error = "--press " + spec + ": unknown modifier \"" + mod + "\" (ctrl, shift or alt)";
+      return std::nullopt;
+    }
+    name = name.substr(plus + 1);
+  }
   press.key = scancode_of(name);
   if (press.key == SDL_SCANCODE_UNKNOWN) {
     error = "--press " + spec + ": unknown key \"" + name +
@@ -61,9 +78,9 @@ std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& er
 std::vector<ScriptedKey> KeyScript::events_at(long long frame) const {
   std::vector<ScriptedKey> out;
   for (const KeyPress& p : presses_)
-    if (p.last + 1 == frame) out.push_back({p.key, false});
+    if (p.last + 1 == frame) out.push_back({p.key, false, p.mod});
   for (const KeyPress& p : presses_)
-    if (p.first == frame) out.push_back({p.key, true});
+    if (p.first == frame) out.push_back({p.key, true, p.mod});
   return out;
 }
 

@@ -2,7 +2,8 @@
 // name and a frame ("space:120": pressed on frame 120, released on frame 121) or an inclusive frame
 // range ("right:0-300": held from frame 0 through frame 300, released on frame 301). Key names are
 // SDL's (case-insensitive: left, right, up, space, return, escape, f1, a, ...) plus the aliases
-// enter, esc, period/dot (.) and comma (,).
+// enter, esc, period/dot (.) and comma (,). Modifiers go before the key, joined by "+":
+// "ctrl+s:30", "ctrl+shift+z:40" (ctrl, shift, alt).
 #pragma once
 
 #include <SDL.h>
@@ -15,8 +16,9 @@ namespace game {
 
 struct KeyPress {
   SDL_Scancode key = SDL_SCANCODE_UNKNOWN;
-  long long first = 0;  // frame the key goes down
-  long long last = 0;   // last frame it is held (it goes up on last + 1)
+  Uint16 mod = KMOD_NONE;  // modifiers held with it
+  long long first = 0;     // frame the key goes down
+  long long last = 0;      // last frame it is held (it goes up on last + 1)
 };
 
 // Parses one spec; on failure returns nullopt and sets `error`.
@@ -26,6 +28,7 @@ std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& er
 struct ScriptedKey {
   SDL_Scancode key;
   bool down;
+  Uint16 mod = KMOD_NONE;
 };
 
 class KeyScript {

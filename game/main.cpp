@@ -1,4 +1,5 @@
 // tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
+//           [--edit FILE]
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -13,8 +14,8 @@ int main(int argc, char** argv) {
   CLI::App cli{
       "Soft tire: roll a deformable XPBD tire through a level.\n"
       "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
-      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing. Mouse: click spawns a tire, drag grabs "
-      "one.",
+      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor. Mouse: click spawns a "
+      "tire, drag grabs one.",
       "tire-game"};
   std::string level;
   std::string levels_dir = TIRE_LEVELS_DIR;
@@ -29,6 +30,10 @@ int main(int argc, char** argv) {
   cli.add_option("--press", presses,
                  "scripted key press KEY:FRAME or KEY:FIRST-LAST, e.g. right:0-300, space:120");
   cli.add_option("--screenshot", screenshot, "save the last frame to FILE (BMP)");
+  std::string edit;
+  cli.add_option(
+      "--edit", edit,
+      "open the level editor on FILE (a new level when it does not exist); E plays it, E again edits");
   std::string record;
   cli.add_option("--record", record,
                  "save a replay of the session to FILE on exit (tirectl replay checks it)");
@@ -45,6 +50,7 @@ int main(int argc, char** argv) {
   if (frames >= 0) options.frames = frames;
   options.screenshot = screenshot;
   options.record = record;
+  options.edit = edit;
   for (const std::string& spec : presses) {
     std::string error;
     const auto press = game::parse_key_press(spec, error);
