@@ -213,6 +213,15 @@ void App::handle_event(const SDL_Event& e) {
       return;
     }
     if (e.type == SDL_KEYUP) held_.erase(e.key.keysym.scancode);
+    if (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP || e.type == SDL_MOUSEMOTION ||
+        e.type == SDL_MOUSEWHEEL) {
+      // Whether a press lands on an ImGui window is known after ImGui's next frame, which reads
+      // the pointer where the press was (a pointer warped there, as xdotool does, may send no
+      // motion first); the mouse's events wait for it, in their order.
+      imgui_->process_event(e);
+      editor_mouse_.push_back(e);
+      return;
+    }
     imgui_->process_event(e);
     if (e.type == SDL_KEYDOWN && e.key.keysym.scancode == SDL_SCANCODE_F1 && !e.key.repeat)
       show_help_ = !show_help_;
@@ -522,6 +531,8 @@ int App::run() {
     imgui_->new_frame();
     if (editing_) {
       clicks_.clear();
+      for (const SDL_Event& mouse : std::exchange(editor_mouse_, {}))
+        editor_->handle_event(mouse, imgui_->wants_mouse(), imgui_->wants_keyboard());
     } else {
       take_clicks();
       session_.flush();  // spawns, grabs, tuning and loads apply now, between ticks

@@ -95,6 +95,7 @@ class App {
 
   std::unique_ptr<Editor> editor_;
   bool editing_ = false;
+  std::vector<SDL_Event> editor_mouse_;  // the mouse's events, handed over after ImGui's next frame
 
   GameSession session_;
   SessionRecorder recorder_;  // every session is recorded; F5 saves

@@ -188,7 +188,7 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
       }
       continue;
     }
-    if (key.type == KeyType::array) continue;
+    if (key.type == KeyType::array || key.type == KeyType::object) continue;  // counters: kept as written
     if (key.key == "goal" && object == LevelObject::root) {
       // The goal names a region: chosen from them.
       const std::string now = editor::string_at(doc_.json(), "goal", "");
@@ -260,12 +260,11 @@ void Editor::draw_properties() {
 
 void Editor::draw_ui() {
   ImGui::SetNextWindowPos({10.0f, 10.0f}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({170.0f, 0.0f}, ImGuiCond_Always);
-  ImGui::Begin("Editor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  ImGui::Begin("Editor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize);
   for (const ToolButton& t : kTools) {
     const bool on = tool_ == t.tool;
     if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    if (ImGui::Button((std::string(t.label) + "  " + t.key).c_str(), {150.0f, 0.0f})) set_tool(t.tool);
+    if (ImGui::Button((std::string(t.label) + "  " + t.key).c_str(), {170.0f, 0.0f})) set_tool(t.tool);
     if (on) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.help);
   }
@@ -276,13 +275,14 @@ void Editor::draw_ui() {
   if (ImGui::InputDouble("step (m)", &g, 0.0, 0.0, "%.3g") && g >= 0.01 && g <= 10.0) grid_ = g;
   ImGui::PopItemWidth();
   ImGui::Separator();
-  if (ImGui::Button("Undo", {72.0f, 0.0f})) undo();
+  if (ImGui::Button("Undo", {82.0f, 0.0f})) undo();
   ImGui::SameLine();
-  if (ImGui::Button("Redo", {72.0f, 0.0f})) redo();
-  if (ImGui::Button("Save  Ctrl+S", {150.0f, 0.0f})) save();
-  if (ImGui::Button("Play  E", {150.0f, 0.0f})) request_ = EditorRequest::play;
+  if (ImGui::Button("Redo", {82.0f, 0.0f})) redo();
+  if (ImGui::Button("Save  Ctrl+S", {170.0f, 0.0f})) save();
+  if (ImGui::Button("Play  E", {170.0f, 0.0f})) request_ = EditorRequest::play;
   ImGui::TextDisabled(
-      "wheel: zoom, middle or\nSpace+drag: pan, F: frame\nDel, Ctrl+D, arrows,\nCtrl+Z / Ctrl+Y");
+      "wheel: zoom at the cursor\nmiddle or Space+drag: pan\nF: frame the level\nDel: delete, Ctrl+D: copy\n"
+      "arrows: nudge a grid step\nCtrl+Z / Ctrl+Y: undo / redo");
   ImGui::End();
 
   draw_properties();

@@ -36,7 +36,20 @@ Json ordered(const Json& j, LevelObject object) {
 
 Json in_reference_order(const Json& doc) { return ordered(doc, LevelObject::root); }
 
-std::string level_text(const Json& doc) { return tire::format_json(in_reference_order(doc)); }
+std::string level_text(const Json& doc) {
+  const Json ordered_doc = in_reference_order(doc);
+  std::string text = tire::format_json(ordered_doc);
+  if (ordered_doc.empty() || text.find('\n') + 1 != text.size()) return text;
+  // A small level fits on one line; a file reads better with one root key a line.
+  text = "{\n";
+  std::size_t i = 0;
+  for (auto it = ordered_doc.begin(); it != ordered_doc.end(); ++it) {
+    std::string value = tire::format_json(it.value());
+    value.pop_back();  // its newline
+    text += "  " + Json(it.key()).dump() + ": " + value + (++i < ordered_doc.size() ? ",\n" : "\n");
+  }
+  return text + "}\n";
+}
 
 Json new_level(const std::filesystem::path& file) {
   Json doc = Json::object();

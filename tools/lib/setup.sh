@@ -3,8 +3,9 @@
 
 TIRE_PACKAGES=(g++ cmake pkg-config libsdl2-dev libbox2d-dev nlohmann-json3-dev catch2
   libcli11-dev libimgui-dev libssl-dev)
-# What the test suite needs besides: the format check (tools/check-format).
-TIRE_TEST_PACKAGES=(clang-format)
+# What the test suite needs besides: the format check (tools/check-format); the editor's tests in a
+# real X window (Xvfb, xdotool, ImageMagick's import, python3).
+TIRE_TEST_PACKAGES=(clang-format xvfb xdotool imagemagick python3)
 
 tire_missing_packages() {
   local p missing=()
