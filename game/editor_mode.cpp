@@ -417,6 +417,16 @@ bool Editor::press_handle(Vec2 p) {
 }
 
 void Editor::press_select(Vec2 p, bool shift) {
+  // A chain's or polygon's point, or a waypoint, is picked on its own and dragged by itself.
+  if (const auto point = editor::pick_point(doc_.json(), p, kHandlePixels * 1.5 / scale_)) {
+    if (!shift) selection_.clear();
+    editor::select(selection_, *point);
+    drag_base_ = doc_.json();
+    drag_item_ = *point;
+    doc_.begin_gesture();
+    drag_ = Drag::point;
+    return;
+  }
   const auto hit = editor::pick_item(doc_.json(), p, pick_tolerance());
   if (!hit) {
     if (!shift) selection_.clear();

@@ -193,6 +193,19 @@ std::optional<Pick> pick_item(const Json& doc, Vec2 p, double tolerance) {
   return std::nullopt;
 }
 
+std::optional<Pick> pick_point(const Json& doc, Vec2 p, double reach) {
+  for (std::size_t i = count(doc, ItemKind::prop); i-- > 0;) {
+    const auto s = shape_of(doc, ItemKind::prop, i);
+    if (!s) continue;
+    if (s->form == ItemShape::Form::polygon || s->form == ItemShape::Form::chain)
+      for (std::size_t k = 0; k < s->outline.size(); ++k)
+        if (tire::length(s->outline[k] - p) <= reach) return Pick{ItemKind::prop, i, PointSet::points, k};
+    for (std::size_t k = 0; k < s->waypoints.size(); ++k)
+      if (tire::length(s->waypoints[k] - p) <= reach) return Pick{ItemKind::prop, i, PointSet::waypoints, k};
+  }
+  return std::nullopt;
+}
+
 Selection items_inside(const Json& doc, const tire::Aabb& box) {
   Selection out;
   for (const ItemKind kind : kTopFirst) {

@@ -76,6 +76,8 @@ Vec2 to_local(const ItemShape& prop, Vec2 world);
 // The item under `p` (the topmost: tires over props over regions over obstacles, later over
 // earlier), within `tolerance` metres of a chain's line or a circle's edge.
 std::optional<Pick> pick_item(const Json& doc, Vec2 p, double tolerance);
+// The polygon or chain point, or path waypoint, within `reach` metres of `p` (the topmost prop's).
+std::optional<Pick> pick_point(const Json& doc, Vec2 p, double reach);
 // The items whose shapes lie wholly inside `box`.
 Selection items_inside(const Json& doc, const tire::Aabb& box);
 // The bounds of every item (nullopt for an empty level).

@@ -139,7 +139,7 @@ TEST_CASE("moving a crate is one step of the history: undo puts it back, redo mo
   CHECK(crate_position(doc) == Vec2{3, 0.5});
 }
 
-TEST_CASE("a drag shows every step and becomes one history step; a refused one puts the level back",
+TEST_CASE("a drag shows every step and becomes one history step, and a refused one puts the level back",
           "[unit][editor]") {
   LevelDocument doc = crate_document();
   const Json start = doc.json();
@@ -235,11 +235,17 @@ TEST_CASE("picking finds the topmost item under the point, and the points of cha
       chain);
   CHECK(pick_item(j, {2, 3.05}, 0.1) == chain);
   CHECK_FALSE(pick_item(j, {2, 3.5}, 0.1));
+  // Its points, and a path's waypoints, are picked on their own.
+  CHECK(pick_point(j, {4.05, 3}, 0.1) == Pick{ItemKind::prop, chain.index, PointSet::points, 1});
+  CHECK_FALSE(pick_point(j, {2, 3}, 0.1));
+  Pick w;
+  j = with_waypoint(j, {ItemKind::prop, 0}, {6, 0.5}, w);
+  CHECK(pick_point(j, {6, 0.55}, 0.1) == w);
   // Box selection takes what lies wholly inside.
   CHECK(items_inside(doc.json(), {{2, 0}, {4, 1.5}}) == Selection{{ItemKind::prop, 0}});
 }
 
-TEST_CASE("duplicates get fresh names and no second player; deleting and inserting points",
+TEST_CASE("duplicates get fresh names and no second player, and points are deleted and inserted",
           "[unit][editor]") {
   LevelDocument doc = crate_document();
   Selection copies;
