@@ -12,10 +12,13 @@
 #include <string>
 
 #include "../fuzz/fuzz_common.h"
+#include "error_messages.h"
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
 #include "tire/replay/replay.h"
 #include "tire_fixtures.h"
+
+using tire_test::has;
 
 using namespace tire;
 using namespace tire::test;
@@ -32,22 +35,10 @@ void check_bounded(const JsonWork& work, std::size_t text_bytes, std::size_t max
   CHECK(work.string_bytes <= text_bytes);
 }
 
-bool has(const std::vector<std::string>& errors, const std::string& needle) {
-  for (const std::string& e : errors)
-    if (e.find(needle) != std::string::npos) return true;
-  return false;
-}
-
-std::string joined(const std::vector<std::string>& errors) {
-  std::string out;
-  for (const std::string& e : errors) out += e.substr(0, 300) + "\n";
-  return out;
-}
-
 // A level refused through load_level_text: returns the load (its errors and what it cost).
 LevelLoad refuse_level_load(const std::string& text) {
   LevelLoad load = load_level_text(text, "hostile.json");
-  INFO(joined(load.errors));
+  INFO(tire_test::joined(load.errors, 300));
   CHECK_FALSE(load.level.has_value());
   REQUIRE_FALSE(load.errors.empty());
   for (const std::string& e : load.errors) CHECK(e.rfind("hostile.json: ", 0) == 0);  // names the file
@@ -59,7 +50,7 @@ std::vector<std::string> refuse_level(const std::string& text) { return refuse_l
 
 ReplayLoad refuse_replay_load(const std::string& text) {
   ReplayLoad load = load_replay_text(text, "hostile-replay.json");
-  INFO(joined(load.errors));
+  INFO(tire_test::joined(load.errors, 300));
   CHECK_FALSE(load.replay.has_value());
   REQUIRE_FALSE(load.errors.empty());
   for (const std::string& e : load.errors) CHECK(e.rfind("hostile-replay.json: ", 0) == 0);
@@ -383,7 +374,7 @@ TEST_CASE("hostile replay: 100 000 centroid boxes cost nothing on the ticks they
         (i ? "," : "") + std::string(R"({"tick": 60, "tire": 0, "min": [-100, -100], "max": [100, 100]})");
   const ReplayLoad load = load_replay_text(
       kReplayHead + R"("ticks": 60, "inputs": [], "expect": {"boxes": [)" + boxes + "]}}", "boxes.json");
-  INFO(joined(load.errors));
+  INFO(tire_test::joined(load.errors, 300));
   REQUIRE(load.replay);
   const Level level = default_level();
   const ReplayOutcome outcome = run_replay(*load.replay, level);

@@ -7,8 +7,12 @@
 #include <limits>
 #include <sstream>
 
+#include "error_messages.h"
 #include "tire/io/level_keys.h"
 #include "tire_fixtures.h"
+
+using tire_test::has;
+using tire_test::joined;
 
 using namespace tire;
 using namespace tire::test;
@@ -100,18 +104,6 @@ std::pair<json, std::string> with_key(LevelObject object, const LevelKey& key, c
 }
 
 std::vector<std::string> errors_of(const json& doc) { return load_level_text(doc.dump(), "x.json").errors; }
-
-bool has(const std::vector<std::string>& errors, const std::string& needle) {
-  for (const std::string& e : errors)
-    if (e.find(needle) != std::string::npos) return true;
-  return false;
-}
-
-std::string joined(const std::vector<std::string>& errors) {
-  std::string out;
-  for (const std::string& e : errors) out += e + "\n";
-  return out;
-}
 
 std::string quoted(const std::vector<std::string>& names) {
   std::string out;

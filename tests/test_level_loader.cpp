@@ -3,7 +3,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "error_messages.h"
 #include "tire_fixtures.h"
+
+using tire_test::has;
+using tire_test::joined;
 
 using namespace tire;
 using namespace tire::test;
@@ -11,16 +15,6 @@ using namespace tire::test;
 namespace {
 std::vector<std::string> errors_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
   return load_level_text(text, "x.json", overrides).errors;
-}
-bool has(const std::vector<std::string>& errors, const std::string& needle) {
-  for (const std::string& e : errors)
-    if (e.find(needle) != std::string::npos) return true;
-  return false;
-}
-std::string joined(const std::vector<std::string>& errors) {
-  std::string out;
-  for (const std::string& e : errors) out += e + "\n";
-  return out;
 }
 }  // namespace
 

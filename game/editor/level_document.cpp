@@ -106,27 +106,20 @@ void LevelDocument::cancel_gesture() {
   set(std::move(gesture_start_), std::move(j));
 }
 
-bool LevelDocument::undo() {
+bool LevelDocument::travel(std::vector<Json>& from, std::vector<Json>& to) {
   if (in_gesture_) cancel_gesture();
-  if (undo_.empty()) return false;
-  redo_.push_back(doc_);
-  Json doc = std::move(undo_.back());
-  undo_.pop_back();
+  if (from.empty()) return false;
+  to.push_back(doc_);
+  Json doc = std::move(from.back());
+  from.pop_back();
   Judgement j = judge(doc);
   set(std::move(doc), std::move(j));
   return true;
 }
 
-bool LevelDocument::redo() {
-  if (in_gesture_) cancel_gesture();
-  if (redo_.empty()) return false;
-  undo_.push_back(doc_);
-  Json doc = std::move(redo_.back());
-  redo_.pop_back();
-  Judgement j = judge(doc);
-  set(std::move(doc), std::move(j));
-  return true;
-}
+bool LevelDocument::undo() { return travel(undo_, redo_); }
+
+bool LevelDocument::redo() { return travel(redo_, undo_); }
 
 std::string LevelDocument::save() {
   if (in_gesture_) return "finish the drag first";

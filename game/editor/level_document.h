@@ -65,6 +65,8 @@ class LevelDocument {
   };
   Judgement judge(const Json& doc) const;
   void set(Json doc, Judgement judgement);
+  // Undo (from the undo stack to the redo stack) or redo (the other way).
+  bool travel(std::vector<Json>& from, std::vector<Json>& to);
 
   std::filesystem::path file_;
   Json doc_ = Json::object();
