@@ -2,13 +2,17 @@
 // they are over many arguments, the special values, and that they give the same bits everywhere.
 //
 // The error is measured against long double (64-bit significand on x86-64: its error is ~2^-11
-// of a double's ulp) and against std:: (glibc's, itself within 1 ulp). Each accuracy test prints
-// its maximum error in ulps.
+// of a double's ulp); how far std:: (glibc's) is from them is printed too, and bounded only where
+// long double is no more precise than double. (glibc's own cos misses the hardest argument to
+// reduce, 0x1.6ac5b262ca1ffp+849, by 8 ulp; GCC folds std::cos of a constant with MPFR, exactly.)
+// Each accuracy test prints its maximum error in ulps. Two random draws are never arguments of one
+// call: C++ leaves their order to the compiler, and the inputs must be the same everywhere.
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -120,9 +124,10 @@ TEST_CASE("cos_sin is within 1 ulp of the exact cos and sin", "[unit][trig]") {
   if (kPreciseReference) {
     CHECK(sin_error.max_ulp < 1.0);
     CHECK(cos_error.max_ulp < 1.0);
+  } else {
+    CHECK(sin_error.max_apart <= 2);
+    CHECK(cos_error.max_apart <= 2);
   }
-  CHECK(sin_error.max_apart <= 2);
-  CHECK(cos_error.max_apart <= 2);
 }
 
 TEST_CASE("cos_sin of special values", "[unit][trig]") {
@@ -165,9 +170,21 @@ TEST_CASE("atan2 is within 1 ulp of the exact angle", "[unit][trig]") {
   Random random{2};
   for (int i = 0; i < kSamples; ++i) {
     switch (i % 3) {
-      case 0: check(random.uniform(-1.0, 1.0), random.uniform(-1.0, 1.0)); break;
-      case 1: check(random.log_uniform(-30, 30), random.log_uniform(-30, 30)); break;
-      default: check(random.log_uniform(-1074, 1023), random.log_uniform(-1074, 1023)); break;
+      case 0: {
+        const double y = random.uniform(-1.0, 1.0);
+        check(y, random.uniform(-1.0, 1.0));
+        break;
+      }
+      case 1: {
+        const double y = random.log_uniform(-30, 30);
+        check(y, random.log_uniform(-30, 30));
+        break;
+      }
+      default: {
+        const double y = random.log_uniform(-1074, 1023);
+        check(y, random.log_uniform(-1074, 1023));
+        break;
+      }
     }
   }
   // On and next to the octant boundaries (|y| = |x|, and t = 7/16, 11/16 inside).
@@ -178,8 +195,10 @@ TEST_CASE("atan2 is within 1 ulp of the exact angle", "[unit][trig]") {
         check(v, x), check(-v, x), check(v, -x), check(x, v), check(-x, -v);
     }
   error.report();
-  if (kPreciseReference) CHECK(error.max_ulp < 1.0);
-  CHECK(error.max_apart <= 2);
+  if (kPreciseReference)
+    CHECK(error.max_ulp < 1.0);
+  else
+    CHECK(error.max_apart <= 2);
 }
 
 TEST_CASE("atan2 of special values as C's (Annex F.10.1.4)", "[unit][trig]") {
@@ -222,8 +241,10 @@ TEST_CASE("exp is within 1 ulp of the exact value", "[unit][trig]") {
     check(x + 0.5 * 0.6931471805599453);
   }
   error.report();
-  if (kPreciseReference) CHECK(error.max_ulp < 1.0);
-  CHECK(error.max_apart <= 2);
+  if (kPreciseReference)
+    CHECK(error.max_ulp < 1.0);
+  else
+    CHECK(error.max_apart <= 2);
 }
 
 TEST_CASE("exp of special values", "[unit][trig]") {
@@ -256,10 +277,11 @@ TEST_CASE("cos_sin, atan2 and exp give these bits", "[unit][trig]") {
     const tire::CosSin cs = tire::cos_sin(i % 2 ? random.uniform(-1e4, 1e4) : random.log_uniform(-30, 1023));
     mix(cs.cos);
     mix(cs.sin);
-    mix(tire::atan2(random.log_uniform(-40, 40), random.log_uniform(-40, 40)));
+    const double y = random.log_uniform(-40, 40);
+    mix(tire::atan2(y, random.log_uniform(-40, 40)));
     mix(tire::exp(random.uniform(-745.0, 709.0)));
   }
   char text[17];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-  CHECK(std::string(text) == "f8dea44305157627");
+  CHECK(std::string(text) == "81ed7a468a912ee6");
 }
