@@ -1,11 +1,19 @@
 #include "game_session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <type_traits>
 #include <utility>
 
 namespace game {
+
+namespace {
+// a at t = 0, b at t = 1, exactly (std::lerp: a + (b − a)·1 can miss b by a rounding).
+tire::Vec2 lerp(tire::Vec2 a, tire::Vec2 b, double t) {
+  return {std::lerp(a.x, b.x, t), std::lerp(a.y, b.y, t)};
+}
+}  // namespace
 
 void GameSession::start(std::string path, std::shared_ptr<const tire::Level> level) {
   session_ = tire::make_session(*level);
@@ -100,7 +108,7 @@ void GameSession::interpolated_positions(const tire::Tire& t, double alpha,
     return;
   }
   const std::vector<tire::Vec2>& before = it->second;
-  for (std::size_t i = 0; i < now.size(); ++i) out[i] = before[i] + (now[i] - before[i]) * alpha;
+  for (std::size_t i = 0; i < now.size(); ++i) out[i] = lerp(before[i], now[i], alpha);
 }
 
 tire::Vec2 GameSession::interpolated_centroid(const tire::Tire& t, double alpha) const {
@@ -110,15 +118,15 @@ tire::Vec2 GameSession::interpolated_centroid(const tire::Tire& t, double alpha)
   tire::Vec2 sum;
   for (const tire::Vec2& p : it->second) sum += p;
   const tire::Vec2 before = sum / static_cast<double>(it->second.size());
-  return before + (now - before) * alpha;
+  return lerp(before, now, alpha);
 }
 
 tire::Pose GameSession::interpolated_pose(std::uint32_t prop, double alpha) const {
   const tire::Pose now = session_->world().rigid().current_pose(prop);
   if (prop >= previous_poses_.size()) return now;
   const tire::Pose& before = previous_poses_[prop];
-  return tire::Pose::make(before.position + (now.position - before.position) * alpha,
-                          before.angle + (now.angle - before.angle) * alpha);
+  return tire::Pose::make(lerp(before.position, now.position, alpha),
+                          std::lerp(before.angle, now.angle, alpha));
 }
 
 std::vector<std::string> GameSession::take_warnings() {

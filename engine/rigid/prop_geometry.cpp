@@ -4,11 +4,15 @@
 #include <cmath>
 #include <limits>
 
+#include "tire/math/trig.h"
 #include "tire/xpbd/area_constraint.h"
 
 namespace tire {
 
-Pose Pose::make(Vec2 position, double angle) { return {position, angle, std::cos(angle), std::sin(angle)}; }
+Pose Pose::make(Vec2 position, double angle) {
+  const CosSin cs = cos_sin(angle);
+  return {position, angle, cs.cos, cs.sin};
+}
 
 PropGeometry PropGeometry::from_spec(const PropSpec& spec) {
   PropGeometry g;
@@ -175,7 +179,7 @@ bool is_convex_ccw(const std::vector<Vec2>& points) {
   double turning = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = points[i], b = points[(i + 1) % n], c = points[(i + 2) % n];
-    turning += std::atan2(cross(b - a, c - b), dot(b - a, c - b));
+    turning += tire::atan2(cross(b - a, c - b), dot(b - a, c - b));
   }
   return std::abs(turning - 2.0 * 3.141592653589793) < 1e-6;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "tire/math/trig.h"
 #include "tire/xpbd/area_constraint.h"
 
 namespace tire {
@@ -67,7 +68,7 @@ std::uint32_t wedge_edge(const Vec2* x, std::uint32_t n, Vec2 hub, Vec2 d, Guess
   if (guess == Guess::pseudo_angle) {
     turn = pseudo_angle(dot(r0, d), cross(r0, d)) / 4.0;
   } else {
-    double angle = std::atan2(cross(r0, d), dot(r0, d));
+    double angle = tire::atan2(cross(r0, d), dot(r0, d));
     if (angle < 0.0) angle += 2.0 * std::numbers::pi;
     turn = angle / (2.0 * std::numbers::pi);
   }
@@ -178,7 +179,7 @@ void keep_rim_inside_tread(Tire& t) {
   // its nearest particle times cos(π/N)) is surely inside: the usual case, skipped cheaply.
   double nearest2 = 1e300;
   for (std::uint32_t i = 0; i < n; ++i) nearest2 = std::min(nearest2, length_squared(x[i] - t.rim_hub));
-  const double cos_half = std::cos(std::numbers::pi / n);
+  const double cos_half = cos_sin(std::numbers::pi / n).cos;
   const double inside2 = nearest2 * cos_half * cos_half;
   for (std::uint32_t j = n; j < 2 * n; ++j) {
     Vec2& p = x[j];

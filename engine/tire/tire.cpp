@@ -6,6 +6,7 @@
 #include <span>
 
 #include "tire/math/check.h"
+#include "tire/math/trig.h"
 
 namespace tire {
 
@@ -14,7 +15,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
       spec(spec_),
       spawn_mass(spec_.mass),
       n(static_cast<std::uint32_t>(spec_.segments)),
-      segment_length(2.0 * spec_.outer_radius * std::sin(std::numbers::pi / spec_.segments)) {
+      segment_length(2.0 * spec_.outer_radius * cos_sin(std::numbers::pi / spec_.segments).sin) {
   TIRE_ASSERT(spec.segments >= 3, "a tire ring of fewer than three segments");
   TIRE_ASSERT(spec.mass > 0.0 && std::isfinite(spec.mass), "a tire's mass is not positive and finite");
   TIRE_ASSERT(spec.inner_radius > 0.0 && spec.inner_radius < spec.outer_radius,
@@ -71,7 +72,8 @@ void Tire::reset() {
     // At angle 0 the segment between particles n−1 and 0 lies flat at the bottom: a polygon resting
     // on a vertex is balanced on a knife edge and would tip over, on an edge it is at rest.
     const double theta = spec.angle - std::numbers::pi / 2 + std::numbers::pi * (2.0 * i + 1.0) / n;
-    const Vec2 dir{std::cos(theta), std::sin(theta)};
+    const CosSin cs = cos_sin(theta);
+    const Vec2 dir{cs.cos, cs.sin};
     const Vec2 r_out = dir * spec.outer_radius;
     const Vec2 r_in = dir * spec.inner_radius;
     particles.x[i] = spec.position + r_out;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tire/math/check.h"
+#include "tire/math/exp.h"
 #include "tire/tire/soft_contact.h"
 
 namespace tire {
@@ -160,7 +161,7 @@ void solve_contacts(Tire& t, const SubstepContext& ctx) {
 // Momentum-conserving damping (Müller et al. 2007, "Position Based Dynamics", Sec. 3.5): only the
 // deviation from the tire's rigid motion decays, at rate `damping` per second. Leaves `m` as is.
 void damp_deviation(Tire& t, const RigidMotion& m, double damping, double h) {
-  const double k = 1.0 - std::exp(-damping * h);
+  const double k = 1.0 - tire::exp(-damping * h);
   Particles& p = t.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec2 rigid = m.velocity + perp(p.x[i] - m.centroid) * m.omega;
