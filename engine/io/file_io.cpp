@@ -1,13 +1,17 @@
 #include "tire/io/file_io.h"
 
 #include <fcntl.h>
+#ifdef TIRE_HAVE_OPENSSL
 #include <openssl/evp.h>
+#endif
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+
+#include "sha256.h"
 
 namespace tire {
 
@@ -93,9 +97,14 @@ bool write_file_atomically(const std::filesystem::path& file, std::string_view c
 }
 
 std::string sha256_hex(std::string_view bytes) {
+#ifdef TIRE_HAVE_OPENSSL
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr);
+#else
+  const std::array<std::uint8_t, 32> digest = detail::sha256_portable(bytes);
+  const auto length = static_cast<unsigned int>(digest.size());
+#endif
   static constexpr char hex[] = "0123456789abcdef";
   std::string out;
   for (unsigned int i = 0; i < length; ++i) {

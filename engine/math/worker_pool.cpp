@@ -1,6 +1,7 @@
 #include "tire/math/worker_pool.h"
 
 #include <algorithm>
+#include <system_error>
 
 #include "tire/math/check.h"
 
@@ -33,7 +34,13 @@ std::uint32_t generation_of(std::uint64_t ticket) { return static_cast<std::uint
 }  // namespace
 
 WorkerPool::WorkerPool(unsigned threads) {
-  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
+  // Where no thread can be started (a program built without threads, as in the browser, or a
+  // system out of them), the pool keeps those it has: with none, every job runs on the caller.
+  // Which thread runs a chunk never changes a result.
+  try {
+    for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
+  } catch (const std::system_error&) {
+  }
 }
 
 WorkerPool::~WorkerPool() {
