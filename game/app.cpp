@@ -495,6 +495,13 @@ void App::draw_ui() {
 // ---- Loop ----------------------------------------------------------------------------------------
 
 int App::run() {
+  if (const std::optional<int> failed = start()) return *failed;
+  while (frame()) {
+  }
+  return finish();
+}
+
+std::optional<int> App::start() {
   const bool edit = !options_.edit.empty();
   if (edit ? !open_editor(options_.edit) : !load_level(options_.level)) {
     for (const std::string& e : level_errors_) std::cerr << e << "\n";
@@ -508,88 +515,96 @@ int App::run() {
   frame_stats_.reserve(options_.frames
                            ? static_cast<std::size_t>(std::min<long long>(*options_.frames, kFrameSamples))
                            : kFrameSamplesInteractive);
-  const Uint64 start = SDL_GetPerformanceCounter();
-  double last = 0.0;
-  long long frame = 0;
-  while (true) {
-    if (options_.frames && frame >= *options_.frames) break;
-    const Uint64 frame_start = SDL_GetPerformanceCounter();
-    // Scripted keys go through SDL's queue, exactly like real ones.
-    for (const ScriptedKey& k : options_.keys.events_at(frame)) {
-      SDL_Event e{};
-      SDL_SetModState(static_cast<SDL_Keymod>(k.down ? k.mod : Uint16{KMOD_NONE}));
-      e.type = k.down ? SDL_KEYDOWN : SDL_KEYUP;
-      e.key.state = k.down ? SDL_PRESSED : SDL_RELEASED;
-      e.key.windowID = SDL_GetWindowID(window_);
-      e.key.keysym.scancode = k.key;
-      e.key.keysym.sym = SDL_GetKeyFromScancode(k.key);
-      e.key.keysym.mod = k.mod;
-      SDL_PushEvent(&e);
-    }
-    SDL_Event e;
-    while (SDL_PollEvent(&e)) handle_event(e);
-    imgui_->new_frame();
-    if (editing_) {
-      clicks_.clear();
-      for (const SDL_Event& mouse : std::exchange(editor_mouse_, {}))
-        editor_->handle_event(mouse, imgui_->wants_mouse(), imgui_->wants_keyboard());
-    } else {
-      take_clicks();
-      session_.flush();  // spawns, grabs, tuning and loads apply now, between ticks
-      if (session_.generation() != seen_generation_) after_level_change();
-    }
+  run_start_ = SDL_GetPerformanceCounter();
+  return std::nullopt;
+}
 
-    now_ = seconds_since(start);
-    const double wall = std::clamp(now_ - last, 0.0, 0.25);
-    last = now_;
-    if (wall > 0.0) fps_ = fps_ == 0.0 ? 1.0 / wall : fps_ * 0.95 + 0.05 / wall;
-    // --frames: every frame is exactly one tick, so automated runs are reproducible.
-    const double frame_seconds =
-        options_.frames ? (session_.loaded() ? session_.world().config().dt : 1.0 / 60.0) : wall;
-    if (!editing_) advance(frame_seconds);
-    physics_ms_ = physics_ms_ * 0.9 + 0.1 * frame_physics_seconds_ * 1000.0;
-    if (!editing_ && hot_reload_.poll(now_)) {
-      if (load_level(session_.path())) warn("reloaded " + session_.path());
-    }
-
-    const Uint64 render_start = SDL_GetPerformanceCounter();
-    draw_frame(frame_seconds);  // may set quit_ (the menu's Quit)
-    const double render_seconds = seconds_since(render_start);
-    const bool last_frame = quit_ || (options_.frames && frame + 1 >= *options_.frames);
-    double screenshot_seconds = 0.0;
-    if (last_frame && !options_.screenshot.empty()) {
-      const Uint64 shot_start = SDL_GetPerformanceCounter();
-      if (const std::string err = save_screenshot(renderer_, options_.screenshot); !err.empty())
-        std::cerr << "tire-game: cannot save the screenshot " << options_.screenshot << ": " << err << "\n";
-      screenshot_seconds = seconds_since(shot_start);
-    }
-    const Uint64 present_start = SDL_GetPerformanceCounter();
-    SDL_RenderPresent(renderer_);
-    const double present_seconds = seconds_since(present_start);
-    // The screenshot is for tests, not part of what a player waits for.
-    frame_stats_.add({static_cast<float>(frame_physics_seconds_ * 1000.0),
-                      static_cast<float>((render_seconds + present_seconds) * 1000.0),
-                      static_cast<float>(present_seconds * 1000.0),
-                      static_cast<float>((seconds_since(frame_start) - screenshot_seconds) * 1000.0)});
-    ++frame;
-    if (quit_) break;
-    // Without vsync (or when it is not honoured), do not spin faster than ~240 frames per second.
-    if (!options_.frames) {
-      const double spent = seconds_since(start) - now_;
-      if (spent < 1.0 / 240.0) SDL_Delay(static_cast<Uint32>((1.0 / 240.0 - spent) * 1000.0));
-    }
+bool App::frame() {
+  if (options_.frames && frame_ >= *options_.frames) return false;
+  const Uint64 frame_start = SDL_GetPerformanceCounter();
+  // Scripted keys go through SDL's queue, exactly like real ones.
+  for (const ScriptedKey& k : options_.keys.events_at(frame_)) {
+    SDL_Event e{};
+    SDL_SetModState(static_cast<SDL_Keymod>(k.down ? k.mod : Uint16{KMOD_NONE}));
+    e.type = k.down ? SDL_KEYDOWN : SDL_KEYUP;
+    e.key.state = k.down ? SDL_PRESSED : SDL_RELEASED;
+    e.key.windowID = SDL_GetWindowID(window_);
+    e.key.keysym.scancode = k.key;
+    e.key.keysym.sym = SDL_GetKeyFromScancode(k.key);
+    e.key.keysym.mod = k.mod;
+    SDL_PushEvent(&e);
   }
+  SDL_Event e;
+  while (SDL_PollEvent(&e)) handle_event(e);
+  imgui_->new_frame();
+  if (editing_) {
+    clicks_.clear();
+    for (const SDL_Event& mouse : std::exchange(editor_mouse_, {}))
+      editor_->handle_event(mouse, imgui_->wants_mouse(), imgui_->wants_keyboard());
+  } else {
+    take_clicks();
+    session_.flush();  // spawns, grabs, tuning and loads apply now, between ticks
+    if (session_.generation() != seen_generation_) after_level_change();
+  }
+
+  now_ = seconds_since(run_start_);
+  const double wall = std::clamp(now_ - last_wall_, 0.0, 0.25);
+  last_wall_ = now_;
+  if (wall > 0.0) fps_ = fps_ == 0.0 ? 1.0 / wall : fps_ * 0.95 + 0.05 / wall;
+  // --frames: every frame is exactly one tick, so automated runs are reproducible.
+  const double frame_seconds =
+      options_.frames ? (session_.loaded() ? session_.world().config().dt : 1.0 / 60.0) : wall;
+  if (!editing_) advance(frame_seconds);
+  physics_ms_ = physics_ms_ * 0.9 + 0.1 * frame_physics_seconds_ * 1000.0;
+  if (!editing_ && hot_reload_.poll(now_)) {
+    if (load_level(session_.path())) warn("reloaded " + session_.path());
+  }
+
+  const Uint64 render_start = SDL_GetPerformanceCounter();
+  draw_frame(frame_seconds);  // may set quit_ (the menu's Quit)
+  const double render_seconds = seconds_since(render_start);
+  const bool last_frame = quit_ || (options_.frames && frame_ + 1 >= *options_.frames);
+  double screenshot_seconds = 0.0;
+  if (last_frame && !options_.screenshot.empty()) {
+    const Uint64 shot_start = SDL_GetPerformanceCounter();
+    if (const std::string err = save_screenshot(renderer_, options_.screenshot); !err.empty())
+      std::cerr << "tire-game: cannot save the screenshot " << options_.screenshot << ": " << err << "\n";
+    screenshot_seconds = seconds_since(shot_start);
+  }
+  const Uint64 present_start = SDL_GetPerformanceCounter();
+  SDL_RenderPresent(renderer_);
+  const double present_seconds = seconds_since(present_start);
+  // The screenshot is for tests, not part of what a player waits for.
+  frame_stats_.add({static_cast<float>(frame_physics_seconds_ * 1000.0),
+                    static_cast<float>((render_seconds + present_seconds) * 1000.0),
+                    static_cast<float>(present_seconds * 1000.0),
+                    static_cast<float>((seconds_since(frame_start) - screenshot_seconds) * 1000.0)});
+  ++frame_;
+  if (quit_) return false;
+#ifndef __EMSCRIPTEN__
+  // Without vsync (or when it is not honoured), do not spin faster than ~240 frames per second.
+  // (In the browser, the page's animation frames pace the loop.)
+  if (!options_.frames) {
+    const double spent = seconds_since(run_start_) - now_;
+    if (spent < 1.0 / 240.0) SDL_Delay(static_cast<Uint32>((1.0 / 240.0 - spent) * 1000.0));
+  }
+#endif
+  return !(options_.frames && frame_ >= *options_.frames);
+}
+
+int App::finish() {
   if (!options_.record.empty()) {
     if (const std::string err = recorder_.save(session_.level_session(), options_.record); !err.empty()) {
       std::cerr << "tire-game: cannot save the replay " << options_.record << ": " << err << "\n";
       return 2;
     }
   }
-  print_summary(frame);
+  summary_ = summary_json(frame_);
+  std::cout << summary_ << std::endl;
   return 0;
 }
 
-void App::print_summary(long long frames) const {
+std::string App::summary_json(long long frames) const {
   nlohmann::json out;
   out["frames"] = frames;
   if (editor_) {
@@ -600,10 +615,7 @@ void App::print_summary(long long frames) const {
                      {"errors", doc.errors().size()},
                      {"undo_steps", doc.history_size()}};
   }
-  if (!session_.loaded()) {
-    std::cout << out.dump() << std::endl;
-    return;
-  }
+  if (!session_.loaded()) return out.dump();
   out["level"] = session_.level().name;
   out["ticks"] = session_.world().tick();
   out["status"] = tire::to_string(session_.level_session().status());
@@ -626,7 +638,7 @@ void App::print_summary(long long frames) const {
                      {"render", stats(frame_stats_.render())},
                      {"present", stats(frame_stats_.present())},
                      {"frame", stats(frame_stats_.frame())}};
-  std::cout << out.dump() << std::endl;
+  return out.dump();
 }
 
 }  // namespace game

@@ -56,6 +56,17 @@ class App {
   // 2 the level does not load.
   int run();
 
+  // run()'s parts, for a host that drives the frames itself (the browser's main loop calls frame()
+  // once per animation frame): start() loads the level and opens the window (nothing: ready; else
+  // run()'s exit code), frame() runs one frame (false: the loop is over), finish() saves the
+  // recording and prints the exit summary (run()'s exit code).
+  std::optional<int> start();
+  bool frame();
+  int finish();
+  // The exit summary's one line of JSON, once finish() has run.
+  const std::string& summary() const { return summary_; }
+  SDL_Window* window() const { return window_; }
+
  private:
   bool open_window();
   bool load_level(const std::filesystem::path& file);
@@ -81,7 +92,7 @@ class App {
   tire::TickInput tick_input() const;
   void draw_frame(double wall_seconds);
   void draw_ui();
-  void print_summary(long long frames) const;
+  std::string summary_json(long long frames) const;
   bool level_over() const;
   void warn(const std::string& text);
   void save_replay();
@@ -133,6 +144,10 @@ class App {
   bool quit_ = false;
 
   // Timing.
+  Uint64 run_start_ = 0;    // performance counter when the loop started
+  long long frame_ = 0;     // frames run
+  double last_wall_ = 0.0;  // now_ at the last frame
+  std::string summary_;
   double accumulator_ = 0.0;  // s of simulated time owed, < dt after each frame
   double now_ = 0.0;          // wall seconds since start
   double fps_ = 0.0;

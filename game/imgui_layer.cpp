@@ -98,6 +98,10 @@ bool ImGuiLayer::process_event(const SDL_Event& event) {
 
 void ImGuiLayer::new_frame() {
   ImGui_ImplSDL2_NewFrame();
+  // Two frames can share a timestamp where the clock is coarse (a browser's): ImGui asserts that
+  // time passes.
+  ImGuiIO& io = ImGui::GetIO();
+  if (!(io.DeltaTime > 0.0f)) io.DeltaTime = 1.0e-4f;
   ImGui::NewFrame();
 }
 

@@ -1,10 +1,36 @@
 // tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
-//           [--edit FILE]
+//           [--edit FILE] [--replay FILE]
+//
+// The same program runs in the browser (README "In a browser"): there the page's query string is
+// the command line (game/web/shell.html), and the browser's main loop calls App::frame() once per
+// animation frame instead of App::run()'s loop.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 
 #include "app.h"
 #include "cli_numbers.h"
+#include "replay_check.h"
+
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+
+#include "web/web_page.h"
+
+namespace {
+
+// One animation frame of the page; at the end, the exit summary goes into the page.
+void browser_frame(void* arg) {
+  auto* app = static_cast<game::App*>(arg);
+  game::web::follow_canvas_size(app->window());
+  if (app->frame()) return;
+  emscripten_cancel_main_loop();
+  const int code = app->finish();
+  game::web::publish_summary(app->summary(), code);
+}
+
+}  // namespace
+#endif
 
 #ifndef TIRE_LEVELS_DIR
 #define TIRE_LEVELS_DIR "levels"
@@ -37,11 +63,27 @@ int main(int argc, char** argv) {
   std::string record;
   cli.add_option("--record", record,
                  "save a replay of the session to FILE on exit (tirectl replay checks it)");
+  std::string replay;
+  cli.add_option("--replay", replay,
+                 "run the replay FILE headless (no window) and print the result as one line of JSON; "
+                 "exit 0 pass, 1 fail, 2 unreadable");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = cli.exit(e);
+#ifdef __EMSCRIPTEN__
+    game::web::publish_summary("", code == 0 ? 0 : 2);
+#endif
     return code == 0 ? 0 : 2;
+  }
+
+  if (!replay.empty()) {
+    const game::ReplayCheck check = game::check_replay_file(replay);
+    std::cout << check.json << std::endl;
+#ifdef __EMSCRIPTEN__
+    game::web::publish_summary(check.json, check.exit_code);
+#endif
+    return check.exit_code;
   }
 
   game::GameOptions options;
@@ -56,10 +98,25 @@ int main(int argc, char** argv) {
     const auto press = game::parse_key_press(spec, error);
     if (!press) {
       std::cerr << "tire-game: " << error << "\n";
+#ifdef __EMSCRIPTEN__
+      game::web::publish_summary("", 2);
+#endif
       return 2;
     }
     options.keys.add(*press);
   }
+#ifdef __EMSCRIPTEN__
+  // The page lives on after main returns: the app with it.
+  static std::unique_ptr<game::App> app;
+  app = std::make_unique<game::App>(std::move(options));
+  if (const std::optional<int> failed = app->start()) {
+    game::web::publish_summary("", *failed);
+    return *failed;
+  }
+  emscripten_set_main_loop_arg(browser_frame, app.get(), 0, true);
+  return 0;
+#else
   game::App app(std::move(options));
   return app.run();
+#endif
 }
