@@ -5,6 +5,7 @@
 
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
+#include "tire/math/parse_number.h"
 #include "tire/session/level_session.h"
 #include "tire/world/world.h"
 
@@ -38,10 +39,9 @@ std::string apply_override(json& doc, const std::string& assignment) {
     return "--set " + assignment + ": expected key=value, e.g. solver.substeps=16";
   const std::string key = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || text.empty())
-    return "--set " + assignment + ": value must be a number, got \"" + text + "\"";
+  const std::optional<double> parsed = tire::parse_double(text);
+  if (!parsed) return "--set " + assignment + ": value must be a number, got \"" + text + "\"";
+  const double value = *parsed;
   // from_chars reads "nan" and "inf"; JSON has no such numbers, and no key takes one.
   if (!std::isfinite(value)) return "--set " + assignment + ": value must be a finite number, got " + text;
 

@@ -47,6 +47,7 @@ WorkerPool::~WorkerPool() {
   stop_.store(true);
   generation_.fetch_add(1);
   generation_.notify_all();
+  for (std::thread& t : workers_) t.join();
 }
 
 void WorkerPool::run_chunks(std::uint32_t generation) {

@@ -498,7 +498,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   rows_.clear();
   contacts_.clear();
   bodies_.clear();
-  std::fill(contact_of_.begin(), contact_of_.begin() + 2 * std::ptrdiff_t{n}, -1);
+  std::fill(contact_of_.begin(), contact_of_.begin() + 2 * static_cast<std::ptrdiff_t>(n), -1);
   rigid_alpha_tilde_ = ctx.config->rigid_compliance / (ctx.h * ctx.h);
   assemble(t, ctx, gamma);
   add_ring_area_row(t, ctx, false, gamma);
@@ -508,7 +508,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
     const double len = length(d);
     if (len > 0.0) {  // C = |x − target| with the grab's compliance, undamped
       double* g = gradient_of(rows_.size());
-      std::fill(g, g + 4 * std::ptrdiff_t{n}, 0.0);
+      std::fill(g, g + 4 * static_cast<std::ptrdiff_t>(n), 0.0);
       const std::size_t k = dof_of(t.grab_particle, n);
       g[k] = d.x / len;
       g[k + 1] = d.y / len;

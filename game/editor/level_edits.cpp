@@ -3,18 +3,22 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
+
+#include "tire/math/parse_number.h"
 
 namespace editor {
 
 namespace {
 
 double tidy(double v) {
+  // 12 significant digits, as std::to_chars(general, 12) writes (its specification is printf's
+  // %.12g; libc++ 14, the browser build's, has neither floating-point to_chars nor from_chars).
   char text[32];
-  const auto r = std::to_chars(text, text + sizeof text, v, std::chars_format::general, 12);
-  double out = v;
-  std::from_chars(text, r.ptr, out);
-  return out;
+  const int n = std::snprintf(text, sizeof text, "%.12g", v);
+  if (n <= 0 || n >= static_cast<int>(sizeof text)) return v;
+  return tire::parse_double(std::string_view(text, static_cast<std::size_t>(n))).value_or(v);
 }
 
 Json& item_at(Json& doc, const Pick& p) { return doc[array_key(p.kind)][p.index]; }

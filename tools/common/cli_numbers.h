@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "tire/math/parse_number.h"
 #include "tire/math/range.h"  // tire::Range: ranges print as the reference pages write them
 
 namespace tire_tools {
@@ -22,9 +23,8 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 // The number `text` spells, when the whole of it is one finite number.
 inline std::optional<double> finite_number(const std::string& text) {
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  const std::optional<double> value = tire::parse_double(text);
+  if (!value || !std::isfinite(*value)) return std::nullopt;
   return value;
 }
 

@@ -42,7 +42,8 @@ class WorkerPool {
   // Claims and runs chunks of job `generation` until none is left or a later job has begun.
   void run_chunks(std::uint32_t generation);
 
-  std::vector<std::jthread> workers_;
+  // Joined by the destructor (std::thread, not jthread: libc++ 14, as in emscripten, has none).
+  std::vector<std::thread> workers_;
   std::atomic<bool> stop_{false};
   std::atomic<std::uint32_t> generation_{0};  // bumped per job; sleeping workers wait on it
   std::atomic<unsigned> sleeping_{0};         // workers asleep (or about to be) on generation_
