@@ -12,6 +12,14 @@
 
 namespace tire::detail {
 
+// std::bit_cast, which the browser build's libc++ (emscripten 3.1.6) does not have yet: the same
+// compiler builtin it is made of (GCC 11 and clang).
+template <typename To, typename From>
+constexpr To bit_cast(const From& from) noexcept {
+  static_assert(sizeof(To) == sizeof(From));
+  return __builtin_bit_cast(To, from);
+}
+
 // A value as hi + lo with |lo| <= ulp(hi) / 2.
 struct DoubleDouble {
   double hi;
@@ -47,6 +55,6 @@ inline DoubleDouble two_product(double a, double b) {
 }
 
 // 2^n exactly, for a normal power of two (−1022 <= n <= 1023).
-inline double pow2(int n) { return std::bit_cast<double>(static_cast<std::uint64_t>(n + 1023) << 52); }
+inline double pow2(int n) { return bit_cast<double>(static_cast<std::uint64_t>(n + 1023) << 52); }
 
 }  // namespace tire::detail

@@ -117,7 +117,7 @@ std::uint64_t bits_at(const std::uint32_t (&p)[9], int pos) {
 
 // x >= 2^20, finite: Payne–Hanek.
 Reduced reduce_large(double x) {
-  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const auto bits = detail::bit_cast<std::uint64_t>(x);
   const std::uint64_t m = (bits & ((std::uint64_t{1} << 52) - 1)) | std::uint64_t{1} << 52;
   const int e = static_cast<int>(bits >> 52) - 1075;  // x = m·2^e, m < 2^53, e >= −32
   // x·2/π = m·Σ_j word_j·2^(e − 32(j+1)). The words before j0 add multiples of 8 (mod 4 they are
@@ -251,8 +251,8 @@ CosSin cos_sin(double angle) {
 double atan2(double y, double x) {
   if (x != x || y != y) return x + y;  // NaN
   const double ax = x < 0.0 ? -x : x, ay = y < 0.0 ? -y : y;
-  const bool x_negative = std::bit_cast<std::uint64_t>(x) >> 63 != 0;  // −0 too
-  const bool y_negative = std::bit_cast<std::uint64_t>(y) >> 63 != 0;
+  const bool x_negative = detail::bit_cast<std::uint64_t>(x) >> 63 != 0;  // −0 too
+  const bool y_negative = detail::bit_cast<std::uint64_t>(y) >> 63 != 0;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double angle;  // in [0, π], the sign of y applied last
   if (ay == 0.0) {
@@ -275,7 +275,7 @@ double atan2(double y, double x) {
     } else {
       // Scale both by a power of two (exact) so that big is in [1, 2): the exact products below
       // neither overflow nor underflow.
-      const int big_exponent = static_cast<int>(std::bit_cast<std::uint64_t>(big) >> 52) - 1023;
+      const int big_exponent = static_cast<int>(detail::bit_cast<std::uint64_t>(big) >> 52) - 1023;
       if (big_exponent > -1022 && big_exponent < 1023) {
         small *= pow2(-big_exponent);
         big *= pow2(-big_exponent);
@@ -283,7 +283,7 @@ double atan2(double y, double x) {
         const double k = big_exponent > 0 ? 0x1p-600 : 0x1p600;
         small *= k;
         big *= k;
-        const int e2 = static_cast<int>(std::bit_cast<std::uint64_t>(big) >> 52) - 1023;
+        const int e2 = static_cast<int>(detail::bit_cast<std::uint64_t>(big) >> 52) - 1023;
         small *= pow2(-e2);
         big *= pow2(-e2);
       }
