@@ -24,7 +24,10 @@ inline std::optional<double> parse_double(std::string_view text) {
   char* end = nullptr;
   errno = 0;
   const double value = std::strtod(copy.c_str(), &end);
-  if (end != copy.c_str() + copy.size() || errno == ERANGE) return std::nullopt;
+  if (end != copy.c_str() + copy.size()) return std::nullopt;
+  // Out of range: beyond the largest double, or below the smallest subnormal (a subnormal result,
+  // for which strtod also sets ERANGE, is a number).
+  if (errno == ERANGE && (value == 0.0 || value > 1.0e308 || value < -1.0e308)) return std::nullopt;
   return value;
 }
 
