@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "box2d_float_math.h"
+
 namespace tire {
 
 namespace {
@@ -55,6 +57,7 @@ Pose Prop::pose_at(double t) const {
 }
 
 RigidWorld::RigidWorld(Vec2 gravity) : world_(std::make_unique<b2World>(to_b2(gravity))), gravity_(gravity) {
+  use_engine_float_math();  // Box2D's rotations are the engine's (box2d_float_math.cpp)
   b2BodyDef def;
   def.type = b2_staticBody;
   ground_ = world_->CreateBody(&def);
@@ -427,7 +430,7 @@ void RigidWorld::hash_into(StateHash& h) const {
     h.add(b.GetAngle());
     h.add(b.GetLinearVelocity());
     h.add(b.GetAngularVelocity());
-    h.add(p.next_waypoint);
+    h.add(std::uint64_t{p.next_waypoint});
     h.add(p.direction);
     h.add(p.spec.path.running);
   }

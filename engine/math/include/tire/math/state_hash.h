@@ -1,5 +1,8 @@
 // FNV-1a (64-bit) over the exact bytes of the simulation state. Not cryptographic: it tells two
-// states apart, bit for bit, which is what replays and determinism tests need.
+// states apart, bit for bit, which is what replays and determinism tests need. The bytes hashed
+// are the same on every platform: fixed-width integers, IEEE doubles and floats, bools, never a
+// type whose size is the platform's (std::size_t, long, pointers: 4 bytes in WebAssembly, 8 here),
+// which add() refuses where that size differs from 8.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +24,9 @@ class StateHash {
   template <typename T>
   void add(const T& value) {
     static_assert(std::is_trivially_copyable_v<T>);
+    static_assert(!std::is_pointer_v<T>, "a pointer is no state");
+    static_assert(sizeof(long) == 8 || !(std::is_same_v<T, long> || std::is_same_v<T, unsigned long>),
+                  "std::size_t and long differ in size between platforms: hash a std::uint64_t");
     add_bytes(&value, sizeof(T));
   }
   std::uint64_t digest() const { return h_; }
