@@ -33,5 +33,11 @@ target_include_directories(CLI11::CLI11 SYSTEM INTERFACE ${TIRE_WEB_CLI11_INCLUD
 # runs every job on the calling thread (it cannot start threads there).
 add_library(Threads::Threads INTERFACE IMPORTED GLOBAL)
 
-# SHA-256 of level files: the engine's own implementation instead of OpenSSL's libcrypto.
+# SHA-256 of level files: Nettle's (built by tools/web from Debian's source package) instead of
+# OpenSSL's libcrypto.
 set(TIRE_OPENSSL OFF)
+find_library(TIRE_WEB_NETTLE nettle PATHS ${TIRE_WEB_PREFIX}/lib NO_DEFAULT_PATH REQUIRED)
+find_path(TIRE_WEB_NETTLE_INCLUDE nettle/sha2.h PATHS ${TIRE_WEB_PREFIX}/include NO_DEFAULT_PATH REQUIRED)
+add_library(nettle::nettle STATIC IMPORTED GLOBAL)
+set_target_properties(nettle::nettle PROPERTIES IMPORTED_LOCATION ${TIRE_WEB_NETTLE})
+target_include_directories(nettle::nettle SYSTEM INTERFACE ${TIRE_WEB_NETTLE_INCLUDE})

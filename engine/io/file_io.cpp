@@ -3,6 +3,8 @@
 #include <fcntl.h>
 #ifdef TIRE_HAVE_OPENSSL
 #include <openssl/evp.h>
+#else
+#include <nettle/sha2.h>
 #endif
 #include <unistd.h>
 
@@ -10,8 +12,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-
-#include "sha256.h"
 
 namespace tire {
 
@@ -101,9 +101,13 @@ std::string sha256_hex(std::string_view bytes) {
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr);
-#else
-  const std::array<std::uint8_t, 32> digest = detail::sha256_portable(bytes);
-  const auto length = static_cast<unsigned int>(digest.size());
+#else  // Nettle, where there is no OpenSSL (the browser build)
+  sha256_ctx context;
+  sha256_init(&context);
+  sha256_update(&context, bytes.size(), reinterpret_cast<const std::uint8_t*>(bytes.data()));
+  std::uint8_t digest[SHA256_DIGEST_SIZE];
+  sha256_digest(&context, SHA256_DIGEST_SIZE, digest);
+  const unsigned int length = SHA256_DIGEST_SIZE;
 #endif
   static constexpr char hex[] = "0123456789abcdef";
   std::string out;

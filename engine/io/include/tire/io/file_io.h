@@ -18,8 +18,8 @@ std::optional<std::string> read_file(const std::filesystem::path& file, std::uin
 // `file`: a crash or kill at any moment leaves either the old file or the new one, whole.
 bool write_file_atomically(const std::filesystem::path& file, std::string_view contents, std::string& error);
 
-// SHA-256 of the bytes, as 64 lowercase hex digits (OpenSSL's; the engine's own where it is built
-// without OpenSSL, as in the browser).
+// SHA-256 of the bytes, as 64 lowercase hex digits (OpenSSL's; Nettle's where it is built without
+// OpenSSL, as in the browser).
 std::string sha256_hex(std::string_view bytes);
 
 }  // namespace tire
