@@ -1,0 +1,56 @@
+# A virtual game controller (SDL's virtual joystick, through SDL's real events) drives level 01 to its
+# goal exactly as the keyboard does with the same inputs: the same outcome, the same winning tick,
+# the same final state hash and player position.
+#   cmake -DGAME=tire-game -DLEVEL=levels/01-first-roll.json -P pad_check.cmake
+set(frames 900)
+math(EXPR last "${frames} - 1")
+function(play out_var)
+  execute_process(COMMAND "${GAME}" "${LEVEL}" --no-progress --frames ${frames} ${ARGN}
+    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 100)
+  if(NOT code STREQUAL "0")
+    message(FATAL_ERROR "tire-game ${ARGN} exited with ${code}\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+  string(STRIP "${out}" out)
+  message(STATUS "${ARGN}:\n  ${out}\n  stderr: ${err}")
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+
+play(keys --press right:0-${last} --press space:140)
+play(pad --pad leftx=1:0-${last} --pad a:140)
+
+string(JSON pads GET "${pad}" gamepads)
+if(NOT pads EQUAL 1)
+  message(FATAL_ERROR "the pad run saw ${pads} game controllers, expected the virtual one")
+endif()
+string(JSON status GET "${keys}" finished status)
+string(JSON tick GET "${keys}" finished tick)
+if(NOT status STREQUAL "won")
+  message(FATAL_ERROR "the keyboard run did not win level 01: ${keys}")
+endif()
+foreach(field "finished;status" "finished;tick" "status" "ticks" "hash" "player;0" "player;1")
+  string(JSON a GET "${keys}" ${field})
+  string(JSON b GET "${pad}" ${field})
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "${field}: the keyboard run gives ${a}, the pad run ${b}")
+  endif()
+endforeach()
+string(JSON hash GET "${pad}" hash)
+message(STATUS "keyboard and pad both won at tick ${tick}, final hash ${hash}")
+
+# Half tilt steers half as hard: the stick is analog, and past its dead zone it is not the keyboard.
+play(half --pad leftx=0.6:0-${last})
+string(JSON x_half GET "${half}" player 0)
+string(JSON x_full GET "${pad}" player 0)
+string(JSON status_half GET "${half}" status)
+if(status_half STREQUAL "won" AND x_half STREQUAL x_full)
+  message(FATAL_ERROR "a half-tilted stick gave the same run as full tilt")
+endif()
+play(rest --pad leftx=0.1:0-${last})
+execute_process(COMMAND "${GAME}" "${LEVEL}" --no-progress --frames ${frames}
+  OUTPUT_VARIABLE none RESULT_VARIABLE code)
+string(STRIP "${none}" none)
+string(JSON hash_none GET "${none}" hash)
+string(JSON hash_rest GET "${rest}" hash)
+if(NOT hash_none STREQUAL hash_rest)
+  message(FATAL_ERROR "a stick inside the dead zone moved the tire (hash ${hash_rest}, untouched ${hash_none})")
+endif()
