@@ -1,5 +1,9 @@
 #include "ghost_draw.h"
 
+#include <imgui.h>
+
+#include <algorithm>
+
 namespace game {
 
 void GhostRenderer::draw(Draw& d, const Camera& camera, const Ghost& ghost, double alpha) {
@@ -25,6 +29,12 @@ void GhostRenderer::draw(Draw& d, const Camera& camera, const Ghost& ghost, doub
   d.fan(hub, inner_, kGhostRim);
   d.polyline(outer_, true, 1.5f, kGhostEdge);
   d.flush();
+  // Named above its top, so nobody takes it for a second player.
+  float top = hub.y;
+  for (const ScreenPoint& p : outer_) top = std::min(top, p.y);
+  const char* label = "best run";
+  const ImVec2 size = ImGui::CalcTextSize(label);
+  ImGui::GetBackgroundDrawList()->AddText({hub.x - size.x * 0.5f, top - size.y - 4.0f}, kGhostLabel, label);
 }
 
 }  // namespace game

@@ -13,6 +13,7 @@ namespace game {
 constexpr SDL_Color kGhostTread = rgba(210, 235, 255, 120);
 constexpr SDL_Color kGhostRim = rgba(150, 200, 255, 70);
 constexpr SDL_Color kGhostEdge = rgba(235, 248, 255, 170);
+constexpr unsigned kGhostLabel = 0xC8FFFFFFu;  // ImGui's ABGR: white, mostly opaque
 
 class GhostRenderer {
  public:
