@@ -582,11 +582,13 @@ std::optional<int> App::start() {
   if (const std::string err = gamepads_.init(); !err.empty()) warn("game controllers unavailable: " + err);
   if (!options_.pads.empty()) {
     for (const PadPress& p : options_.pads) virtual_pad_.add(p);
-    if (const std::string err = virtual_pad_.attach(); !err.empty()) {
-      std::cerr << "tire-game: --pad: " << err << "\n";
-      return 1;
+    if (!virtual_pad_.connects_later()) {
+      if (const std::string err = virtual_pad_.attach(); !err.empty()) {
+        std::cerr << "tire-game: --pad: " << err << "\n";
+        return 1;
+      }
+      SDL_PumpEvents();  // SDL takes in the pad at rest before the script moves it
     }
-    SDL_PumpEvents();  // SDL takes in the pad at rest before the script moves it
   }
   if (!edit) after_level_change();
   levels_ = scan_levels(options_.levels_dir);
@@ -603,7 +605,7 @@ bool App::frame() {
   if (options_.frames && frame_ >= *options_.frames) return false;
   const Uint64 frame_start = SDL_GetPerformanceCounter();
   // A scripted pad moves before SDL reads its devices (in SDL_PollEvent), as a real one would.
-  virtual_pad_.apply(frame_);
+  if (const std::string err = virtual_pad_.apply(frame_); !err.empty()) warn("--pad: " + err);
   // Scripted keys go through SDL's queue, exactly like real ones.
   for (const ScriptedKey& k : options_.keys.events_at(frame_)) {
     SDL_Event e{};

@@ -34,6 +34,14 @@ std::optional<PadPress> parse_pad_press(const std::string& spec, std::string& er
     return fail("expected BUTTON:FRAMES or AXIS=VALUE:FRAMES, e.g. a:140 or leftx=1:0-899");
   PadPress press;
   std::string name = spec.substr(0, colon);
+  if (name == "connect" || name == "disconnect") {
+    press.plug = name == "connect" ? PadPress::Plug::connect : PadPress::Plug::disconnect;
+    const std::string at = spec.substr(colon + 1);
+    const auto frame = parse_frame(at);
+    if (!frame) return fail("\"" + at + "\" is not a frame");
+    press.first = press.last = *frame;
+    return press;
+  }
   if (const auto eq = name.find('='); eq != std::string::npos) {
     const std::string value = name.substr(eq + 1);
     name = name.substr(0, eq);
@@ -86,22 +94,35 @@ std::string VirtualPad::attach() {
   return "";
 }
 
-void VirtualPad::apply(long long frame) {
-  if (!joystick_) return;
+bool VirtualPad::connects_later() const {
+  for (const PadPress& p : presses_)
+    if (p.plug == PadPress::Plug::connect) return true;
+  return false;
+}
+
+std::string VirtualPad::apply(long long frame) {
   for (const PadPress& p : presses_) {
-    if (p.last + 1 != frame) continue;
+    if (p.first != frame) continue;
+    if (p.plug == PadPress::Plug::disconnect) detach();
+    if (p.plug == PadPress::Plug::connect && !joystick_)
+      if (std::string err = attach(); !err.empty()) return err;
+  }
+  if (!joystick_) return "";
+  for (const PadPress& p : presses_) {
+    if (p.last + 1 != frame || p.plug != PadPress::Plug::none) continue;
     if (p.is_axis)
       SDL_JoystickSetVirtualAxis(joystick_, p.axis, 0);
     else
       SDL_JoystickSetVirtualButton(joystick_, p.button, SDL_RELEASED);
   }
   for (const PadPress& p : presses_) {
-    if (p.first != frame) continue;
+    if (p.first != frame || p.plug != PadPress::Plug::none) continue;
     if (p.is_axis)
       SDL_JoystickSetVirtualAxis(joystick_, p.axis, axis_raw(p.value));
     else
       SDL_JoystickSetVirtualButton(joystick_, p.button, SDL_PRESSED);
   }
+  return "";
 }
 
 void VirtualPad::detach() {

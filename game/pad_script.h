@@ -4,6 +4,8 @@
 // button at a frame or over a range ("a:140": pressed on frame 140, released on 141). Names are
 // SDL's (leftx, lefty, rightx, righty, lefttrigger, righttrigger; a, b, x, y, back, guide, start,
 // leftstick, rightstick, leftshoulder, rightshoulder, dpup, dpdown, dpleft, dpright).
+// "connect:FRAME" plugs the pad in on that frame instead of before the first, "disconnect:FRAME"
+// pulls it out: the game sees both through SDL's hot-plug events.
 //
 // VirtualPad attaches an SDL virtual joystick that SDL sees as a game controller and sets its axes
 // and buttons at those frames, so the game reads it through SDL's real events, hot-plug included.
@@ -18,6 +20,8 @@
 namespace game {
 
 struct PadPress {
+  enum class Plug { none, connect, disconnect };
+  Plug plug = Plug::none;  // connect / disconnect at `first`
   bool is_axis = false;
   SDL_GameControllerAxis axis = SDL_CONTROLLER_AXIS_INVALID;
   SDL_GameControllerButton button = SDL_CONTROLLER_BUTTON_INVALID;
@@ -41,10 +45,13 @@ class VirtualPad {
 
   void add(const PadPress& press) { presses_.push_back(press); }
   bool empty() const { return presses_.empty(); }
+  // Whether the script plugs the pad in later (connect:FRAME) rather than before the first frame.
+  bool connects_later() const;
   // Attaches the virtual controller (SDL's joystick subsystem must be up); "" or why it failed.
   std::string attach();
-  // Sets the axes and buttons that change on `frame` (releases first).
-  void apply(long long frame);
+  // Plugs in or pulls out, then sets the axes and buttons that change on `frame` (releases first).
+  // "" or why the pad could not be attached.
+  std::string apply(long long frame);
   void detach();
 
  private:

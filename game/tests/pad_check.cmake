@@ -1,6 +1,6 @@
 # A virtual game controller (SDL's virtual joystick, through SDL's real events) drives level 01 to its
 # goal exactly as the keyboard does with the same inputs: the same outcome, the same winning tick,
-# the same final state hash and player position.
+# the same final state hash and player position; and a pad plugged in and pulled out mid-game.
 #   cmake -DGAME=tire-game -DLEVEL=levels/01-first-roll.json -P pad_check.cmake
 set(frames 900)
 math(EXPR last "${frames} - 1")
@@ -54,3 +54,21 @@ string(JSON hash_rest GET "${rest}" hash)
 if(NOT hash_none STREQUAL hash_rest)
   message(FATAL_ERROR "a stick inside the dead zone moved the tire (hash ${hash_rest}, untouched ${hash_none})")
 endif()
+
+# Hot-plug: a pad plugged in at frame 100 with the stick held right and pulled out at frame 400
+# drives exactly as right held from frame 100 to 399 on the keyboard.
+set(frames 600)
+play(keys_late --press right:100-399)
+play(plugged --pad connect:100 --pad leftx=1:100-599 --pad disconnect:400)
+string(JSON pads GET "${plugged}" gamepads)
+if(NOT pads EQUAL 0)
+  message(FATAL_ERROR "the pad pulled out at frame 400 is still counted (${pads})")
+endif()
+foreach(field "status" "hash" "player;0" "player;1")
+  string(JSON a GET "${keys_late}" ${field})
+  string(JSON b GET "${plugged}" ${field})
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "hot-plug: ${field}: the keyboard run gives ${a}, the pad plugged in mid-game ${b}")
+  endif()
+endforeach()
+message(STATUS "a pad plugged in at frame 100 and pulled out at 400 matches right:100-399 to the bit")

@@ -27,7 +27,8 @@ TEST_CASE("pad specs (--pad) parse into axis or button and frames", "[unit][game
   CHECK(button->button == SDL_CONTROLLER_BUTTON_A);
   CHECK(button->first == 140);
   CHECK(button->last == 140);
-  for (const char* bad : {"leftx:3", "leftx=1.5:3", "leftx=x:3", "zz:3", "a:5-4", "a", "a:", "start=1:3"}) {
+  for (const char* bad : {"leftx:3", "leftx=1.5:3", "leftx=x:3", "zz:3", "a:5-4", "a", "a:", "start=1:3",
+                          "connect:x", "connect:-1"}) {
     error.clear();
     CHECK_FALSE(parse_pad_press(bad, error));
     CHECK(error.find(std::string("--pad ") + bad) == 0);
@@ -48,7 +49,7 @@ TEST_CASE("the stick steers nothing inside its dead zone and exactly 1 at full t
   CHECK(half < 0.6);
 }
 
-TEST_CASE("progress: a faster win is a new best, a slower one is not", "[unit][game]") {
+TEST_CASE("a faster win is a new best time and a slower one is not", "[unit][game]") {
   Progress p;
   CHECK_FALSE(p.record("a.json", false, 3.0, 180));
   REQUIRE(p.find("a.json"));
@@ -66,7 +67,7 @@ TEST_CASE("progress: a faster win is a new best, a slower one is not", "[unit][g
   CHECK(back->at("a.json").won);
 }
 
-TEST_CASE("progress: a damaged file is an error naming what is wrong", "[unit][game]") {
+TEST_CASE("a damaged progress file is an error naming what is wrong", "[unit][game]") {
   const std::pair<const char*, const char*> cases[] = {
       {R"({"format": "soft-tire-progress/1", "levels": {"a.js)", "not valid JSON"},
       {R"([])", "/: must be an object"},
@@ -87,7 +88,7 @@ TEST_CASE("progress: a damaged file is an error naming what is wrong", "[unit][g
   }
 }
 
-TEST_CASE("progress: levels are keyed by their path in the levels folder; ghost files are safe names",
+TEST_CASE("progress keys levels by their path in the levels folder and names ghost files safely",
           "[unit][game]") {
   const std::filesystem::path dir = TIRE_LEVELS_DIR;
   CHECK(level_key(dir, dir / "01-first-roll.json") == "01-first-roll.json");
