@@ -32,8 +32,9 @@ bool is_any(SDL_Scancode k, std::initializer_list<SDL_Scancode> keys) {
 App::App(GameOptions options) : options_(std::move(options)) {}
 
 App::~App() {
-  gamepads_.close_all();
+  // The scripted pad first: closing the controllers may shut SDL's joysticks down, its handle too.
   virtual_pad_.detach();
+  gamepads_.close_all();
   imgui_.reset();
   world_renderer_.release();
   draw_.reset();
