@@ -11,6 +11,7 @@
 #include "hud.h"
 #include "menus.h"
 #include "screenshot.h"
+#include "tire/math/state_hash.h"
 #include "tuning_panel.h"
 
 namespace game {
@@ -31,6 +32,9 @@ bool is_any(SDL_Scancode k, std::initializer_list<SDL_Scancode> keys) {
 App::App(GameOptions options) : options_(std::move(options)) {}
 
 App::~App() {
+  // The scripted pad first: closing the controllers may shut SDL's joysticks down, its handle too.
+  virtual_pad_.detach();
+  gamepads_.close_all();
   imgui_.reset();
   world_renderer_.release();
   draw_.reset();
@@ -122,6 +126,11 @@ void App::after_level_change() {
   grabbing_ = false;
   next_level_handled_ = false;
   finished_at_.reset();
+  run_result_.reset();
+  std::vector<std::string> messages;
+  best_runs_.level_started(session_.path(), session_.level_ptr(), messages);
+  best_runs_.ticked(session_.world().tick());
+  for (const std::string& m : messages) warn(m);
   if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
 }
 
@@ -207,6 +216,10 @@ void App::warn(const std::string& text) {
 // ---- Input ---------------------------------------------------------------------------------------
 
 void App::handle_event(const SDL_Event& e) {
+  if (e.type >= SDL_CONTROLLERAXISMOTION && e.type <= SDL_CONTROLLERDEVICEREMAPPED) {
+    pad_event(e);
+    return;
+  }
   if (editing_) {
     if (e.type == SDL_QUIT) {
       editor_->request_quit();
@@ -311,6 +324,15 @@ void App::key_down(SDL_Scancode k) {
       break;
     case SDL_SCANCODE_N: go_to_level(+1); break;
     case SDL_SCANCODE_B: go_to_level(-1); break;
+    case SDL_SCANCODE_G:
+      if (best_runs_.ghost().loaded()) {
+        best_runs_.ghost().visible = !best_runs_.ghost().visible;
+        warn(best_runs_.ghost().visible ? "ghost shown (G hides it)" : "ghost hidden (G shows it)");
+      } else {
+        warn(best_runs_.enabled() ? "no ghost for this level yet: win it to make one"
+                                  : "no ghost: progress is off");
+      }
+      break;
     case SDL_SCANCODE_SPACE:
     case SDL_SCANCODE_UP:
     case SDL_SCANCODE_W: pending_jump_ = true; break;
@@ -357,8 +379,9 @@ tire::TickInput App::tick_input() const {
   tire::TickInput in;
   if (menu_open_ || level_over()) return in;
   const auto held = [this](SDL_Scancode a, SDL_Scancode b) { return held_.contains(a) || held_.contains(b); };
-  in.steer = (held(SDL_SCANCODE_RIGHT, SDL_SCANCODE_D) ? 1.0 : 0.0) -
-             (held(SDL_SCANCODE_LEFT, SDL_SCANCODE_A) ? 1.0 : 0.0);
+  const double keys = (held(SDL_SCANCODE_RIGHT, SDL_SCANCODE_D) ? 1.0 : 0.0) -
+                      (held(SDL_SCANCODE_LEFT, SDL_SCANCODE_A) ? 1.0 : 0.0);
+  in.steer = std::clamp(keys + gamepads_.steer(), -1.0, 1.0);
   in.jump = pending_jump_;
   return in;
 }
@@ -373,6 +396,47 @@ void App::step_once() {
   pending_jump_ = false;
   ++steps_this_frame_;
   for (const std::string& w : session_.take_warnings()) warn(w);
+  best_runs_.ticked(session_.world().tick());
+  if (!finished_at_ && level_over()) level_finished();
+}
+
+// ---- Gamepads, progress, ghost -------------------------------------------------------------------
+
+// A pad's buttons do what the keys do (the help screen lists both).
+void App::pad_event(const SDL_Event& e) {
+  std::vector<std::string> messages;
+  const PadAction action = gamepads_.handle_event(e, messages);
+  for (const std::string& m : messages) warn(m);
+  if (editing_ || action == PadAction::none) return;
+  const bool choosing = menu_open_ || level_over();
+  switch (action) {
+    case PadAction::jump: key_down(choosing ? SDL_SCANCODE_RETURN : SDL_SCANCODE_SPACE); break;
+    case PadAction::pause: key_down(menu_open_ ? SDL_SCANCODE_ESCAPE : SDL_SCANCODE_P); break;
+    case PadAction::restart: key_down(SDL_SCANCODE_R); break;
+    case PadAction::next_level: key_down(SDL_SCANCODE_N); break;
+    case PadAction::previous_level: key_down(SDL_SCANCODE_B); break;
+    case PadAction::menu_up:
+      if (menu_open_) key_down(SDL_SCANCODE_UP);
+      break;
+    case PadAction::menu_down:
+      if (menu_open_) key_down(SDL_SCANCODE_DOWN);
+      break;
+    case PadAction::back: key_down(SDL_SCANCODE_ESCAPE); break;
+    case PadAction::none: break;
+  }
+}
+
+// The level was just won or lost: the time goes into the progress, a best run becomes the ghost.
+void App::level_finished() {
+  finished_at_ = session_.world().time();
+  const bool won = session_.level_session().status() == tire::ScriptStatus::won;
+  // A level played from the editor with unsaved changes is not the file: its time is not recorded.
+  const bool is_file =
+      !(editor_ && editor_->document().modified() && editor_->document().file() == session_.path());
+  std::vector<std::string> messages;
+  run_result_ = best_runs_.finished(won, *finished_at_, session_.world().tick(), is_file, recorder_,
+                                    session_.level_session(), messages);
+  for (const std::string& m : messages) warn(m);
 }
 
 void App::advance(double frame_seconds) {
@@ -391,7 +455,6 @@ void App::advance(double frame_seconds) {
   if (accumulator_ >= dt) accumulator_ = std::fmod(accumulator_, dt);
   if (step_requested_ && paused_) step_once();
   step_requested_ = false;
-  if (level_over() && !finished_at_) finished_at_ = session_.world().time();
   // A script asked for the next level.
   if (session_.level_session().next_level_requested() && !next_level_handled_) {
     next_level_handled_ = true;
@@ -436,6 +499,7 @@ void App::draw_frame(double wall_seconds) {
   SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
   SDL_RenderClear(renderer_);
   world_renderer_.draw(*draw_, camera_, session_, alpha, debug_);
+  ghost_renderer_.draw(*draw_, camera_, best_runs_.ghost(), alpha);
   draw_ui();
   imgui_->render();
   if (editor_) editor_frame();
@@ -468,8 +532,11 @@ void App::draw_ui() {
   if (show_help_) draw_help(&show_help_);
 
   if (menu_open_) {
-    const MenuChoice choice = draw_level_menu(levels_, menu_selected_, find_level(levels_, session_.path()),
-                                              options_.levels_dir.string(), imgui_->big_font());
+    std::vector<std::string> notes;
+    for (const LevelEntry& e : levels_) notes.push_back(best_runs_.note(e.path));
+    const MenuChoice choice =
+        draw_level_menu(levels_, notes, menu_selected_, find_level(levels_, session_.path()),
+                        options_.levels_dir.string(), imgui_->big_font());
     if (choice == MenuChoice::load && menu_selected_ < levels_.size() &&
         load_level(levels_[menu_selected_].path))
       menu_open_ = false;
@@ -479,7 +546,8 @@ void App::draw_ui() {
       quit_ = true;
   } else if (level_over()) {
     switch (draw_end_screen(session_.level_session().status(), session_.level().name,
-                            finished_at_.value_or(world.time()), imgui_->big_font())) {
+                            finished_at_.value_or(world.time()), run_result_ ? run_result_->note : "",
+                            imgui_->big_font())) {
       case EndChoice::next: go_to_level(+1); break;
       case EndChoice::retry: restart(); break;
       case EndChoice::none: break;
@@ -502,12 +570,27 @@ int App::run() {
 }
 
 std::optional<int> App::start() {
+  for (const std::string& w : best_runs_.open(options_.data_dir, options_.levels_dir)) warn(w);
   const bool edit = !options_.edit.empty();
   if (edit ? !open_editor(options_.edit) : !load_level(options_.level)) {
     for (const std::string& e : level_errors_) std::cerr << e << "\n";
     return 2;
   }
   if (!open_window()) return 1;
+  // SDL drops a pad's events while no window has the keyboard focus, which an offscreen window
+  // never gets: a scripted pad (headless tests) takes them anyway.
+  if (!options_.pads.empty()) SDL_SetHint(SDL_HINT_JOYSTICK_ALLOW_BACKGROUND_EVENTS, "1");
+  if (const std::string err = gamepads_.init(); !err.empty()) warn("game controllers unavailable: " + err);
+  if (!options_.pads.empty()) {
+    for (const PadPress& p : options_.pads) virtual_pad_.add(p);
+    if (!virtual_pad_.connects_later()) {
+      if (const std::string err = virtual_pad_.attach(); !err.empty()) {
+        std::cerr << "tire-game: --pad: " << err << "\n";
+        return 1;
+      }
+      SDL_PumpEvents();  // SDL takes in the pad at rest before the script moves it
+    }
+  }
   if (!edit) after_level_change();
   levels_ = scan_levels(options_.levels_dir);
 
@@ -522,6 +605,8 @@ std::optional<int> App::start() {
 bool App::frame() {
   if (options_.frames && frame_ >= *options_.frames) return false;
   const Uint64 frame_start = SDL_GetPerformanceCounter();
+  // A scripted pad moves before SDL reads its devices (in SDL_PollEvent), as a real one would.
+  if (const std::string err = virtual_pad_.apply(frame_); !err.empty()) warn("--pad: " + err);
   // Scripted keys go through SDL's queue, exactly like real ones.
   for (const ScriptedKey& k : options_.keys.events_at(frame_)) {
     SDL_Event e{};
@@ -619,6 +704,7 @@ std::string App::summary_json(long long frames) const {
   out["level"] = session_.level().name;
   out["ticks"] = session_.world().tick();
   out["status"] = tire::to_string(session_.level_session().status());
+  out["hash"] = tire::to_hex(session_.level_session().state_hash());
   if (const tire::Tire* p = session_.world().player()) {
     const tire::Vec2 c = p->centroid();
     out["player"] = {c.x, c.y};
@@ -626,6 +712,13 @@ std::string App::summary_json(long long frames) const {
     out["player"] = nullptr;
   }
   out["tires"] = session_.world().tires().size();
+  out["gamepads"] = gamepads_.connected();
+  out["progress"] = best_runs_.summary(session_.path());
+  if (run_result_) {
+    out["finished"] = {{"status", run_result_->won ? "won" : "lost"},
+                       {"tick", run_result_->ticks},
+                       {"time", run_result_->time}};
+  }
   out["asleep"] = session_.world().asleep_count();
   // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
   // (World::step), the rendering (drawing, ImGui, present) and the whole frame.

@@ -13,15 +13,19 @@
 #include <string>
 #include <vector>
 
+#include "best_runs.h"
 #include "camera.h"
 #include "draw.h"
 #include "editor_mode.h"
 #include "frame_stats.h"
 #include "game_session.h"
+#include "gamepad.h"
+#include "ghost_draw.h"
 #include "hot_reload.h"
 #include "imgui_layer.h"
 #include "key_script.h"
 #include "level_list.h"
+#include "pad_script.h"
 #include "renderer.h"
 #include "session_recorder.h"
 
@@ -35,6 +39,9 @@ struct GameOptions {
   std::string screenshot;            // save the last frame here (BMP)
   std::string record;                // save the session's replay here on exit
   std::filesystem::path edit;        // open the editor on this level (made when it does not exist)
+  std::vector<PadPress> pads;        // a scripted virtual game controller (--pad)
+  // Where progress.json and the ghosts are kept; nullopt: neither read nor written (--no-progress).
+  std::optional<std::filesystem::path> data_dir;
 };
 
 // How many frames the exit summary's frame times cover at most: all of a --frames run up to this,
@@ -96,6 +103,9 @@ class App {
   bool level_over() const;
   void warn(const std::string& text);
   void save_replay();
+  // Gamepads (gamepad.h), progress and the ghost (best_runs.h).
+  void pad_event(const SDL_Event& event);
+  void level_finished();
 
   GameOptions options_;
   SDL_Window* window_ = nullptr;
@@ -155,6 +165,13 @@ class App {
   double frame_physics_seconds_ = 0.0;
   int steps_this_frame_ = 0;
   FrameStats frame_stats_;  // per frame: simulation, rendering, whole frame (for the exit summary)
+
+  // Gamepads, progress and the ghost of the best run.
+  Gamepads gamepads_;
+  VirtualPad virtual_pad_;
+  BestRuns best_runs_;
+  GhostRenderer ghost_renderer_;
+  std::optional<RunResult> run_result_;  // the finished level's time and whether it is a best
 };
 
 }  // namespace game

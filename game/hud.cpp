@@ -22,6 +22,7 @@ const char* const kKeys[][2] = {
     {"P", "pause / resume"},
     {". (period)", "one tick forward while paused"},
     {"N / B", "next / previous level"},
+    {"G", "show / hide the ghost of your best run"},
     {"Esc", "level menu"},
     {"F1", "this help"},
     {"F2", "tuning panel"},
@@ -31,6 +32,28 @@ const char* const kKeys[][2] = {
     {"Left click (empty space)", "spawn a tire"},
     {"Left drag (on a tire)", "grab and pull it"},
 };
+
+// A game controller (any SDL knows; plugged in at any time).
+const char* const kPad[][2] = {
+    {"Left stick / d-pad", "steer (the stick in proportion)"},
+    {"A", "jump; in a menu or after a level: choose"},
+    {"Start", "pause / resume"},
+    {"Back", "restart the level"},
+    {"Right / left shoulder", "next / previous level"},
+    {"B", "level menu (and back); d-pad up/down chooses"},
+};
+
+void key_table(const char* id, const char* const (*rows)[2], std::size_t count) {
+  if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
+  for (std::size_t i = 0; i < count; ++i) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextColored({1.0f, 0.8f, 0.35f, 1.0f}, "%s", rows[i][0]);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(rows[i][1]);
+  }
+  ImGui::EndTable();
+}
 }  // namespace
 
 bool format_asleep_line(std::span<char> out, std::size_t asleep, std::size_t tires) {
@@ -62,19 +85,14 @@ void draw_hud(const HudInfo& info) {
 void draw_help(bool* open) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
-  if (ImGui::Begin("Keys (F1 closes)", open,
+  if (ImGui::Begin("Keys and gamepad (F1 closes)", open,
                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
                        ImGuiWindowFlags_NoSavedSettings)) {
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-      for (const auto& row : kKeys) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextColored({1.0f, 0.8f, 0.35f, 1.0f}, "%s", row[0]);
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[1]);
-      }
-      ImGui::EndTable();
-    }
+    ImGui::TextDisabled("Keyboard and mouse");
+    key_table("keys", kKeys, std::size(kKeys));
+    ImGui::Spacing();
+    ImGui::TextDisabled("Gamepad");
+    key_table("pad", kPad, std::size(kPad));
     ImGui::Spacing();
     ImGui::TextDisabled("Edit the level file while playing: it reloads on save.");
   }

@@ -1,5 +1,5 @@
 // tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
-//           [--edit FILE] [--replay FILE]
+//           [--edit FILE] [--replay FILE] [--pad SPEC]... [--no-progress]
 //
 // The same program runs in the browser (README "In a browser"): there the page's query string is
 // the command line (game/web/shell.html), and the browser's main loop calls App::frame() once per
@@ -10,6 +10,7 @@
 
 #include "app.h"
 #include "cli_numbers.h"
+#include "progress.h"
 #include "replay_check.h"
 
 #ifdef __EMSCRIPTEN__
@@ -40,8 +41,11 @@ int main(int argc, char** argv) {
   CLI::App cli{
       "Soft tire: roll a deformable XPBD tire through a level.\n"
       "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
-      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor. Mouse: click spawns a "
-      "tire, drag grabs one.",
+      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor, G the ghost. Mouse: "
+      "click "
+      "spawns a tire, drag grabs one.\n"
+      "Gamepad: left stick/d-pad steer, A jump, Start pause, Back restart, shoulders next/previous level.\n"
+      "Progress and ghosts: $XDG_DATA_HOME/soft-tire/ (else ~/.local/share/soft-tire/).",
       "tire-game"};
   std::string level;
   std::string levels_dir = TIRE_LEVELS_DIR;
@@ -63,6 +67,13 @@ int main(int argc, char** argv) {
   std::string record;
   cli.add_option("--record", record,
                  "save a replay of the session to FILE on exit (tirectl replay checks it)");
+  std::vector<std::string> pads;
+  cli.add_option(
+      "--pad", pads,
+      "scripted virtual game controller: AXIS=VALUE:FRAMES or BUTTON:FRAMES, e.g. leftx=1:0-899, a:140");
+  bool no_progress = false;
+  cli.add_flag("--no-progress", no_progress,
+               "neither read nor write the progress file and the ghosts (for scripted runs)");
   std::string replay;
   cli.add_option("--replay", replay,
                  "run the replay FILE headless (no window) and print the result as one line of JSON; "
@@ -105,6 +116,19 @@ int main(int argc, char** argv) {
     }
     options.keys.add(*press);
   }
+  for (const std::string& spec : pads) {
+    std::string error;
+    const auto press = game::parse_pad_press(spec, error);
+    if (!press) {
+      std::cerr << "tire-game: " << error << "\n";
+#ifdef __EMSCRIPTEN__
+      game::web::publish_summary("", 2);
+#endif
+      return 2;
+    }
+    options.pads.push_back(*press);
+  }
+  if (!no_progress) options.data_dir = game::data_dir_from_env();
 #ifdef __EMSCRIPTEN__
   // The page lives on after main returns: the app with it.
   static std::unique_ptr<game::App> app;

@@ -15,8 +15,9 @@ void centred_text(const char* text, ImVec4 color) {
 }
 }  // namespace
 
-MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& selected,
-                           std::optional<std::size_t> current, const std::string& levels_dir, ImFont* big) {
+MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vector<std::string>& notes,
+                           std::size_t& selected, std::optional<std::size_t> current,
+                           const std::string& levels_dir, ImFont* big) {
   MenuChoice choice = MenuChoice::none;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos({vp->Size.x * 0.5f, vp->Size.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
@@ -33,6 +34,7 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& s
     for (std::size_t i = 0; i < levels.size(); ++i) {
       const LevelEntry& e = levels[i];
       std::string label = e.path.filename().string() + "   " + (e.valid ? e.name : "(does not load)");
+      if (i < notes.size() && !notes[i].empty()) label += "   (" + notes[i] + ")";
       if (current && *current == i) label += "   [playing]";
       label += "##" + std::to_string(i);
       const bool is_selected = selected == i;
@@ -56,7 +58,8 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& s
   return choice;
 }
 
-EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time, ImFont* big) {
+EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time,
+                          const std::string& note, ImFont* big) {
   EndChoice choice = EndChoice::none;
   const bool won = status == tire::ScriptStatus::won;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -73,6 +76,7 @@ EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, d
     char line[256];
     std::snprintf(line, sizeof line, "%s  -  %.2f s", level.c_str(), time);
     centred_text(line, {0.9f, 0.9f, 0.9f, 1.0f});
+    if (!note.empty()) centred_text(note.c_str(), {1.0f, 0.85f, 0.35f, 1.0f});
     ImGui::Spacing();
     if (won) {
       if (ImGui::Button("Next level (N / Enter)")) choice = EndChoice::next;

@@ -15,14 +15,18 @@ namespace game {
 
 enum class MenuChoice { none, load, resume, quit };
 
-// The level list with `selected` highlighted and `current` marked. A click on a level selects it
-// and returns load.
-MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, std::size_t& selected,
-                           std::optional<std::size_t> current, const std::string& levels_dir, ImFont* big);
+// The level list with `selected` highlighted and `current` marked, each level with its note from
+// `notes` (the best time; may be shorter than `levels`). A click on a level selects it and returns
+// load.
+MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vector<std::string>& notes,
+                           std::size_t& selected, std::optional<std::size_t> current,
+                           const std::string& levels_dir, ImFont* big);
 
 enum class EndChoice { none, next, retry };
 
-// "Level complete" or "You lost", with the next-level / retry buttons.
-EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time, ImFont* big);
+// "Level complete" or "You lost", the time and `note` ("New best time!", "best 9.85 s"), with the
+// next-level / retry buttons.
+EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time,
+                          const std::string& note, ImFont* big);
 
 }  // namespace game

@@ -16,6 +16,39 @@ std::string level_sha(const std::filesystem::path& file) {
 }
 }  // namespace
 
+tire::Replay last_attempt(const tire::Replay& replay) {
+  std::size_t start = replay.inputs.size();
+  for (std::size_t i = replay.inputs.size(); i-- > 0;)
+    if (replay.inputs[i].restart) {
+      start = i;
+      break;
+    }
+  if (start == replay.inputs.size()) return replay;  // no restart: the whole recording is one run
+  const std::uint64_t from = replay.inputs[start].tick;
+  tire::Replay out;
+  out.level = replay.level;
+  out.level_sha256 = replay.level_sha256;
+  out.ticks = replay.ticks - from;
+  for (std::size_t i = start + 1; i < replay.inputs.size(); ++i) {
+    tire::ReplayInput in = replay.inputs[i];
+    in.tick -= from;
+    out.inputs.push_back(in);
+  }
+  // A restart zeroes the held steer, and the recorder records a steer held through it again at the
+  // restart's tick: the run needs nothing from before its restart.
+  out.expect.status = replay.expect.status;
+  out.expect.hash = replay.expect.hash;
+  for (const tire::ReplayCheckpoint& c : replay.expect.checkpoints)
+    if (c.tick > from) out.expect.checkpoints.push_back({c.tick - from, c.hash});
+  for (const tire::ReplayBox& b : replay.expect.boxes)
+    if (b.tick > from) {
+      tire::ReplayBox moved = b;
+      moved.tick -= from;
+      out.expect.boxes.push_back(moved);
+    }
+  return out;
+}
+
 void SessionRecorder::begin(const std::filesystem::path& level_file, tire::Vec2 gravity) {
   level_file_ = std::filesystem::absolute(level_file);
   level_sha256_ = level_sha(level_file_);
@@ -104,10 +137,11 @@ void SessionRecorder::on_stepped(const tire::LevelSession& session) {
   if (recorder_) recorder_->after_step(session);
 }
 
-std::string SessionRecorder::save(const tire::LevelSession& session,
-                                  const std::filesystem::path& file) const {
+std::string SessionRecorder::save(const tire::LevelSession& session, const std::filesystem::path& file,
+                                  bool last_run_only) const {
   if (!recorder_) return "nothing recorded yet";
   tire::Replay replay = recorder_->finish(session);
+  if (last_run_only) replay = last_attempt(replay);
   const std::filesystem::path target = std::filesystem::absolute(file);
   std::error_code ec;
   std::filesystem::create_directories(target.parent_path(), ec);

@@ -13,6 +13,10 @@
 
 namespace game {
 
+// The part of a recording after its last restart, as a replay of its own from tick 0: the run that
+// ended the recording (the recorder keeps one recording across restarts of a level).
+tire::Replay last_attempt(const tire::Replay& replay);
+
 class SessionRecorder final : public SessionObserver {
  public:
   // Starts recording `level_file` (a session's first level, which is not loaded by an event).
@@ -23,8 +27,10 @@ class SessionRecorder final : public SessionObserver {
   void on_stepped(const tire::LevelSession& session) override;
 
   // Writes the recording so far (atomically) to `file`; the level path inside is relative to it.
-  // Returns an error text, or "" when saved.
-  std::string save(const tire::LevelSession& session, const std::filesystem::path& file) const;
+  // `last_run_only`: only what followed the last restart (last_attempt). Returns an error text, or
+  // "" when saved.
+  std::string save(const tire::LevelSession& session, const std::filesystem::path& file,
+                   bool last_run_only = false) const;
   // A file name the player can find: <dir>/<level name>-<YYYYmmdd-HHMMSS>.json.
   std::filesystem::path default_file(const std::filesystem::path& dir) const;
 

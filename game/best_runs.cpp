@@ -1,0 +1,93 @@
+#include "best_runs.h"
+
+#include <cstdio>
+
+namespace game {
+
+std::vector<std::string> BestRuns::open(std::optional<std::filesystem::path> dir,
+                                        std::filesystem::path levels_dir) {
+  levels_dir_ = std::move(levels_dir);
+  enabled_ = dir.has_value();
+  if (!enabled_) return {};
+  return progress_.load(*dir);
+}
+
+void BestRuns::level_started(const std::string& level_path, std::shared_ptr<const tire::Level> level,
+                             std::vector<std::string>& messages) {
+  last_.reset();
+  if (!enabled_) return;
+  const std::string key = level_key(levels_dir_, level_path);
+  const std::string sha = level_file_sha256(level_path);
+  if (key == key_ && sha == sha_) {
+    ghost_.sync(0);  // a restart: the ghost starts over with the player
+    return;
+  }
+  key_ = key;
+  sha_ = sha;
+  const bool visible = ghost_.visible;
+  if (const std::string why = ghost_.load(progress_.ghost_file(key), std::move(level), sha); !why.empty())
+    messages.push_back(why);
+  ghost_.visible = visible;
+}
+
+RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool record,
+                             const SessionRecorder& recorder, const tire::LevelSession& session,
+                             std::vector<std::string>& messages) {
+  RunResult r;
+  r.won = won;
+  r.time = time;
+  r.ticks = ticks;
+  if (!enabled_ || !record) {
+    last_ = r;
+    return r;
+  }
+  const std::string key = key_;
+  r.new_best = progress_.record(key, won, time, ticks);
+  if (const std::string err = progress_.save(); !err.empty())
+    messages.push_back("cannot save the progress to " + progress_.file().string() + ": " + err);
+  if (won) {
+    r.note = r.new_best ? "New best time!" : format_record(progress_.find(key));
+    // The run is the ghost when it is the best, or when there is no (valid) ghost of this level.
+    if (r.new_best || !ghost_.loaded()) {
+      const std::filesystem::path file = progress_.ghost_file(key);
+      if (const std::string err = recorder.save(session, file, true); !err.empty())
+        messages.push_back("cannot save the ghost " + file.string() + ": " + err);
+      else
+        sha_.clear();  // the next start of this level loads the new ghost
+    }
+  }
+  last_ = r;
+  return r;
+}
+
+std::string BestRuns::note(const std::filesystem::path& level_file) const {
+  if (!enabled_) return "";
+  return format_record(progress_.find(level_key(levels_dir_, level_file)));
+}
+
+nlohmann::json BestRuns::summary(const std::string& level_path) const {
+  nlohmann::json out{{"enabled", enabled_}};
+  if (!enabled_) return out;
+  const std::string key = level_key(levels_dir_, level_path);
+  out["file"] = progress_.file().string();
+  out["level"] = key;
+  const LevelRecord* r = progress_.find(key);
+  out["won"] = r && r->won;
+  out["best_time"] = r && r->won ? nlohmann::json(r->best_time) : nlohmann::json(nullptr);
+  out["menu"] = note(level_path);
+  if (last_) out["run"] = {{"won", last_->won}, {"time", last_->time}, {"new_best", last_->new_best}};
+  nlohmann::json g{{"loaded", ghost_.loaded()}, {"visible", ghost_.visible}};
+  if (ghost_.loaded()) {
+    g["file"] = ghost_.file().string();
+    g["tick"] = ghost_.tick();
+    g["ticks"] = ghost_.ticks();
+    if (const tire::Tire* p = ghost_.player()) {
+      const tire::Vec2 c = p->centroid();
+      g["position"] = {c.x, c.y};
+    }
+  }
+  out["ghost"] = g;
+  return out;
+}
+
+}  // namespace game

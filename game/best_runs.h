@@ -1,0 +1,63 @@
+// Progress and the ghost together, as the app sees them: a level starting loads its ghost, each tick
+// moves the ghost along, a finished level is recorded (and a new best run kept as the level's ghost),
+// and the menu and the exit summary read the records. Off with --no-progress (or when there is no
+// data folder): then nothing is read or written.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ghost.h"
+#include "progress.h"
+#include "session_recorder.h"
+
+namespace game {
+
+// What a finished level came to, for the end screen.
+struct RunResult {
+  bool won = false;
+  double time = 0.0;
+  std::uint64_t ticks = 0;
+  bool new_best = false;
+  std::string note;  // "New best time!" or "best 9.85 s"
+};
+
+class BestRuns {
+ public:
+  // Reads the progress in `dir` (nullopt: off). Returns the warnings to show (a damaged file).
+  std::vector<std::string> open(std::optional<std::filesystem::path> dir, std::filesystem::path levels_dir);
+  bool enabled() const { return enabled_; }
+
+  // A level (re)started from `level_path`: its ghost loads (or starts over, on a restart).
+  void level_started(const std::string& level_path, std::shared_ptr<const tire::Level> level,
+                     std::vector<std::string>& messages);
+  // The player's world has run `tick` ticks: the ghost catches up.
+  void ticked(std::uint64_t tick) { ghost_.sync(tick); }
+  // The level was won or lost after `ticks` (`time` s). A new best keeps the run (the recording
+  // since the last restart) as the level's ghost. `record`: false for a level that is not the file
+  // on disk (an unsaved edit), which is not recorded.
+  RunResult finished(bool won, double time, std::uint64_t ticks, bool record, const SessionRecorder& recorder,
+                     const tire::LevelSession& session, std::vector<std::string>& messages);
+
+  // The menu's note for a level file: "best 9.85 s", "not won yet" or "".
+  std::string note(const std::filesystem::path& level_file) const;
+  Ghost& ghost() { return ghost_; }
+  const Ghost& ghost() const { return ghost_; }
+  // For the exit summary: the progress file, this level's record and the menu's note, the last run,
+  // and the ghost (loaded, visible, its tick and position).
+  nlohmann::json summary(const std::string& level_path) const;
+
+ private:
+  bool enabled_ = false;
+  std::filesystem::path levels_dir_;
+  Progress progress_;
+  Ghost ghost_;
+  std::string key_, sha_;  // the level the ghost was loaded for
+  std::optional<RunResult> last_;
+};
+
+}  // namespace game

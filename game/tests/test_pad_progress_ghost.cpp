@@ -1,0 +1,183 @@
+// The gamepad's pure parts (the --pad parser, the stick's dead zone), the progress file (parsing,
+// damage, best times, keys) and the ghost (a cut recording, lockstep replay) without a window.
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "gamepad.h"
+#include "ghost.h"
+#include "pad_script.h"
+#include "progress.h"
+#include "session_recorder.h"
+#include "tire/math/state_hash.h"
+
+using namespace game;
+
+TEST_CASE("pad specs (--pad) parse into axis or button and frames", "[unit][game]") {
+  std::string error;
+  const auto axis = parse_pad_press("leftx=-0.5:10-20", error);
+  REQUIRE(axis);
+  CHECK(axis->is_axis);
+  CHECK(axis->axis == SDL_CONTROLLER_AXIS_LEFTX);
+  CHECK(axis->value == -0.5);
+  CHECK(axis->first == 10);
+  CHECK(axis->last == 20);
+  const auto button = parse_pad_press("a:140", error);
+  REQUIRE(button);
+  CHECK_FALSE(button->is_axis);
+  CHECK(button->button == SDL_CONTROLLER_BUTTON_A);
+  CHECK(button->first == 140);
+  CHECK(button->last == 140);
+  for (const char* bad : {"leftx:3", "leftx=1.5:3", "leftx=x:3", "zz:3", "a:5-4", "a", "a:", "start=1:3",
+                          "connect:x", "connect:-1"}) {
+    error.clear();
+    CHECK_FALSE(parse_pad_press(bad, error));
+    CHECK(error.find(std::string("--pad ") + bad) == 0);
+  }
+  CHECK(axis_raw(1.0) == 32767);
+  CHECK(axis_raw(-1.0) == -32767);
+  CHECK(axis_raw(0.0) == 0);
+}
+
+TEST_CASE("the stick steers nothing inside its dead zone and exactly 1 at full tilt", "[unit][game]") {
+  CHECK(stick_steer(0) == 0.0);
+  CHECK(stick_steer(static_cast<Sint16>(kStickDeadZone * 32767 * 0.9)) == 0.0);
+  CHECK(stick_steer(32767) == 1.0);
+  CHECK(stick_steer(-32768) == -1.0);
+  CHECK(stick_steer(-32767) == -1.0);
+  const double half = stick_steer(axis_raw(0.6));
+  CHECK(half > 0.4);
+  CHECK(half < 0.6);
+}
+
+TEST_CASE("a faster win is a new best time and a slower one is not", "[unit][game]") {
+  Progress p;
+  CHECK_FALSE(p.record("a.json", false, 3.0, 180));
+  REQUIRE(p.find("a.json"));
+  CHECK(format_record(p.find("a.json")) == "not won yet");
+  CHECK(p.record("a.json", true, 10.0, 600));
+  CHECK(p.record("a.json", true, 9.5, 570));
+  CHECK_FALSE(p.record("a.json", true, 9.9, 594));
+  CHECK(p.find("a.json")->best_ticks == 570);
+  CHECK(format_record(p.find("a.json")) == "best 9.50 s");
+  CHECK(format_record(nullptr).empty());
+  std::string error;
+  const auto back = Progress::parse(p.to_json(), error);
+  REQUIRE(back);
+  CHECK(back->at("a.json").best_time == 9.5);
+  CHECK(back->at("a.json").won);
+}
+
+TEST_CASE("a damaged progress file is an error naming what is wrong", "[unit][game]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.js)", "not valid JSON"},
+      {R"([])", "/: must be an object"},
+      {R"({"levels": {}})", "/format"},
+      {R"({"format": "soft-tire-progress/1", "levels": []})", "/levels"},
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.json": 3}})", "/levels/a.json"},
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": "yes"}}})", "/levels/a.json/won"},
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": "9"}}})",
+       "/levels/a.json/best_time"},
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": 9, "best_ticks": -1}}})",
+       "/levels/a.json/best_ticks"},
+  };
+  for (const auto& [text, what] : cases) {
+    std::string error;
+    CHECK_FALSE(Progress::parse(text, error));
+    INFO(text);
+    CHECK(error.find(what) != std::string::npos);
+  }
+}
+
+TEST_CASE("progress keys levels by their path in the levels folder and names ghost files safely",
+          "[unit][game]") {
+  const std::filesystem::path dir = TIRE_LEVELS_DIR;
+  CHECK(level_key(dir, dir / "01-first-roll.json") == "01-first-roll.json");
+  CHECK(level_key(dir, dir / "sub" / ".." / "02-jumps.json") == "02-jumps.json");
+  const std::string outside = level_key(dir, dir / ".." / "README.md");
+  CHECK(std::filesystem::path(outside).is_absolute());
+  Progress p;
+  CHECK(p.ghost_file("01-first-roll.json").filename() == "01-first-roll.json");
+  CHECK(p.ghost_file("/a b/c.json").filename() == "_a_b_c.json");
+}
+
+namespace {
+std::shared_ptr<const tire::Level> level_01() {
+  const tire::LevelLoad load =
+      tire::load_level_file(std::filesystem::path(TIRE_LEVELS_DIR) / "01-first-roll.json");
+  REQUIRE(load.level);
+  return std::make_shared<const tire::Level>(*load.level);
+}
+}  // namespace
+
+TEST_CASE("the last run of a recording replays on its own to the recorded end", "[unit][game][replay]") {
+  const auto level = level_01();
+  tire::ReplayRecorder recorder("01-first-roll.json", "sha");
+  std::unique_ptr<tire::LevelSession> session = tire::make_session(*level);
+  double steer = 0.0;
+  bool jump = false;
+  const auto play = [&](const tire::ReplayInput& in) {
+    recorder.input(in);
+    tire::apply_input(in, *session, *level, steer, jump);
+  };
+  tire::ReplayInput left;
+  left.steer = -1.0;
+  play(left);
+  for (int i = 0; i < 50; ++i) session->step({steer, false}), recorder.after_step(*session);
+  tire::ReplayInput restart;
+  restart.tick = 50;
+  restart.restart = true;
+  play(restart);
+  tire::ReplayInput right;
+  right.tick = 50;
+  right.steer = 1.0;
+  play(right);
+  for (int i = 0; i < 100; ++i) session->step({steer, false}), recorder.after_step(*session);
+  const tire::Replay whole = recorder.finish(*session);
+  const tire::Replay run = last_attempt(whole);
+  CHECK(run.ticks == 100);
+  REQUIRE(run.inputs.size() == 1);
+  CHECK(run.inputs[0].tick == 0);
+  CHECK(run.expect.checkpoints.front().tick == 10);  // recorded at 60, 50 ticks before the restart
+  const tire::ReplayOutcome outcome = tire::run_replay(run, *level);
+  CHECK(outcome.failures.empty());
+}
+
+TEST_CASE("the ghost steps in lockstep from its replay and ends where the run ended",
+          "[unit][game][replay]") {
+  const auto level = level_01();
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tire-ghost-test";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path level_file = std::filesystem::path(TIRE_LEVELS_DIR) / "01-first-roll.json";
+  SessionRecorder recorder;
+  recorder.begin(level_file, level->gravity);
+  std::unique_ptr<tire::LevelSession> session = tire::make_session(*level);
+  for (std::uint64_t t = 0; t < 120; ++t) {
+    const tire::TickInput in{t < 80 ? 1.0 : 0.0, t == 40};
+    recorder.on_step(t, in);
+    session->step(in);
+    recorder.on_stepped(*session);
+  }
+  const std::filesystem::path file = dir / "ghost.json";
+  REQUIRE(recorder.save(*session, file, true).empty());
+  Ghost ghost;
+  const std::string sha = level_file_sha256(level_file);
+  REQUIRE(ghost.load(file, level, sha).empty());
+  REQUIRE(ghost.loaded());
+  ghost.sync(60);
+  CHECK(ghost.tick() == 60);
+  ghost.sync(500);  // past its end it holds still
+  CHECK(ghost.tick() == 120);
+  REQUIRE(ghost.player());
+  CHECK(ghost.player()->centroid().x == session->world().player()->centroid().x);
+  CHECK(ghost.player()->centroid().y == session->world().player()->centroid().y);
+  ghost.sync(0);  // the player restarted
+  CHECK(ghost.tick() == 0);
+  // Another version of the level: dropped.
+  CHECK(ghost.load(file, level, std::string(64, '0')).find("ghost dropped") != std::string::npos);
+  CHECK_FALSE(ghost.loaded());
+  // A missing ghost is no ghost and no message; a broken one is a message.
+  CHECK(ghost.load(dir / "none.json", level, sha).empty());
+  std::ofstream(dir / "broken.json") << "{\"format\": \"tire-rep";
+  CHECK(ghost.load(dir / "broken.json", level, sha).find("cannot read the ghost") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}
