@@ -24,6 +24,7 @@
 #include "level_list.h"
 #include "renderer.h"
 #include "session_recorder.h"
+#include "sound/sound_system.h"
 
 namespace game {
 
@@ -35,6 +36,7 @@ struct GameOptions {
   std::string screenshot;            // save the last frame here (BMP)
   std::string record;                // save the session's replay here on exit
   std::filesystem::path edit;        // open the editor on this level (made when it does not exist)
+  sound::SoundOptions sound;         // --volume, --audio-log
 };
 
 // How many frames the exit summary's frame times cover at most: all of a --frames run up to this,
@@ -154,7 +156,8 @@ class App {
   double physics_ms_ = 0.0;
   double frame_physics_seconds_ = 0.0;
   int steps_this_frame_ = 0;
-  FrameStats frame_stats_;  // per frame: simulation, rendering, whole frame (for the exit summary)
+  FrameStats frame_stats_;    // per frame: simulation, rendering, whole frame (for the exit summary)
+  sound::SoundSystem sound_;  // heard after every tick (sound/sound_system.h)
 };
 
 }  // namespace game

@@ -254,6 +254,33 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
   for (std::uint32_t i = 0; i < p.size(); ++i) p.v[i] += dv + perp(p.x[i] - m.centroid) * dw;
 }
 
+// Adds this substep's contact impulses and slides to the tick's figures (TickContacts): read only,
+// before the velocity pass, while the records still hold what the positions solve found.
+void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
+  TickContacts& sum = t.tick_contacts;
+  const Particles& p = t.particles;
+  const double impulse_per_lambda = t.particle_mass() / ctx.h;  // J = m·λ_n/h
+  const auto& props = ctx.rigid->props();
+  t.for_each_contact([&](std::uint32_t i) {
+    const ContactRecord& c = t.contacts[i];
+    if (!c.active) return;
+    const double j = c.lambda_n * impulse_per_lambda;
+    if (c.tire >= 0)
+      sum.tire += j;
+    else if (c.prop >= 0 && props[static_cast<std::size_t>(c.prop)].spec.type != PropType::static_body)
+      sum.prop += j;
+    else
+      sum.ground += j;
+    if (c.tire >= 0 || c.stuck) return;
+    const Vec2 v = (p.x[i] - p.x_prev[i]) / ctx.h - c.surface_velocity;
+    sum.slip_speed = std::max(sum.slip_speed, length(v - c.normal * dot(v, c.normal)));
+  });
+  // Gauss–Seidel's contacts between treads: λ per tread particle, already m·distance.
+  double soft = 0.0;
+  for (const double l : t.soft_lambda) soft += l;
+  sum.tire += soft / ctx.h;
+}
+
 void update_velocities(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   derive_velocities(p, ctx.h);
@@ -299,6 +326,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   if (t.control.jump && t.grounded())
     for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
   t.control.jump = false;
+  t.tick_contacts = TickContacts{};
 }
 
 void begin_substep(Tire& t, const SubstepContext& ctx) {
@@ -371,6 +399,7 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
 }
 
 void end_substep(Tire& t, const SubstepContext& ctx) {
+  record_tick_contacts(t, ctx);
   update_velocities(t, ctx);
   // A tire that started the substep finite ends it finite. (One that did not, say a NaN put in
   // from outside, is the world's divergence guard's to reset after the tick.)
