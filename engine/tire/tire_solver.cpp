@@ -255,12 +255,16 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
 }
 
 // Adds this substep's contact impulses and slides to the tick's figures (TickContacts): read only,
-// before the velocity pass, while the records still hold what the positions solve found.
+// before the velocity pass (which derives the velocities from the positions and applies friction),
+// while the records still hold what the positions solve found.
 void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
   TickContacts& sum = t.tick_contacts;
   const Particles& p = t.particles;
   const double impulse_per_lambda = t.particle_mass() / ctx.h;  // J = m·λ_n/h
   const auto& props = ctx.rigid->props();
+  bool moving = false;  // the rigid motion below is made on the first sliding contact
+  Vec2 centre, velocity;
+  double omega = 0.0;
   t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& c = t.contacts[i];
     if (!c.active) return;
@@ -272,7 +276,27 @@ void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
     else
       sum.ground += j;
     if (c.tire >= 0 || c.stuck) return;
-    const Vec2 v = (p.x[i] - p.x_prev[i]) / ctx.h - c.surface_velocity;
+    // The slide of the tire as a rigid body at the contact (its hub's velocity and its spin there),
+    // not of the particle: a straight landing spreads the tread sideways, which is no skid.
+    if (!moving) {
+      moving = true;
+      Vec2 hub;
+      for (std::uint32_t k = 0; k < p.size(); ++k) {
+        hub += p.x[k];
+        velocity += p.x[k] - p.x_prev[k];
+      }
+      hub = hub / static_cast<double>(p.size());
+      velocity = velocity / (static_cast<double>(p.size()) * ctx.h);
+      double momentum = 0.0, inertia = 0.0;
+      for (std::uint32_t k = 0; k < p.size(); ++k) {
+        const Vec2 r = p.x[k] - hub;
+        momentum += cross(r, (p.x[k] - p.x_prev[k]) / ctx.h - velocity);
+        inertia += length_squared(r);
+      }
+      omega = inertia > 0.0 ? momentum / inertia : 0.0;
+      centre = hub;
+    }
+    const Vec2 v = velocity + perp(p.x[i] - centre) * omega - c.surface_velocity;
     sum.slip_speed = std::max(sum.slip_speed, length(v - c.normal * dot(v, c.normal)));
   });
   // Gauss–Seidel's contacts between treads: λ per tread particle, already m·distance.

@@ -70,7 +70,8 @@ struct TickContacts {
   double prop = 0.0;    // dynamic and kinematic props (N·s)
   double tire = 0.0;    // other tires (N·s)
   // The fastest slide of a contact with a surface under kinetic friction (static friction did not
-  // hold it): its tangential speed relative to the surface (m/s); 0 when every contact held.
+  // hold it): the tangential speed, relative to the surface, of the tire's rigid motion (hub and
+  // spin) at that contact, before friction acts (m/s); 0 when every contact held.
   double slip_speed = 0.0;
 };
 
