@@ -37,7 +37,7 @@ void SoundSystem::after_tick(const tire::LevelSession& session, const tire::Tick
 void SoundSystem::new_level() {
   extractor_.reset();
   output_.lock();
-  mixer_->clear();
+  mixer_->end_held();
   output_.unlock();
 }
 

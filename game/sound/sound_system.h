@@ -35,7 +35,7 @@ class SoundSystem {
 
   // After each tick of `session`, driven by `input`.
   void after_tick(const tire::LevelSession& session, const tire::TickInput& input);
-  // A new world: forget its tires and silence what rings.
+  // A new world: forget its tires and end their held sounds.
   void new_level();
   // While the game stands still (paused, a menu), held sounds must not drone on.
   void set_paused(bool paused) { output_.set_paused(paused); }

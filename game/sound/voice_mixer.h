@@ -51,8 +51,11 @@ class VoiceMixer {
   // Ages the one-shots by `dt`, ends the held sounds not renewed this tick, and picks the voices
   // to mix.
   MixStats end_tick(double dt);
-  // Forgets every voice (a new level).
-  void clear() { voices_.clear(); }
+  // Ends the held sounds (a new level: its tires, and their ids, are new); one-shots ring out, so a
+  // win's jingle is not cut by the next level.
+  void end_held() {
+    std::erase_if(voices_, [](const Voice& v) { return is_held(v.kind); });
+  }
   std::size_t voices() const { return voices_.size(); }
 
   // Audio thread: mixes the chosen voices into `out` (mono, `frames` samples; overwritten). Never
