@@ -156,8 +156,10 @@ class App {
   double physics_ms_ = 0.0;
   double frame_physics_seconds_ = 0.0;
   int steps_this_frame_ = 0;
-  FrameStats frame_stats_;    // per frame: simulation, rendering, whole frame (for the exit summary)
-  sound::SoundSystem sound_;  // heard after every tick (sound/sound_system.h)
+  FrameStats frame_stats_;  // per frame: simulation, rendering, whole frame (for the exit summary)
+
+  // Heard after every tick (sound/sound_system.h).
+  sound::SoundSystem sound_;
 };
 
 }  // namespace game

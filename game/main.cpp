@@ -40,9 +40,8 @@ int main(int argc, char** argv) {
   CLI::App cli{
       "Soft tire: roll a deformable XPBD tire through a level.\n"
       "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
-      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor, M mute. Mouse: click "
-      "spawns a "
-      "tire, drag grabs one.",
+      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor, M mute.\n"
+      "Mouse: click spawns a tire, drag grabs one.",
       "tire-game"};
   std::string level;
   std::string levels_dir = TIRE_LEVELS_DIR;

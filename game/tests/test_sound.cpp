@@ -194,7 +194,7 @@ TEST_CASE("the soft limiter is linear below its knee and never reaches full scal
   CHECK(soft_limit(0.9f) > soft_limit(0.8f));
 }
 
-TEST_CASE("muted, the mixer renders silence; the volume scales what it renders", "[sound]") {
+TEST_CASE("muted, the mixer renders silence, and its volume scales what it renders", "[sound]") {
   const SoundBank bank;
   const auto rms = [&](double volume, bool muted) {
     VoiceMixer mixer(bank);
