@@ -148,6 +148,20 @@ TEST_CASE("level 01 played to its flag ends with the win sound", "[sound]") {
   CHECK(of_kind(events, SoundKind::lose).empty());
 }
 
+TEST_CASE("a new checkpoint sounds once", "[sound]") {
+  auto session = session_of(test_level("resting.json"));
+  EventExtractor extractor;
+  std::vector<SoundEvent> events;
+  for (int tick = 0; tick < 5; ++tick) {
+    if (tick == 2) session->set_checkpoint({1.0, 1.0});  // what the script's checkpoint action does
+    session->step({});
+    extractor.after_tick(*session, {}, events);
+  }
+  const auto checkpoints = of_kind(events, SoundKind::checkpoint);
+  REQUIRE(checkpoints.size() == 1);
+  CHECK(checkpoints[0].tick == 3);
+}
+
 TEST_CASE("the mixer plays only the loudest kMaxVoices of 300 loud impacts", "[sound]") {
   const SoundBank bank;
   VoiceMixer mixer(bank);
