@@ -35,6 +35,7 @@ App::~App() {
   // The scripted pad first: closing the controllers may shut SDL's joysticks down, its handle too.
   virtual_pad_.detach();
   gamepads_.close_all();
+  sound_.close();  // before SDL_Quit
   imgui_.reset();
   world_renderer_.release();
   draw_.reset();
@@ -131,6 +132,7 @@ void App::after_level_change() {
   best_runs_.level_started(session_.path(), session_.level_ptr(), messages);
   best_runs_.ticked(session_.world().tick());
   for (const std::string& m : messages) warn(m);
+  sound_.new_level();
   if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
 }
 
@@ -333,6 +335,7 @@ void App::key_down(SDL_Scancode k) {
                                   : "no ghost: progress is off");
       }
       break;
+    case SDL_SCANCODE_M: warn(sound_.toggle_mute() ? "sound off (M)" : "sound on (M)"); break;
     case SDL_SCANCODE_SPACE:
     case SDL_SCANCODE_UP:
     case SDL_SCANCODE_W: pending_jump_ = true; break;
@@ -393,6 +396,7 @@ void App::step_once() {
   const Uint64 start = SDL_GetPerformanceCounter();
   session_.step(input);
   frame_physics_seconds_ += seconds_since(start);
+  sound_.after_tick(session_.level_session(), input);
   pending_jump_ = false;
   ++steps_this_frame_;
   for (const std::string& w : session_.take_warnings()) warn(w);
@@ -591,6 +595,7 @@ std::optional<int> App::start() {
       SDL_PumpEvents();  // SDL takes in the pad at rest before the script moves it
     }
   }
+  for (const std::string& problem : sound_.open(options_.sound)) warn(problem);
   if (!edit) after_level_change();
   levels_ = scan_levels(options_.levels_dir);
 
@@ -639,6 +644,7 @@ bool App::frame() {
   // --frames: every frame is exactly one tick, so automated runs are reproducible.
   const double frame_seconds =
       options_.frames ? (session_.loaded() ? session_.world().config().dt : 1.0 / 60.0) : wall;
+  sound_.set_paused(editing_ || paused_ || menu_open_);
   if (!editing_) advance(frame_seconds);
   physics_ms_ = physics_ms_ * 0.9 + 0.1 * frame_physics_seconds_ * 1000.0;
   if (!editing_ && hot_reload_.poll(now_)) {
@@ -720,6 +726,8 @@ std::string App::summary_json(long long frames) const {
                        {"time", run_result_->time}};
   }
   out["asleep"] = session_.world().asleep_count();
+  out["sound"] = {
+      {"device", sound_.device_open()}, {"events", sound_.events()}, {"max_voices", sound_.max_playing()}};
   // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
   // (World::step), the rendering (drawing, ImGui, present) and the whole frame.
   const auto stats = [](const TimeStats& t) {

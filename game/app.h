@@ -28,6 +28,7 @@
 #include "pad_script.h"
 #include "renderer.h"
 #include "session_recorder.h"
+#include "sound/sound_system.h"
 
 namespace game {
 
@@ -42,6 +43,7 @@ struct GameOptions {
   std::vector<PadPress> pads;        // a scripted virtual game controller (--pad)
   // Where progress.json and the ghosts are kept; nullopt: neither read nor written (--no-progress).
   std::optional<std::filesystem::path> data_dir;
+  sound::SoundOptions sound;         // --volume, --audio-log
 };
 
 // How many frames the exit summary's frame times cover at most: all of a --frames run up to this,
@@ -172,6 +174,8 @@ class App {
   BestRuns best_runs_;
   GhostRenderer ghost_renderer_;
   std::optional<RunResult> run_result_;  // the finished level's time and whether it is a best
+  // Heard after every tick (sound/sound_system.h).
+  sound::SoundSystem sound_;
 };
 
 }  // namespace game

@@ -29,6 +29,7 @@ const char* const kKeys[][2] = {
     {"F3", "debug drawing (sleeping tires darker)"},
     {"F5", "save a replay of this session into replays/"},
     {"E / F6", "edit this level (and back to playing it)"},
+    {"M", "mute / unmute the sound"},
     {"Left click (empty space)", "spawn a tire"},
     {"Left drag (on a tire)", "grab and pull it"},
 };

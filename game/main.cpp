@@ -1,5 +1,5 @@
 // tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
-//           [--edit FILE] [--replay FILE] [--pad SPEC]... [--no-progress]
+//           [--edit FILE] [--replay FILE] [--pad SPEC]... [--no-progress] [--volume V] [--audio-log FILE]
 //
 // The same program runs in the browser (README "In a browser"): there the page's query string is
 // the command line (game/web/shell.html), and the browser's main loop calls App::frame() once per
@@ -41,9 +41,8 @@ int main(int argc, char** argv) {
   CLI::App cli{
       "Soft tire: roll a deformable XPBD tire through a level.\n"
       "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
-      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor, G the ghost. Mouse: "
-      "click "
-      "spawns a tire, drag grabs one.\n"
+      "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor, G the ghost,\n"
+      "M mute. Mouse: click spawns a tire, drag grabs one.\n"
       "Gamepad: left stick/d-pad steer, A jump, Start pause, Back restart, shoulders next/previous level.\n"
       "Progress and ghosts: $XDG_DATA_HOME/soft-tire/ (else ~/.local/share/soft-tire/).",
       "tire-game"};
@@ -78,6 +77,13 @@ int main(int argc, char** argv) {
   cli.add_option("--replay", replay,
                  "run the replay FILE headless (no window) and print the result as one line of JSON; "
                  "exit 0 pass, 1 fail, 2 unreadable");
+  double volume = 0.8;
+  cli.add_option("--volume", volume, "sound volume, 0 (silent) to 1")
+      ->transform(tire_tools::number_in({0, 1}))
+      ->capture_default_str();
+  std::string audio_log;
+  cli.add_option("--audio-log", audio_log,
+                 "write every sound event to FILE as one line of JSON (tick, kind, gain, pitch), streamed");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -104,6 +110,8 @@ int main(int argc, char** argv) {
   options.screenshot = screenshot;
   options.record = record;
   options.edit = edit;
+  options.sound.volume = volume;
+  options.sound.log_file = audio_log;
   for (const std::string& spec : presses) {
     std::string error;
     const auto press = game::parse_key_press(spec, error);

@@ -90,6 +90,7 @@ void Tire::reset() {
   area_lambda = 0.0;
   rim_area_lambda = 0.0;
   control = {};
+  tick_contacts = {};
 }
 
 namespace {

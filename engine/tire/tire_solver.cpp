@@ -254,6 +254,57 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
   for (std::uint32_t i = 0; i < p.size(); ++i) p.v[i] += dv + perp(p.x[i] - m.centroid) * dw;
 }
 
+// Adds this substep's contact impulses and slides to the tick's figures (TickContacts): read only,
+// before the velocity pass (which derives the velocities from the positions and applies friction),
+// while the records still hold what the positions solve found.
+void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
+  TickContacts& sum = t.tick_contacts;
+  const Particles& p = t.particles;
+  const double impulse_per_lambda = t.particle_mass() / ctx.h;  // J = m·λ_n/h
+  const auto& props = ctx.rigid->props();
+  bool moving = false;  // the rigid motion below is made on the first sliding contact
+  Vec2 centre, velocity;
+  double omega = 0.0;
+  t.for_each_contact([&](std::uint32_t i) {
+    const ContactRecord& c = t.contacts[i];
+    if (!c.active) return;
+    const double j = c.lambda_n * impulse_per_lambda;
+    if (c.tire >= 0)
+      sum.tire += j;
+    else if (c.prop >= 0 && props[static_cast<std::size_t>(c.prop)].spec.type != PropType::static_body)
+      sum.prop += j;
+    else
+      sum.ground += j;
+    if (c.tire >= 0 || c.stuck) return;
+    // The slide of the tire as a rigid body at the contact (its hub's velocity and its spin there),
+    // not of the particle: a straight landing spreads the tread sideways, which is no skid.
+    if (!moving) {
+      moving = true;
+      Vec2 hub;
+      for (std::uint32_t k = 0; k < p.size(); ++k) {
+        hub += p.x[k];
+        velocity += p.x[k] - p.x_prev[k];
+      }
+      hub = hub / static_cast<double>(p.size());
+      velocity = velocity / (static_cast<double>(p.size()) * ctx.h);
+      double momentum = 0.0, inertia = 0.0;
+      for (std::uint32_t k = 0; k < p.size(); ++k) {
+        const Vec2 r = p.x[k] - hub;
+        momentum += cross(r, (p.x[k] - p.x_prev[k]) / ctx.h - velocity);
+        inertia += length_squared(r);
+      }
+      omega = inertia > 0.0 ? momentum / inertia : 0.0;
+      centre = hub;
+    }
+    const Vec2 v = velocity + perp(p.x[i] - centre) * omega - c.surface_velocity;
+    sum.slip_speed = std::max(sum.slip_speed, length(v - c.normal * dot(v, c.normal)));
+  });
+  // Gauss–Seidel's contacts between treads: λ per tread particle, already m·distance.
+  double soft = 0.0;
+  for (const double l : t.soft_lambda) soft += l;
+  sum.tire += soft / ctx.h;
+}
+
 void update_velocities(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   derive_velocities(p, ctx.h);
@@ -299,6 +350,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   if (t.control.jump && t.grounded())
     for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
   t.control.jump = false;
+  t.tick_contacts = TickContacts{};
 }
 
 void begin_substep(Tire& t, const SubstepContext& ctx) {
@@ -371,6 +423,7 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
 }
 
 void end_substep(Tire& t, const SubstepContext& ctx) {
+  record_tick_contacts(t, ctx);
   update_velocities(t, ctx);
   // A tire that started the substep finite ends it finite. (One that did not, say a NaN put in
   // from outside, is the world's divergence guard's to reset after the tick.)

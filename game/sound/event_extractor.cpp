@@ -1,0 +1,141 @@
+#include "event_extractor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace game::sound {
+
+std::string_view kind_name(SoundKind kind) {
+  switch (kind) {
+    case SoundKind::impact: return "impact";
+    case SoundKind::roll: return "roll";
+    case SoundKind::skid: return "skid";
+    case SoundKind::jump: return "jump";
+    case SoundKind::checkpoint: return "checkpoint";
+    case SoundKind::message: return "message";
+    case SoundKind::win: return "win";
+    case SoundKind::lose: return "lose";
+  }
+  return "?";
+}
+
+std::string_view surface_name(Surface surface) {
+  switch (surface) {
+    case Surface::none: return "none";
+    case Surface::ground: return "ground";
+    case Surface::prop: return "prop";
+    case Surface::tire: return "tire";
+  }
+  return "?";
+}
+
+namespace {
+
+// A smaller tire sounds higher: pitch scales with 1/√r about the usual 0.5 m.
+double size_pitch(const tire::Tire& t) { return std::sqrt(0.5 / std::max(t.spec.outer_radius, 0.01)); }
+
+}  // namespace
+
+void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Surface surface,
+                            std::uint64_t tick, std::vector<SoundEvent>& out) {
+  if (!rise.rising && impulse > rise.last) {
+    rise.rising = true;
+    rise.before = rise.last;
+  } else if (rise.rising && impulse <= rise.last) {
+    // The rise peaked last tick: its size is the hit.
+    rise.rising = false;
+    const double hit = rise.last - rise.before;  // N·s
+    if (hit >= tuning_.impact_min_speed * t.total_mass()) {
+      const double strength = std::min(1.0, hit / tuning_.impact_full);
+      // Harder hits are louder and deeper; a prop knocks a little higher, a tire thuds softer.
+      const double surface_gain = surface == Surface::tire ? 0.7 : 1.0;
+      const double surface_pitch = surface == Surface::prop ? 1.3 : surface == Surface::tire ? 0.85 : 1.0;
+      SoundEvent e;
+      e.tick = tick;
+      e.kind = SoundKind::impact;
+      e.surface = surface;
+      e.tire = t.id;
+      e.gain = surface_gain * std::pow(strength, 0.6);
+      e.pitch = std::clamp((1.25 - 0.5 * strength) * surface_pitch * size_pitch(t), 0.4, 3.0);
+      out.push_back(e);
+    }
+  }
+  rise.last = impulse;
+}
+
+void EventExtractor::impacts(const tire::Tire& t, std::uint64_t tick, std::vector<SoundEvent>& out) {
+  TireState& s = tires_[t.id];
+  const tire::TickContacts& c = t.tick_contacts;
+  follow(s.surfaces[0], c.ground, t, Surface::ground, tick, out);
+  follow(s.surfaces[1], c.prop, t, Surface::prop, tick, out);
+  follow(s.surfaces[2], c.tire, t, Surface::tire, tick, out);
+}
+
+void EventExtractor::after_tick(const tire::World& world, const tire::TickInput& input,
+                                std::vector<SoundEvent>& out) {
+  const std::uint64_t tick = world.tick();
+  for (const tire::Tire& t : world.tires()) {
+    if (t.asleep) continue;  // not simulated: silent, and its figures are those it fell asleep with
+    impacts(t, tick, out);
+    const double pitch_scale = size_pitch(t);
+    if (t.grounded()) {
+      const double omega = std::abs(t.angular_velocity());
+      const double tread_speed = omega * t.spec.outer_radius;
+      if (tread_speed >= tuning_.roll_min_speed) {
+        SoundEvent e{tick, SoundKind::roll, Surface::ground, t.id};
+        e.gain = 0.5 * std::min(1.0, tread_speed / tuning_.roll_full_speed);
+        e.pitch = std::clamp((0.5 + 0.1 * omega) * pitch_scale, 0.3, 3.0);
+        out.push_back(e);
+      }
+    }
+    if (const double slip = t.tick_contacts.slip_speed; slip >= tuning_.skid_min_speed) {
+      SoundEvent e{tick, SoundKind::skid, Surface::ground, t.id};
+      e.gain = 0.6 * std::min(1.0, slip / tuning_.skid_full_speed);
+      e.pitch = std::clamp((0.85 + 0.04 * slip) * pitch_scale, 0.4, 2.5);
+      out.push_back(e);
+    }
+  }
+  // Forget tires that are gone, now and then (ids are never reused).
+  if (tires_.size() > 2 * world.tires().size() + 16) {
+    std::erase_if(tires_, [&](const auto& entry) {
+      return std::none_of(world.tires().begin(), world.tires().end(),
+                          [&](const tire::Tire& t) { return t.id == entry.first; });
+    });
+  }
+  const tire::Tire* player = world.player();
+  if (input.jump && player_grounded_ && player)
+    out.push_back({tick, SoundKind::jump, Surface::none, -1, 0.7, 1.0});
+  player_grounded_ = player && player->grounded();
+}
+
+void EventExtractor::after_tick(const tire::LevelSession& session, const tire::TickInput& input,
+                                std::vector<SoundEvent>& out) {
+  after_tick(session.world(), input, out);
+  const std::uint64_t tick = session.world().tick();
+  if (session.checkpoint() && session.checkpoint() != checkpoint_)
+    out.push_back({tick, SoundKind::checkpoint, Surface::none, -1, 0.8, 1.0});
+  checkpoint_ = session.checkpoint();
+  for (const tire::ScriptMessage& m : session.messages()) {
+    const bool seen = std::any_of(messages_.begin(), messages_.end(), [&](const tire::ScriptMessage& o) {
+      return o.text == m.text && o.until_tick == m.until_tick;
+    });
+    if (!seen) out.push_back({tick, SoundKind::message, Surface::none, -1, 0.5, 1.0});
+  }
+  messages_ = session.messages();
+  const tire::ScriptStatus status = session.status();
+  if (status != status_ && status == tire::ScriptStatus::won)
+    out.push_back({tick, SoundKind::win, Surface::none, -1, 0.9, 1.0});
+  if (status != status_ && status == tire::ScriptStatus::lost)
+    out.push_back({tick, SoundKind::lose, Surface::none, -1, 0.9, 1.0});
+  status_ = status;
+}
+
+void EventExtractor::reset() {
+  tires_.clear();
+  player_grounded_ = false;
+  checkpoint_.reset();
+  messages_.clear();
+  status_ = tire::ScriptStatus::running;
+}
+
+}  // namespace game::sound

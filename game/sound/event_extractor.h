@@ -1,0 +1,69 @@
+// The world → sound events: after each tick, what the tires' contacts did (Tire::tick_contacts, the
+// XPBD multipliers of the step as impulses) and what the level's script did become SoundEvents.
+//  - An impact is a sharp rise of a tire's normal impulse against one kind of surface: a contact
+//    that starts, or a harder hit on one that holds. A rise is followed to its peak (a landing lasts
+//    a tick or two) and played there if its size, as a change of the tire's velocity (rise / mass),
+//    passes kImpactMinSpeed: steady support (weight × dt a tick) never does. Loudness and pitch
+//    follow the rise in N·s.
+//  - A grounded, awake tire rolls: pitch from its angular speed. A contact sliding under kinetic
+//    friction faster than kSkidMinSpeed skids.
+//  - The player's jump, a new checkpoint, a new script message, won and lost.
+// No SDL: tested on its own (game/tests/test_sound.cpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "sound_event.h"
+#include "tire/session/level_session.h"
+
+namespace game::sound {
+
+// The thresholds and scales of the extraction, in one place.
+struct ExtractorTuning {
+  double impact_min_speed = 0.5;  // m/s: a rise below this change of the tire's velocity is silent
+  double impact_full = 60.0;      // N·s: a rise this big plays at gain 1 (10 kg stopped from 6 m/s)
+  double roll_min_speed = 0.2;    // m/s of tread speed (|ω|·r) below which the tread is silent
+  double roll_full_speed = 10.0;  // m/s of tread speed at gain 1
+  double skid_min_speed = 0.6;    // m/s of sliding below which there is no skid
+  double skid_full_speed = 6.0;   // m/s of sliding at gain 1
+};
+
+class EventExtractor {
+ public:
+  explicit EventExtractor(ExtractorTuning tuning = {}) : tuning_(tuning) {}
+
+  // After a tick of `world`, in which the player's input was `input`: appends its events to `out`.
+  void after_tick(const tire::World& world, const tire::TickInput& input, std::vector<SoundEvent>& out);
+  // The same, with the script's events (checkpoint, message, won, lost) from `session`.
+  void after_tick(const tire::LevelSession& session, const tire::TickInput& input,
+                  std::vector<SoundEvent>& out);
+  // A new world (level load, restart): forget every tire and the script's state.
+  void reset();
+
+ private:
+  // What a tire's contacts did up to the last tick, per surface.
+  struct Rise {
+    double before = 0.0;  // the impulse a tick before the rise began (N·s)
+    double last = 0.0;    // the last tick's impulse
+    bool rising = false;
+  };
+  struct TireState {
+    Rise surfaces[3];  // ground, prop, tire
+  };
+  void impacts(const tire::Tire& t, std::uint64_t tick, std::vector<SoundEvent>& out);
+  void follow(Rise& rise, double impulse, const tire::Tire& t, Surface surface, std::uint64_t tick,
+              std::vector<SoundEvent>& out);
+
+  ExtractorTuning tuning_;
+  std::unordered_map<tire::TireId, TireState> tires_;
+  bool player_grounded_ = false;  // before this tick's step: what the jump needs
+  std::optional<tire::Vec2> checkpoint_;
+  std::vector<tire::ScriptMessage> messages_;
+  tire::ScriptStatus status_ = tire::ScriptStatus::running;
+};
+
+}  // namespace game::sound

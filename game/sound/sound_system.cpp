@@ -1,0 +1,51 @@
+#include "sound_system.h"
+
+#include <algorithm>
+
+namespace game::sound {
+
+SoundSystem::SoundSystem()
+    : bank_(std::make_unique<SoundBank>()), mixer_(std::make_unique<VoiceMixer>(*bank_)) {}
+
+std::vector<std::string> SoundSystem::open(const SoundOptions& options) {
+  std::vector<std::string> problems;
+  mixer_->set_volume(options.volume);
+  std::string error;
+  if (!options.log_file.empty() && !log_.open(options.log_file, error)) problems.push_back(error);
+  if (!output_.open(*mixer_, error)) problems.push_back("no sound: " + error);
+  return problems;
+}
+
+void SoundSystem::close() {
+  output_.close();
+  log_.close();
+}
+
+void SoundSystem::after_tick(const tire::LevelSession& session, const tire::TickInput& input) {
+  tick_events_.clear();
+  extractor_.after_tick(session, input, tick_events_);
+  for (const SoundEvent& e : tick_events_) log_.write(e);
+  events_ += tick_events_.size();
+  output_.lock();
+  for (const SoundEvent& e : tick_events_) mixer_->play(e);
+  const MixStats stats = mixer_->end_tick(session.world().config().dt);
+  output_.unlock();
+  log_.write_mix(session.world().tick(), stats);
+  max_playing_ = std::max(max_playing_, stats.playing);
+}
+
+void SoundSystem::new_level() {
+  extractor_.reset();
+  output_.lock();
+  mixer_->end_held();
+  output_.unlock();
+}
+
+bool SoundSystem::toggle_mute() {
+  output_.lock();
+  mixer_->set_muted(!mixer_->muted());
+  output_.unlock();
+  return mixer_->muted();
+}
+
+}  // namespace game::sound

@@ -1,0 +1,271 @@
+// The game's sound without SDL: the world → sound events (event_extractor.h), what the engine
+// exposes for it (Tire::tick_contacts), the voice mixer's limit and limiter, the audio log.
+#define CATCH_CONFIG_MAIN
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sound/audio_log.h"
+#include "sound/event_extractor.h"
+#include "sound/sound_bank.h"
+#include "sound/voice_mixer.h"
+#include "tire/io/level.h"
+
+using namespace game::sound;
+
+namespace {
+
+std::unique_ptr<tire::LevelSession> session_of(const std::string& file) {
+  tire::LevelLoad load = tire::load_level_file(file);
+  if (!load.level) throw std::runtime_error(load.errors.front());
+  return tire::make_session(*load.level);
+}
+
+std::string test_level(const std::string& name) {
+  return std::string(TIRE_GAME_TESTS_DIR) + "/levels/" + name;
+}
+std::string level(const std::string& name) { return std::string(TIRE_LEVELS_DIR) + "/" + name; }
+
+// Steps `session` `ticks` ticks with `input` (its jump at tick `jump_at` only), extracting events.
+std::vector<SoundEvent> play(tire::LevelSession& session, int ticks, tire::TickInput input = {},
+                             int jump_at = -1) {
+  EventExtractor extractor;
+  std::vector<SoundEvent> events;
+  for (int i = 0; i < ticks; ++i) {
+    tire::TickInput in = input;
+    in.jump = i == jump_at;
+    session.step(in);
+    extractor.after_tick(session, in, events);
+  }
+  return events;
+}
+
+std::vector<SoundEvent> of_kind(const std::vector<SoundEvent>& events, SoundKind kind) {
+  std::vector<SoundEvent> out;
+  std::copy_if(events.begin(), events.end(), std::back_inserter(out),
+               [&](const SoundEvent& e) { return e.kind == kind; });
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a resting tire's tick contacts report its weight times dt against the ground", "[sound]") {
+  auto session = session_of(test_level("resting.json"));
+  play(*session, 120);
+  const tire::Tire& t = session->world().tires().front();
+  const double weight_dt = t.total_mass() * 9.81 * session->world().config().dt;
+  CHECK(t.tick_contacts.ground == Approx(weight_dt).epsilon(0.02));
+  CHECK(t.tick_contacts.prop == 0.0);
+  CHECK(t.tick_contacts.tire == 0.0);
+  CHECK(t.tick_contacts.slip_speed < 0.05);
+}
+
+TEST_CASE("a tire dropped from 3 m makes a louder first impact than one dropped from 0.3 m", "[sound]") {
+  auto high = session_of(test_level("drop-3m.json"));
+  auto low = session_of(test_level("drop-0.3m.json"));
+  const auto high_events = play(*high, 120);
+  const auto high_hits = of_kind(high_events, SoundKind::impact);
+  const auto low_hits = of_kind(play(*low, 120), SoundKind::impact);
+  REQUIRE(!high_hits.empty());
+  REQUIRE(!low_hits.empty());
+  INFO("3 m: gain " << high_hits[0].gain << " pitch " << high_hits[0].pitch << " at tick "
+                    << high_hits[0].tick);
+  INFO("0.3 m: gain " << low_hits[0].gain << " pitch " << low_hits[0].pitch << " at tick "
+                      << low_hits[0].tick);
+  CHECK(high_hits[0].surface == Surface::ground);
+  CHECK(high_hits[0].gain > 1.3 * low_hits[0].gain);
+  CHECK(high_hits[0].pitch < low_hits[0].pitch);  // a harder hit is deeper
+  // It lands about when free fall says: 3 m takes 0.78 s (47 ticks).
+  CHECK(high_hits[0].tick >= 44);
+  CHECK(high_hits[0].tick <= 52);
+  // A straight landing spreads the tread sideways over the ground: that is no skid.
+  CHECK(of_kind(high_events, SoundKind::skid).empty());
+}
+
+TEST_CASE("a tire resting 5 s makes no impact sound after it settles", "[sound]") {
+  auto session = session_of(test_level("resting.json"));
+  const auto events = play(*session, 360);
+  REQUIRE(!session->world().tires().front().asleep);  // sleeping is off: it is simulated throughout
+  for (const SoundEvent& e : of_kind(events, SoundKind::impact)) {
+    INFO("impact at tick " << e.tick << " gain " << e.gain);
+    CHECK(e.tick <= 60);
+  }
+  CHECK(of_kind(events, SoundKind::roll).empty());
+  CHECK(of_kind(events, SoundKind::skid).empty());
+}
+
+TEST_CASE("a tire landing on another makes a tire impact", "[sound]") {
+  auto session = session_of(test_level("resting.json"));
+  tire::TireSpec spec = session->world().tires().front().spec;
+  spec.player = false;
+  spec.position = {0.0, 2.6};
+  session->world().add_tire(spec);
+  const auto hits = of_kind(play(*session, 120), SoundKind::impact);
+  CHECK(
+      std::any_of(hits.begin(), hits.end(), [](const SoundEvent& e) { return e.surface == Surface::tire; }));
+}
+
+TEST_CASE("a rolling tire's tread sound rises in pitch as it speeds up, and the jump sounds", "[sound]") {
+  auto session = session_of(level("01-first-roll.json"));
+  tire::TickInput right;
+  right.steer = 1.0;
+  const auto events = play(*session, 240, right, 100);
+  const auto rolls = of_kind(events, SoundKind::roll);
+  REQUIRE(rolls.size() > 100);
+  CHECK(rolls.back().pitch > rolls.front().pitch);
+  CHECK(rolls.back().gain > rolls.front().gain);
+  const auto jumps = of_kind(events, SoundKind::jump);
+  REQUIRE(jumps.size() == 1);
+  CHECK(jumps[0].tick == 101);
+  CHECK(of_kind(events, SoundKind::message).size() == 1);  // the level's opening message
+}
+
+TEST_CASE("a tire set spinning on the ground skids until it grips", "[sound]") {
+  auto session = session_of(test_level("resting.json"));
+  session->world().reset_tire(0);
+  tire::Tire& t = *session->world().find_tire(0);
+  const tire::RigidMotion m = t.rigid_motion();
+  for (std::size_t i = 0; i < t.particles.size(); ++i)
+    t.particles.v[i] += tire::perp(t.particles.x[i] - m.centroid) * -30.0;
+  const auto skids = of_kind(play(*session, 60), SoundKind::skid);
+  REQUIRE(!skids.empty());
+  CHECK(skids.front().tick <= 3);
+  CHECK(skids.front().gain > 0.3);
+}
+
+TEST_CASE("level 01 played to its flag ends with the win sound", "[sound]") {
+  auto session = session_of(level("01-first-roll.json"));
+  tire::TickInput right;
+  right.steer = 1.0;
+  const auto events = play(*session, 900, right);
+  REQUIRE(session->status() == tire::ScriptStatus::won);
+  CHECK(of_kind(events, SoundKind::win).size() == 1);
+  CHECK(of_kind(events, SoundKind::lose).empty());
+}
+
+TEST_CASE("a new checkpoint sounds once", "[sound]") {
+  auto session = session_of(test_level("resting.json"));
+  EventExtractor extractor;
+  std::vector<SoundEvent> events;
+  for (int tick = 0; tick < 5; ++tick) {
+    if (tick == 2) session->set_checkpoint({1.0, 1.0});  // what the script's checkpoint action does
+    session->step({});
+    extractor.after_tick(*session, {}, events);
+  }
+  const auto checkpoints = of_kind(events, SoundKind::checkpoint);
+  REQUIRE(checkpoints.size() == 1);
+  CHECK(checkpoints[0].tick == 3);
+}
+
+TEST_CASE("the mixer plays only the loudest kMaxVoices of 300 loud impacts", "[sound]") {
+  const SoundBank bank;
+  VoiceMixer mixer(bank);
+  for (int i = 0; i < 300; ++i)
+    mixer.play({1, SoundKind::impact, Surface::ground, i, 0.5 + 0.5 * (i % 100) / 100.0, 1.0});
+  const MixStats stats = mixer.end_tick(1.0 / 60.0);
+  CHECK(stats.playing == kMaxVoices);
+  CHECK(stats.wanted == kVoicePool);  // the pool keeps the loudest kVoicePool; the rest were dropped at once
+  // Held sounds renewed every tick compete with them, the limit holds for as long as they ring.
+  for (int tick = 0; tick < 60; ++tick) {
+    for (int i = 0; i < 50; ++i) mixer.play({2, SoundKind::roll, Surface::ground, i, 0.4, 1.0});
+    CHECK(mixer.end_tick(1.0 / 60.0).playing <= kMaxVoices);
+  }
+}
+
+TEST_CASE("300 loud events mixed stay inside [-1, 1]", "[sound]") {
+  const SoundBank bank;
+  VoiceMixer mixer(bank);
+  mixer.set_volume(1.0);
+  std::vector<float> out(4096);
+  float peak = 0.0f;
+  for (int tick = 0; tick < 30; ++tick) {
+    for (int i = 0; i < 300; ++i) {
+      const auto kind = static_cast<SoundKind>(i % 8);
+      mixer.play({static_cast<std::uint64_t>(tick), kind, Surface::ground, i, 1.0, 0.5 + (i % 7) * 0.25});
+    }
+    mixer.end_tick(1.0 / 60.0);
+    mixer.render(out.data(), out.size());
+    for (const float x : out) {
+      REQUIRE(std::isfinite(x));
+      REQUIRE(std::abs(x) < 1.0f);
+      peak = std::max(peak, std::abs(x));
+    }
+  }
+  CHECK(peak > 0.5f);  // loud: the limiter had work to do
+}
+
+TEST_CASE("the soft limiter is linear below its knee and never reaches full scale", "[sound]") {
+  CHECK(soft_limit(0.3f) == 0.3f);
+  CHECK(soft_limit(-0.5f) == -0.5f);
+  CHECK(soft_limit(1.0f) < 1.0f);
+  CHECK(soft_limit(100.0f) <= 1.0f);
+  CHECK(soft_limit(-100.0f) >= -1.0f);
+  CHECK(soft_limit(0.9f) > soft_limit(0.8f));
+}
+
+TEST_CASE("muted, the mixer renders silence, and its volume scales what it renders", "[sound]") {
+  const SoundBank bank;
+  const auto rms = [&](double volume, bool muted) {
+    VoiceMixer mixer(bank);
+    mixer.set_volume(volume);
+    mixer.set_muted(muted);
+    mixer.play({1, SoundKind::win, Surface::none, -1, 0.5, 1.0});
+    mixer.end_tick(1.0 / 60.0);
+    std::vector<float> out(8192);
+    mixer.render(out.data(), out.size());
+    double sum = 0.0;
+    for (const float x : out) sum += static_cast<double>(x) * x;
+    return std::sqrt(sum / static_cast<double>(out.size()));
+  };
+  CHECK(rms(1.0, true) == 0.0);
+  CHECK(rms(0.0, false) == 0.0);
+  CHECK(rms(1.0, false) > 0.01);
+  CHECK(rms(0.5, false) == Approx(0.5 * rms(1.0, false)).epsilon(0.05));
+}
+
+TEST_CASE("every sound is synthesised inside [-1, 1] and the held ones loop", "[sound]") {
+  const SoundBank bank;
+  for (int k = 0; k < 8; ++k) {
+    const auto kind = static_cast<SoundKind>(k);
+    const Sample& s = bank.sample(kind);
+    INFO(kind_name(kind));
+    CHECK(s.data.size() > 1000);
+    CHECK(s.loop == is_held(kind));
+    CHECK(std::all_of(s.data.begin(), s.data.end(), [](float x) { return std::abs(x) <= 1.0f; }));
+    CHECK(bank.envelope(kind, 0.01, 1.0) > 0.0);
+  }
+}
+
+TEST_CASE("the audio log writes one JSON line per event, held sounds when they start or change", "[sound]") {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "tire-sound-log-test.jsonl";
+  {
+    AudioLog log;
+    std::string error;
+    REQUIRE(log.open(file.string(), error));
+    log.write({5, SoundKind::impact, Surface::prop, 3, 0.75, 1.1});
+    for (std::uint64_t tick = 6; tick < 10; ++tick)
+      log.write({tick, SoundKind::roll, Surface::ground, 0, 0.3, 1.0});
+    log.write({10, SoundKind::roll, Surface::ground, 0, 0.3, 1.5});  // pitch moved: a line
+    log.write_mix(10, {2, 2});
+    log.write_mix(11, {2, 2});  // unchanged: none
+    log.close();
+  }
+  std::ifstream in(file);
+  std::vector<nlohmann::json> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  std::filesystem::remove(file);
+  REQUIRE(lines.size() == 4);
+  CHECK(
+      lines[0] ==
+      nlohmann::json{
+          {"tick", 5}, {"kind", "impact"}, {"surface", "prop"}, {"tire", 3}, {"gain", 0.75}, {"pitch", 1.1}});
+  CHECK(lines[1]["kind"] == "roll");
+  CHECK(lines[1]["tick"] == 6);
+  CHECK(lines[2]["pitch"] == 1.5);
+  CHECK(lines[3] == nlohmann::json{{"tick", 10}, {"kind", "mix"}, {"playing", 2}, {"wanted", 2}});
+}
