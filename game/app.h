@@ -43,7 +43,7 @@ struct GameOptions {
   std::vector<PadPress> pads;        // a scripted virtual game controller (--pad)
   // Where progress.json and the ghosts are kept; nullopt: neither read nor written (--no-progress).
   std::optional<std::filesystem::path> data_dir;
-  sound::SoundOptions sound;         // --volume, --audio-log
+  sound::SoundOptions sound;  // --volume, --audio-log
 };
 
 // How many frames the exit summary's frame times cover at most: all of a --frames run up to this,
