@@ -44,14 +44,11 @@ void Camera::snap(tire::Vec2 target, const tire::Aabb& bounds) {
 void Camera::clamp(const tire::Aabb& bounds) {
   const double hw = width_ * 0.5 / scale_;
   const double hh = height_ * 0.5 / scale_;
-  if (bounds.max.x - bounds.min.x >= 2 * hw)
-    center_.x = std::clamp(center_.x, bounds.min.x + hw, bounds.max.x - hw);
-  else
-    center_.x = 0.5 * (bounds.min.x + bounds.max.x);
-  if (bounds.max.y - bounds.min.y >= 2 * hh)
-    center_.y = std::clamp(center_.y, bounds.min.y + hh, bounds.max.y - hh);
-  else
-    center_.y = bounds.min.y + hh;
+  // Compared as the clamp's own bounds: a level exactly one view across can round to lo > hi.
+  const double lo_x = bounds.min.x + hw, hi_x = bounds.max.x - hw;
+  center_.x = lo_x <= hi_x ? std::clamp(center_.x, lo_x, hi_x) : 0.5 * (bounds.min.x + bounds.max.x);
+  const double lo_y = bounds.min.y + hh, hi_y = bounds.max.y - hh;
+  center_.y = lo_y <= hi_y ? std::clamp(center_.y, lo_y, hi_y) : lo_y;
 }
 
 namespace {
