@@ -1,18 +1,12 @@
 #include "key_script.h"
 
 #include <cctype>
-#include <charconv>
+
+#include "frame_range.h"
 
 namespace game {
 
 namespace {
-
-std::optional<long long> parse_frame(const std::string& text) {
-  long long value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || value < 0) return std::nullopt;
-  return value;
-}
 
 SDL_Scancode scancode_of(const std::string& given) {
   std::string name;
@@ -62,16 +56,14 @@ std::optional<KeyPress> parse_key_press(const std::string& spec, std::string& er
     return std::nullopt;
   }
   const std::string frames = spec.substr(colon + 1);
-  const auto dash = frames.find('-');
-  const auto first = parse_frame(frames.substr(0, dash));
-  const auto last = dash == std::string::npos ? first : parse_frame(frames.substr(dash + 1));
-  if (!first || !last || *last < *first) {
+  const std::optional<FrameRange> range = parse_frame_range(frames);
+  if (!range) {
     error =
         "--press " + spec + ": \"" + frames + "\" is not a frame or an increasing frame range (FIRST-LAST)";
     return std::nullopt;
   }
-  press.first = *first;
-  press.last = *last;
+  press.first = range->first;
+  press.last = range->last;
   return press;
 }
 

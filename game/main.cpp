@@ -112,28 +112,24 @@ int main(int argc, char** argv) {
   options.edit = edit;
   options.sound.volume = volume;
   options.sound.log_file = audio_log;
+  // A bad --press or --pad: the message, and exit 2 (in the page too).
+  const auto bad_spec = [](const std::string& error) {
+    std::cerr << "tire-game: " << error << "\n";
+#ifdef __EMSCRIPTEN__
+    game::web::publish_summary("", 2);
+#endif
+    return 2;
+  };
   for (const std::string& spec : presses) {
     std::string error;
     const auto press = game::parse_key_press(spec, error);
-    if (!press) {
-      std::cerr << "tire-game: " << error << "\n";
-#ifdef __EMSCRIPTEN__
-      game::web::publish_summary("", 2);
-#endif
-      return 2;
-    }
+    if (!press) return bad_spec(error);
     options.keys.add(*press);
   }
   for (const std::string& spec : pads) {
     std::string error;
     const auto press = game::parse_pad_press(spec, error);
-    if (!press) {
-      std::cerr << "tire-game: " << error << "\n";
-#ifdef __EMSCRIPTEN__
-      game::web::publish_summary("", 2);
-#endif
-      return 2;
-    }
+    if (!press) return bad_spec(error);
     options.pads.push_back(*press);
   }
   if (!no_progress) options.data_dir = game::data_dir_from_env();

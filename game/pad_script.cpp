@@ -1,23 +1,12 @@
 #include "pad_script.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
+#include "frame_range.h"
 #include "tire/math/parse_number.h"
 
 namespace game {
-
-namespace {
-
-std::optional<long long> parse_frame(const std::string& text) {
-  long long value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || value < 0) return std::nullopt;
-  return value;
-}
-
-}  // namespace
 
 Sint16 axis_raw(double value) {
   const double v = std::clamp(value, -1.0, 1.0);
@@ -61,13 +50,10 @@ std::optional<PadPress> parse_pad_press(const std::string& spec, std::string& er
                   "...; an axis takes a value: leftx=1)");
   }
   const std::string frames = spec.substr(colon + 1);
-  const auto dash = frames.find('-');
-  const auto first = parse_frame(frames.substr(0, dash));
-  const auto last = dash == std::string::npos ? first : parse_frame(frames.substr(dash + 1));
-  if (!first || !last || *last < *first)
-    return fail("\"" + frames + "\" is not a frame or an increasing frame range (FIRST-LAST)");
-  press.first = *first;
-  press.last = *last;
+  const std::optional<FrameRange> range = parse_frame_range(frames);
+  if (!range) return fail("\"" + frames + "\" is not a frame or an increasing frame range (FIRST-LAST)");
+  press.first = range->first;
+  press.last = range->last;
   return press;
 }
 
