@@ -530,8 +530,11 @@ void App::draw_ui() {
   draw_script_messages(session_.level_session(), imgui_->big_font());
 
   if (show_tuning_) {
-    for (TuneEvent& e : draw_tuning_panel(session_.tuning(), level_tuning_, debug_, &show_tuning_))
+    SoundSettings sound{sound_.volume(), sound_.muted()};
+    for (TuneEvent& e : draw_tuning_panel(session_.tuning(), level_tuning_, debug_, sound, &show_tuning_))
       session_.queue(std::move(e));
+    if (sound.volume != sound_.volume()) sound_.set_volume(sound.volume);
+    if (sound.muted != sound_.muted()) sound_.set_muted(sound.muted);
   }
   if (show_help_) draw_help(&show_help_);
 

@@ -57,7 +57,7 @@ bool int_slider(const char* label, double& value, int min, int max, const char* 
 }  // namespace
 
 std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& level_defaults,
-                                         DebugOptions& debug, bool* open) {
+                                         DebugOptions& debug, SoundSettings& sound, bool* open) {
   Tuning t = current;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos({vp->Size.x - 10.0f, 10.0f}, ImGuiCond_Appearing, {1.0f, 0.0f});
@@ -111,6 +111,12 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
     }
     if (ImGui::Button("Reset to the level's values")) t = level_defaults;
     ImGui::PopItemWidth();
+    if (ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen)) {
+      float volume = static_cast<float>(sound.volume);
+      if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) sound.volume = volume;
+      ImGui::SameLine();
+      ImGui::Checkbox("mute (M)", &sound.muted);
+    }
     if (ImGui::CollapsingHeader("Debug drawing", ImGuiTreeNodeFlags_DefaultOpen)) {
       ImGui::Checkbox("debug drawing on (F3)", &debug.enabled);
       ImGui::Checkbox("inner ring and spokes", &debug.structure);

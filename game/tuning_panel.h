@@ -11,8 +11,15 @@
 
 namespace game {
 
+// The sound's settings, which the panel sets directly: they are no part of the simulation, and a
+// replay does not record them.
+struct SoundSettings {
+  double volume = 0.8;  // [0, 1]
+  bool muted = false;   // M
+};
+
 // `current` is the tuning in force, `level_defaults` what the level started with (for "Reset").
 std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& level_defaults,
-                                         DebugOptions& debug, bool* open);
+                                         DebugOptions& debug, SoundSettings& sound, bool* open);
 
 }  // namespace game

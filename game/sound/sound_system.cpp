@@ -42,10 +42,20 @@ void SoundSystem::new_level() {
 }
 
 bool SoundSystem::toggle_mute() {
-  output_.lock();
-  mixer_->set_muted(!mixer_->muted());
+  set_muted(!muted());
+  return muted();
+}
+
+void SoundSystem::set_muted(bool muted) {
+  output_.lock();  // the device's callback mixes on its own thread
+  mixer_->set_muted(muted);
   output_.unlock();
-  return mixer_->muted();
+}
+
+void SoundSystem::set_volume(double volume) {
+  output_.lock();
+  mixer_->set_volume(volume);
+  output_.unlock();
 }
 
 }  // namespace game::sound

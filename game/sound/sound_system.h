@@ -40,6 +40,11 @@ class SoundSystem {
   // While the game stands still (paused, a menu), held sounds must not drone on.
   void set_paused(bool paused) { output_.set_paused(paused); }
   bool toggle_mute();
+  // The volume in [0, 1] (--volume at start, the tuning panel's slider after) and the mute (M).
+  double volume() const { return mixer_->volume(); }
+  void set_volume(double volume);
+  bool muted() const { return mixer_->muted(); }
+  void set_muted(bool muted);
 
   std::size_t events() const { return events_; }  // sound events so far
   std::size_t max_playing() const { return max_playing_; }
