@@ -46,17 +46,21 @@ void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Sur
     rise.rising = false;
     const double hit = rise.last - rise.before;  // N·s
     if (hit >= tuning_.impact_min_speed * t.total_mass()) {
-      const double strength = std::min(1.0, hit / tuning_.impact_full);
-      // Harder hits are louder and deeper; a prop knocks a little higher, a tire thuds softer.
-      const double surface_gain = surface == Surface::tire ? 0.7 : 1.0;
-      const double surface_pitch = surface == Surface::prop ? 1.3 : surface == Surface::tire ? 0.85 : 1.0;
+      const ExtractorTuning& k = tuning_;
+      const double strength = std::min(1.0, hit / k.impact_full);
+      const double surface_gain = surface == Surface::tire ? k.impact_gain_tire : 1.0;
+      const double surface_pitch = surface == Surface::prop   ? k.impact_pitch_prop
+                                   : surface == Surface::tire ? k.impact_pitch_tire
+                                                              : 1.0;
       SoundEvent e;
       e.tick = tick;
       e.kind = SoundKind::impact;
       e.surface = surface;
       e.tire = t.id;
-      e.gain = surface_gain * std::pow(strength, 0.6);
-      e.pitch = std::clamp((1.25 - 0.5 * strength) * surface_pitch * size_pitch(t), 0.4, 3.0);
+      e.gain = surface_gain * std::pow(strength, k.impact_gain_power);
+      e.pitch =
+          std::clamp((k.impact_pitch_soft - k.impact_pitch_drop * strength) * surface_pitch * size_pitch(t),
+                     k.impact_pitch[0], k.impact_pitch[1]);
       out.push_back(e);
     }
   }
@@ -83,15 +87,17 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
       const double tread_speed = omega * t.spec.outer_radius;
       if (tread_speed >= tuning_.roll_min_speed) {
         SoundEvent e{tick, SoundKind::roll, Surface::ground, t.id};
-        e.gain = 0.5 * std::min(1.0, tread_speed / tuning_.roll_full_speed);
-        e.pitch = std::clamp((0.5 + 0.1 * omega) * pitch_scale, 0.3, 3.0);
+        e.gain = tuning_.roll_gain * std::min(1.0, tread_speed / tuning_.roll_full_speed);
+        e.pitch = std::clamp((tuning_.roll_pitch_base + tuning_.roll_pitch_per_omega * omega) * pitch_scale,
+                             tuning_.roll_pitch[0], tuning_.roll_pitch[1]);
         out.push_back(e);
       }
     }
     if (const double slip = t.tick_contacts.slip_speed; slip >= tuning_.skid_min_speed) {
       SoundEvent e{tick, SoundKind::skid, Surface::ground, t.id};
-      e.gain = 0.6 * std::min(1.0, slip / tuning_.skid_full_speed);
-      e.pitch = std::clamp((0.85 + 0.04 * slip) * pitch_scale, 0.4, 2.5);
+      e.gain = tuning_.skid_gain * std::min(1.0, slip / tuning_.skid_full_speed);
+      e.pitch = std::clamp((tuning_.skid_pitch_base + tuning_.skid_pitch_per_speed * slip) * pitch_scale,
+                           tuning_.skid_pitch[0], tuning_.skid_pitch[1]);
       out.push_back(e);
     }
   }
@@ -104,7 +110,7 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
   }
   const tire::Tire* player = world.player();
   if (input.jump && player_grounded_ && player)
-    out.push_back({tick, SoundKind::jump, Surface::none, -1, 0.7, 1.0});
+    out.push_back({tick, SoundKind::jump, Surface::none, -1, tuning_.jump_gain, 1.0});
   player_grounded_ = player && player->grounded();
 }
 
@@ -113,20 +119,20 @@ void EventExtractor::after_tick(const tire::LevelSession& session, const tire::T
   after_tick(session.world(), input, out);
   const std::uint64_t tick = session.world().tick();
   if (session.checkpoint() && session.checkpoint() != checkpoint_)
-    out.push_back({tick, SoundKind::checkpoint, Surface::none, -1, 0.8, 1.0});
+    out.push_back({tick, SoundKind::checkpoint, Surface::none, -1, tuning_.checkpoint_gain, 1.0});
   checkpoint_ = session.checkpoint();
   for (const tire::ScriptMessage& m : session.messages()) {
     const bool seen = std::any_of(messages_.begin(), messages_.end(), [&](const tire::ScriptMessage& o) {
       return o.text == m.text && o.until_tick == m.until_tick;
     });
-    if (!seen) out.push_back({tick, SoundKind::message, Surface::none, -1, 0.5, 1.0});
+    if (!seen) out.push_back({tick, SoundKind::message, Surface::none, -1, tuning_.message_gain, 1.0});
   }
   messages_ = session.messages();
   const tire::ScriptStatus status = session.status();
   if (status != status_ && status == tire::ScriptStatus::won)
-    out.push_back({tick, SoundKind::win, Surface::none, -1, 0.9, 1.0});
+    out.push_back({tick, SoundKind::win, Surface::none, -1, tuning_.end_gain, 1.0});
   if (status != status_ && status == tire::ScriptStatus::lost)
-    out.push_back({tick, SoundKind::lose, Surface::none, -1, 0.9, 1.0});
+    out.push_back({tick, SoundKind::lose, Surface::none, -1, tuning_.end_gain, 1.0});
   status_ = status;
 }
 

@@ -30,6 +30,32 @@ struct ExtractorTuning {
   double roll_full_speed = 10.0;  // m/s of tread speed at gain 1
   double skid_min_speed = 0.6;    // m/s of sliding below which there is no skid
   double skid_full_speed = 6.0;   // m/s of sliding at gain 1
+
+  // Impacts: gain = surface gain · strength^impact_gain_power (strength = hit / impact_full, at
+  // most 1); pitch = (impact_pitch_soft − impact_pitch_drop · strength) · surface pitch · size
+  // pitch, clamped to impact_pitch: harder hits are louder and deeper.
+  double impact_gain_power = 0.6;
+  double impact_pitch_soft = 1.25;
+  double impact_pitch_drop = 0.5;
+  double impact_gain_tire = 0.7;    // a tire on a tire thuds softer
+  double impact_pitch_prop = 1.3;   // a prop knocks a little higher
+  double impact_pitch_tire = 0.85;  // and a tire lower
+  double impact_pitch[2] = {0.4, 3.0};
+  // Rolling: gain roll_gain at roll_full_speed; pitch roll_pitch_base + roll_pitch_per_omega·|ω|.
+  double roll_gain = 0.5;
+  double roll_pitch_base = 0.5;
+  double roll_pitch_per_omega = 0.1;  // per rad/s
+  double roll_pitch[2] = {0.3, 3.0};
+  // Skids: gain skid_gain at skid_full_speed; pitch skid_pitch_base + skid_pitch_per_speed·slide.
+  double skid_gain = 0.6;
+  double skid_pitch_base = 0.85;
+  double skid_pitch_per_speed = 0.04;  // per m/s
+  double skid_pitch[2] = {0.4, 2.5};
+  // The game's events, at pitch 1.
+  double jump_gain = 0.7;
+  double checkpoint_gain = 0.8;
+  double message_gain = 0.5;
+  double end_gain = 0.9;  // win and lose
 };
 
 class EventExtractor {
