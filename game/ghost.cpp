@@ -3,15 +3,7 @@
 #include <cmath>
 #include <span>
 
-#include "tire/io/file_io.h"
-
 namespace game {
-
-std::string level_file_sha256(const std::filesystem::path& file) {
-  std::string error;
-  const auto bytes = tire::read_file(file, tire::LevelLimits::max_file_bytes, error);
-  return bytes ? tire::sha256_hex(*bytes) : std::string();
-}
 
 std::string Ghost::load(const std::filesystem::path& file, std::shared_ptr<const tire::Level> level,
                         const std::string& level_sha256) {

@@ -11,14 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "session_recorder.h"
 #include "tire/io/level.h"
 #include "tire/replay/replay.h"
 #include "tire/session/level_session.h"
 
 namespace game {
-
-// The SHA-256 of a level file's bytes (what a replay records), or "" when it cannot be read.
-std::string level_file_sha256(const std::filesystem::path& file);
 
 class Ghost {
  public:

@@ -8,11 +8,17 @@
 
 namespace game {
 
-namespace {
-std::string level_sha(const std::filesystem::path& file) {
+std::string level_file_sha256(const std::filesystem::path& file) {
   std::string error;
   const auto bytes = tire::read_file(file, tire::LevelLimits::max_file_bytes, error);
-  return bytes ? tire::sha256_hex(*bytes) : std::string(64, '0');
+  return bytes ? tire::sha256_hex(*bytes) : std::string();
+}
+
+namespace {
+// What the recording names: an unreadable level as 64 zeros (a replay needs 64 hex digits).
+std::string level_sha(const std::filesystem::path& file) {
+  const std::string sha = level_file_sha256(file);
+  return sha.empty() ? std::string(64, '0') : sha;
 }
 }  // namespace
 

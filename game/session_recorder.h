@@ -13,6 +13,9 @@
 
 namespace game {
 
+// The SHA-256 of a level file's bytes (what a replay records), or "" when it cannot be read.
+std::string level_file_sha256(const std::filesystem::path& file);
+
 // The part of a recording after its last restart, as a replay of its own from tick 0: the run that
 // ended the recording (the recorder keeps one recording across restarts of a level).
 tire::Replay last_attempt(const tire::Replay& replay);
