@@ -190,7 +190,7 @@ TEST_CASE("hostile level: huge and overflowing numbers are refused with their ra
       has(errors,
           "hostile.json: /tires/0/position: must be [x, y] with each in [-10000, 10000] m, got [1e+308,0]"));
   CHECK(has(errors, "hostile.json: /tires/0/segments: must be an integer in [6, 256], got 1e+308"));
-  CHECK(has(errors, "hostile.json: /tires/0/mass: must be a number in (0, 1e+06] kg, got 1e+308"));
+  CHECK(has(errors, "hostile.json: /tires/0/mass: must be a number in [0.001, 1e+06] kg, got 1e+308"));
   CHECK(has(errors, "hostile.json: /tires/0/outer_radius: must be a number in [0.01, 100] m, got 1e-308"));
   CHECK(has(errors, "hostile.json: /obstacles/0/min: must be [x, y] with each in [-10000, 10000] m"));
   CHECK(
@@ -203,6 +203,10 @@ TEST_CASE("hostile level: huge and overflowing numbers are refused with their ra
   CHECK(has(
       refuse_level(R"({"name": "x", "tires": [{"position": [0, 1], "segments": 1180591620717411303424}]})"),
       "hostile.json: /tires/0/segments: must be an integer in [6, 256], got 1.1805916207174113e+21"));
+  // A subnormal mass is positive, but its particles' inverse masses overflow to infinity: the tire
+  // was accepted and then reset by the divergence guard on every tick.
+  CHECK(has(refuse_level(R"({"name": "x", "tires": [{"position": [0, 1], "mass": 1e-310}]})"),
+            "hostile.json: /tires/0/mass: must be a number in [0.001, 1e+06] kg, got 1e-310"));
 }
 
 TEST_CASE("hostile level: long strings and keys are refused while parsing, cut short in messages",
@@ -352,7 +356,7 @@ TEST_CASE("hostile replay: 10^8 ticks, huge tuning values and spawn floods are r
   CHECK(
       has(set, "hostile-replay.json: /inputs/0/set/value: must be an integer in [1, 256], got 1000000000.0"));
   // The range of the parameter table's tires.mass, the level's own (tire/parameters.h).
-  CHECK(has(set, "hostile-replay.json: /inputs/1/set/value: must be a number in (0, 1e+06] kg, got 0"));
+  CHECK(has(set, "hostile-replay.json: /inputs/1/set/value: must be a number in [0.001, 1e+06] kg, got 0"));
   CHECK(has(set, "hostile-replay.json: /inputs/2/set/value: must be a number in [0, 1] m/N, got -1"));
   CHECK(has(set, "hostile-replay.json: /inputs/3/set/value: must be an integer in [1, 64], got 2.5"));
   CHECK(has(

@@ -55,7 +55,7 @@ TEST_CASE("all problems are reported in one pass with their JSON paths", "[unit]
   CHECK(has(errors, "x.json: /tires/0/inner_radius: must be less than outer_radius (0.5), got 0.6"));
   CHECK(has(errors, "x.json: /tires/1/position: is required"));
   CHECK(has(errors, "x.json: /tires/1/segments: must be an integer in [6, 256], got 300"));
-  CHECK(has(errors, "x.json: /tires/1/mass: must be a number in (0, 1e+06] kg, got -1"));
+  CHECK(has(errors, "x.json: /tires/1/mass: must be a number in [0.001, 1e+06] kg, got -1"));
   CHECK(
       has(errors,
           "x.json: /tires/2/position: must be [x, y] with each in [-10000, 10000] m, got [0,1000000000.0]"));

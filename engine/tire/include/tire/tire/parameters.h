@@ -143,7 +143,10 @@ inline constexpr std::array kParameters = [] {
        "Radius of the rim (m), in {range} and less than outer_radius."},
       {P::tire_segments, "tires.segments", "", {6, 256}, true, kTire.segments, kLevelOnly,
        "Particles per ring, in {range}."},
-      {P::tire_mass, "tires.mass", "kg", {0, 1e6, true}, false, kTire.mass, by_level | by_replay,
+      // At least a gram: a particle's inverse mass is 2·segments / mass, which overflows to infinity
+      // below about 1e-300 kg (a tire of 1e-310 kg diverged on its first tick). The lightest tire the
+      // tests make (0.01 kg, against a 10 kg box) is ten times above it.
+      {P::tire_mass, "tires.mass", "kg", {1e-3, 1e6}, false, kTire.mass, by_level | by_replay,
        "Mass of the whole tire (kg), in {range}, shared equally by its 2·segments particles."},
       // Bounded away from 0: each particle's inverse mass is 2·segments / (spawn mass · scale), and
       // any scale below about 1e-300 makes it infinite as surely as 0 does. 0.01 is ten times below
