@@ -137,7 +137,7 @@ tirectl_test("hostile: --set 1e308 is judged like the file" 2 ARGS run ${LEVELS}
 tirectl_test("hostile: a replay of 10^8 ticks is refused" 2 ARGS replay ${HOSTILE}/replay/ticks-1e8.invalid.json
   STDERR "ticks-1e8.invalid.json: /ticks: must be an integer in \\[0, 5.184e\\+06\\], got 100000000")
 tirectl_test("hostile: a replay tuning 10^9 substeps is refused" 2 ARGS replay ${HOSTILE}/replay/set-substeps-1e9.invalid.json
-  STDERR "/inputs/0/set/value: must be an integer in \\[1, 256\\], got 1000000000.0.*/inputs/1/set/value: must be a number in \\(0, 1e\\+06\\] kg, got 0")
+  STDERR "/inputs/0/set/value: must be an integer in \\[1, 256\\], got 1000000000.0.*/inputs/1/set/value: must be a number in \\[0.001, 1e\\+06\\] kg, got 0")
 tirectl_test("hostile: a replay whose level is a device is refused" 2 ARGS replay ${HOSTILE}/replay/level-is-dev-zero.invalid.json
   STDERR "level-is-dev-zero.invalid.json: /level: cannot read /dev/zero: not a regular file")
 tirectl_test("hostile: run --input with a hostile replay is refused" 2
