@@ -437,9 +437,12 @@ void App::level_finished() {
   // A level played from the editor with unsaved changes is not the file: its time is not recorded.
   const bool is_file =
       !(editor_ && editor_->document().modified() && editor_->document().file() == session_.path());
+  // Nor is a run the tuning panel changed (gravity, friction, the solver...): it is not the level.
+  const bool tuned = session_.tuned();
   std::vector<std::string> messages;
-  run_result_ = best_runs_.finished(won, *finished_at_, session_.world().tick(), is_file, recorder_,
+  run_result_ = best_runs_.finished(won, *finished_at_, session_.world().tick(), is_file && !tuned, recorder_,
                                     session_.level_session(), messages);
+  if (tuned && best_runs_.enabled()) run_result_->note = "tuned (F2): not a best time";
   for (const std::string& m : messages) warn(m);
 }
 

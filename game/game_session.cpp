@@ -20,6 +20,7 @@ void GameSession::start(std::string path, std::shared_ptr<const tire::Level> lev
   level_ = std::move(level);
   path_ = std::move(path);
   tuning_ = Tuning::from_world(session_->world());
+  tuned_ = false;
   previous_x_.clear();
   previous_poses_.clear();
   ++generation_;
@@ -75,7 +76,10 @@ void GameSession::apply(const SessionEvent& event) {
           session_->release_grab();
         } else if constexpr (std::is_same_v<T, TuneEvent>) {
           // Wakes the world when the change is made (tuning.h).
-          if (apply_tuning(session_->world(), e.key, e.value)) tuning_.set(e.key, e.value);
+          if (apply_tuning(session_->world(), e.key, e.value)) {
+            tuning_.set(e.key, e.value);
+            tuned_ = true;
+          }
         }
       },
       event);

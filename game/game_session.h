@@ -42,6 +42,9 @@ class GameSession {
   const std::shared_ptr<const tire::Level>& level_ptr() const { return level_; }
   const std::string& path() const { return path_; }
   const Tuning& tuning() const { return tuning_; }
+  // Whether the tuning panel changed the world since the level was (re)started: such a run is not
+  // the level as written, and its time does not count as a best time.
+  bool tuned() const { return tuned_; }
   // Counts level loads: a change tells the app to reset its camera and grab state.
   std::uint64_t generation() const { return generation_; }
 
@@ -62,6 +65,7 @@ class GameSession {
   std::shared_ptr<const tire::Level> level_;
   std::string path_;
   Tuning tuning_;
+  bool tuned_ = false;
   std::uint64_t generation_ = 0;
   std::vector<SessionEvent> queue_;
   SessionObserver* observer_ = nullptr;

@@ -212,6 +212,23 @@ TEST_CASE("every input reaches the world through the session, between ticks", "[
   CHECK(session.world().tires().size() == 1);
 }
 
+TEST_CASE("a run the tuning panel changed is marked tuned until the level restarts", "[unit][game]") {
+  // The app does not record a tuned run's time as a best time (App::level_finished).
+  GameSession session;
+  session.start("flat.json", flat_level());
+  session.step({});
+  CHECK_FALSE(session.tuned());
+  session.queue(TuneEvent{"solver.substeps", 1e9});  // refused by the table: changes nothing
+  session.step({});
+  CHECK_FALSE(session.tuned());
+  session.queue(TuneEvent{"gravity.y", -3.0});
+  session.step({});
+  CHECK(session.tuned());
+  session.queue(LoadLevelEvent{"flat.json", session.level_ptr()});  // R: the level as written again
+  session.flush();
+  CHECK_FALSE(session.tuned());
+}
+
 TEST_CASE("drawing interpolates between the last two ticks", "[unit][game]") {
   GameSession session;
   session.start("flat.json", flat_level());
