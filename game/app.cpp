@@ -279,6 +279,7 @@ void App::key_down(SDL_Scancode k) {
     case SDL_SCANCODE_F2: show_tuning_ = !show_tuning_; return;
     case SDL_SCANCODE_F3: debug_.enabled = !debug_.enabled; return;
     case SDL_SCANCODE_F5: save_replay(); return;
+    case SDL_SCANCODE_M: warn(sound_.toggle_mute() ? "sound off (M)" : "sound on (M)"); return;  // menu too
     case SDL_SCANCODE_F6:
     case SDL_SCANCODE_E:
       if (!menu_open_) {
@@ -335,7 +336,6 @@ void App::key_down(SDL_Scancode k) {
                                   : "no ghost: progress is off");
       }
       break;
-    case SDL_SCANCODE_M: warn(sound_.toggle_mute() ? "sound off (M)" : "sound on (M)"); break;
     case SDL_SCANCODE_SPACE:
     case SDL_SCANCODE_UP:
     case SDL_SCANCODE_W: pending_jump_ = true; break;
@@ -732,8 +732,10 @@ std::string App::summary_json(long long frames) const {
                        {"time", run_result_->time}};
   }
   out["asleep"] = session_.world().asleep_count();
-  out["sound"] = {
-      {"device", sound_.device_open()}, {"events", sound_.events()}, {"max_voices", sound_.max_playing()}};
+  out["sound"] = {{"device", sound_.device_open()},
+                  {"events", sound_.events()},
+                  {"max_voices", sound_.max_playing()},
+                  {"muted", sound_.muted()}};
   // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
   // (World::step), the rendering (drawing, ImGui, present) and the whole frame.
   const auto stats = [](const TimeStats& t) {
