@@ -148,6 +148,20 @@ TEST_CASE("level 01 played to its flag ends with the win sound", "[sound]") {
   CHECK(of_kind(events, SoundKind::lose).empty());
 }
 
+TEST_CASE("a level lost on its time limit ends with the lose sound", "[sound]") {
+  tire::LevelLoad load = tire::load_level_file(test_level("resting.json"));
+  REQUIRE(load.level);
+  load.level->script.time_limit = 0.5;  // a level file's "time_limit": 0.5
+  auto session = tire::make_session(*load.level);
+  const auto events = play(*session, 60);
+  REQUIRE(session->status() == tire::ScriptStatus::lost);
+  const auto lose = of_kind(events, SoundKind::lose);
+  REQUIRE(lose.size() == 1);
+  CHECK(lose[0].tick == 30);  // 0.5 s of 1/60 s ticks
+  CHECK(lose[0].gain > 0.0);
+  CHECK(of_kind(events, SoundKind::win).empty());
+}
+
 TEST_CASE("a new checkpoint sounds once", "[sound]") {
   auto session = session_of(test_level("resting.json"));
   EventExtractor extractor;
