@@ -52,7 +52,7 @@ b2BodyType body_type(PropType t) {
 
 Pose Prop::pose_at(double t) const {
   // The centre of mass moves with `velocity`, the body turns about it with `omega`.
-  const Pose turned = Pose::make({}, start_pose.angle + omega * t - untravelled_angle);
+  const Pose turned = Pose::make({}, start_pose.angle + omega * (t - start_time) - untravelled_angle);
   return Pose::make(center_at(t) - turned.rotate(local_center), turned.angle);
 }
 
@@ -266,7 +266,7 @@ void RigidWorld::steer_along_path(std::uint32_t i, double dt) {
   bodies_[i]->SetLinearVelocity(to_b2(velocity));
 }
 
-void RigidWorld::begin_tick(double dt, bool substep_motion) {
+void RigidWorld::begin_tick(double dt, bool substep_motion, double time) {
   substep_motion_ = substep_motion;
   for (std::uint32_t i = 0; i < props_.size(); ++i) {
     Prop& p = props_[i];
@@ -276,6 +276,7 @@ void RigidWorld::begin_tick(double dt, bool substep_motion) {
       bodies_[i]->SetAngularVelocity(static_cast<float>(p.spec.angular_velocity));
     }
     const b2Body& b = *bodies_[i];
+    p.start_time = time;
     p.start_pose = Pose::make(from_b2(b.GetPosition()), b.GetAngle());
     p.local_center = from_b2(b.GetLocalCenter());
     p.start_center = from_b2(b.GetWorldCenter());
@@ -316,7 +317,7 @@ void RigidWorld::begin_substep(double time, double h) {
     // v ← v + h g, travelled from this substep on.
     const Vec2 dv = gravity_ * h;
     p.velocity += dv;
-    p.untravelled += dv * time;
+    p.untravelled += dv * (time - p.start_time);
   }
 }
 
@@ -335,8 +336,8 @@ void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t
   p.velocity += dv;
   p.omega += dw;
   if (!substep_motion_) return;
-  p.untravelled += dv * since;
-  p.untravelled_angle += dw * since;
+  p.untravelled += dv * (since - p.start_time);
+  p.untravelled_angle += dw * (since - p.start_time);
 }
 
 void RigidWorld::end_tick(double dt) {

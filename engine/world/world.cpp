@@ -239,7 +239,11 @@ void World::step(const TickInput& input) {
   // moving may reach woken; each awake tire's broad phase against obstacles and props, and its
   // jump; the broad phase between tires (a lone tire skips it), its pairs coloured for the
   // parallel solve.
-  rigid_.begin_tick(config_.dt, config_.method == SolverMethod::global);
+  // With the global method Box2D steps with the substeps (rigid_world.h): each of its steps is h.
+  const double h = config_.dt / config_.substeps;
+  const bool global = config_.method == SolverMethod::global;
+  const bool rigid_substeps = global && !rigid_.props().empty();
+  rigid_.begin_tick(rigid_substeps ? h : config_.dt, global);
   if (!config_.sleep && sleep_.asleep_count() > 0) wake_all();  // sleeping was turned off
   wake_for_props();
   if (sleep_.stale()) sleep_.refresh(tires_);
@@ -252,19 +256,22 @@ void World::step(const TickInput& input) {
   const bool neighbours = config_.method == SolverMethod::global && !tire_pairs_.empty();
   if (neighbours) neighbours_.set_pairs(tires_.size(), tire_pairs_);
 
-  const double h = config_.dt / config_.substeps;
   SubstepContext ctx{h,        0.0,
                      gravity_, &config_,
                      &rigid_,  !tire_pairs_.empty(),
                      &global_, neighbours ? &neighbours_ : nullptr};
   // (The fused schedule runs a substep's prediction and first iteration in one sweep; with the
   // contacts between tires in the global solves, the tires take their turns by colour, each after
-  // every prediction: the plain loop.)
-  if (schedule_ == StepSchedule::fused && !neighbours) {
+  // every prediction, and with Box2D stepping between substeps: the plain loop.)
+  if (schedule_ == StepSchedule::fused && !neighbours && !rigid_substeps) {
     fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
   } else {
     for (int s = 0; s < config_.substeps; ++s) {
       ctx.time = s * h;
+      if (rigid_substeps && s > 0) {  // Box2D steps the last substep's pushes, then is read again
+        rigid_.end_tick(h);
+        rigid_.begin_tick(h, true, ctx.time);
+      }
       // Predict: v ← v + h f_ext/m;  x_prev ← x;  x ← x + h v.
       predict(ctx);
       // Solve positions: constraints and contacts (the paper takes one iteration a substep).
@@ -274,9 +281,9 @@ void World::step(const TickInput& input) {
     }
   }
 
-  // After the substeps: the impulses the tires gave props go to Box2D, which steps them; a tire
-  // that diverged is reset.
-  rigid_.end_tick(config_.dt);
+  // After the substeps: the impulses the tires gave props go to Box2D, which steps them (the last
+  // substep, with the global method); a tire that diverged is reset.
+  rigid_.end_tick(rigid_substeps ? h : config_.dt);
   for (const std::uint32_t i : sleep_.awake()) guard_divergence(tires_[i]);
   if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, config_, held);
   if (sleep_.stale()) sleep_.refresh(tires_);
