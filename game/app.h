@@ -74,6 +74,8 @@ class App {
   int finish();
   // The exit summary's one line of JSON, once finish() has run.
   const std::string& summary() const { return summary_; }
+  // Counts the writes to the data folder (progress, ghosts): the browser build persists on a change.
+  std::uint64_t data_writes() const { return best_runs_.writes(); }
   SDL_Window* window() const { return window_; }
 
  private:

@@ -9,7 +9,9 @@ std::vector<std::string> BestRuns::open(std::optional<std::filesystem::path> dir
   levels_dir_ = std::move(levels_dir);
   enabled_ = dir.has_value();
   if (!enabled_) return {};
-  return progress_.load(*dir);
+  std::vector<std::string> warnings = progress_.load(*dir);
+  if (!warnings.empty()) ++writes_;  // a damaged file was set aside (renamed)
+  return warnings;
 }
 
 void BestRuns::level_started(const std::string& level_path, std::shared_ptr<const tire::Level> level,
@@ -43,6 +45,7 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
   }
   const std::string key = key_;
   r.new_best = progress_.record(key, won, time, ticks);
+  ++writes_;
   if (const std::string err = progress_.save(); !err.empty())
     messages.push_back("cannot save the progress to " + progress_.file().string() + ": " + err);
   if (won) {

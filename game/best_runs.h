@@ -43,6 +43,10 @@ class BestRuns {
   RunResult finished(bool won, double time, std::uint64_t ticks, bool record, const SessionRecorder& recorder,
                      const tire::LevelSession& session, std::vector<std::string>& messages);
 
+  // How many times the progress or a ghost was written (or a damaged file set aside) so far: the
+  // browser build copies the data folder to the page's IndexedDB when it changes.
+  std::uint64_t writes() const { return writes_; }
+
   // The menu's note for a level file: "best 9.85 s", "not won yet" or "".
   std::string note(const std::filesystem::path& level_file) const;
   Ghost& ghost() { return ghost_; }
@@ -58,6 +62,7 @@ class BestRuns {
   Ghost ghost_;
   std::string key_, sha_;  // the level the ghost was loaded for
   std::optional<RunResult> last_;
+  std::uint64_t writes_ = 0;
 };
 
 }  // namespace game

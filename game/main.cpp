@@ -20,11 +20,18 @@
 
 namespace {
 
-// One animation frame of the page; at the end, the exit summary goes into the page.
+// One animation frame of the page; at the end, the exit summary goes into the page. What the frame
+// wrote to the data folder (a best time, a ghost) is copied to the page's IndexedDB.
 void browser_frame(void* arg) {
+  static std::uint64_t persisted_writes = 0;
   auto* app = static_cast<game::App*>(arg);
   game::web::follow_canvas_size(app->window());
-  if (app->frame()) return;
+  const bool running = app->frame();
+  if (app->data_writes() != persisted_writes) {
+    persisted_writes = app->data_writes();
+    game::web::persist_data();
+  }
+  if (running) return;
   emscripten_cancel_main_loop();
   const int code = app->finish();
   game::web::publish_summary(app->summary(), code);

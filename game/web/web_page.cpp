@@ -12,6 +12,10 @@ EM_JS(void, tire_web_publish, (const char* text, int code), {
   element.textContent = UTF8ToString(text);
   element.dataset.exit = String(code);
 });
+
+EM_JS(void, tire_web_persist, (), {
+  tirePersistData();  // web/persist.pre.js
+});
 // clang-format on
 
 }  // namespace
@@ -27,6 +31,8 @@ void follow_canvas_size(SDL_Window* window) {
   SDL_GetWindowSize(window, &now_w, &now_h);
   if (w > 0 && h > 0 && (w != now_w || h != now_h)) SDL_SetWindowSize(window, w, h);
 }
+
+void persist_data() { tire_web_persist(); }
 
 void publish_summary(const std::string& json, int exit_code) {
   const std::string text = json.empty() ? "{\"exit\": " + std::to_string(exit_code) + "}" : json;

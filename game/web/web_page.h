@@ -16,4 +16,9 @@ void follow_canvas_size(SDL_Window* window);
 // code in its data-exit attribute: what automation waits for. An empty line becomes {"exit": CODE}.
 void publish_summary(const std::string& json, int exit_code);
 
+// The data folder (progress.json, ghosts/) is the page's IndexedDB, mounted by web/persist.pre.js
+// and read from it before main starts. Copies what the game wrote there since into IndexedDB, in the
+// background; the page's #summary element gets data-persisted="N" once the N-th copy is stored.
+void persist_data();
+
 }  // namespace game::web

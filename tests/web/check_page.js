@@ -8,6 +8,8 @@
 //     native run without keys, and a click in the sky spawns a tire.
 //  3. The canvas follows the window's size.
 //  4. Every replay given passes in the page (?replay=...).
+//  5. A best time and its ghost outlast a reload: level 01 won in the page is stored in IndexedDB
+//     (game/web/persist.pre.js), and the next page load shows that best time and loads the ghost.
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -165,6 +167,40 @@ async function main() {
       const shot = await page.screenshot({ encoding: 'base64' });
       fs.writeFileSync(path.join(opts.out, 'input-400.png'), Buffer.from(shot, 'base64'));
       await page.close();
+    }
+
+    // 5. The progress in IndexedDB, across a reload.
+    {
+      const log = [];
+      const page = await openPage(browser, '?level=levels/01-first-roll.json&frames=450&press=right:0-449', log);
+      const s = await waitSummary(page, 300000);
+      const won = JSON.parse(s.text);
+      let stored = true;
+      try {
+        await page.waitForFunction(() => Number(document.getElementById('summary').dataset.persisted) >= 1, {
+          timeout: 30000,
+          polling: 100,
+        });
+      } catch (e) {
+        stored = false;
+      }
+      dumpLog('progress-win', log);
+      await page.close();
+      const best = won.progress && won.progress.run && won.progress.run.won ? won.progress.best_time : undefined;
+      report(best !== undefined && stored, `a win in the page is stored in IndexedDB (best ${best} s, stored: ${stored})`);
+      const again = [];
+      const next = await openPage(browser, '?level=levels/01-first-roll.json&frames=5', again);
+      const n = await waitSummary(next, 120000);
+      dumpLog('progress-reload', again);
+      const later = JSON.parse(n.text);
+      const p = later.progress || {};
+      report(
+        best !== undefined && p.best_time === best && p.ghost && p.ghost.loaded === true,
+        `after a reload the page shows that best time and its ghost (best ${p.best_time} s, ghost loaded: ${
+          p.ghost && p.ghost.loaded
+        })`,
+      );
+      await next.close();
     }
 
     // 4. The replays.

@@ -2,8 +2,9 @@
 # The web test (ctest -L web, README "In a browser"): builds the game for the browser with
 # ./tools/web --build-only, serves build-web/ on a free loopback port, and in headless Chromium
 # (puppeteer-core) checks that the page draws the game, that real keys and clicks reach it, that
-# ?frames=300&press=right:0-299 ends with the native game's player position to the last bit, and
-# that every shipped replay passes in the page.
+# ?frames=300&press=right:0-299 ends with the native game's player position to the last bit, that
+# a best time and its ghost outlast a reload (IndexedDB), and that every shipped replay passes in
+# the page.
 #   tests/web/web_test.sh NATIVE_TIRE_GAME [OUTPUT_DIR]
 # Exit 77 (skipped) where emscripten, Chromium or node is not installed.
 set -euo pipefail
