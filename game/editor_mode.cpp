@@ -156,17 +156,17 @@ void Editor::set_tool(EditTool tool) {
 
 // ---- Changes -------------------------------------------------------------------------------------
 
-void Editor::apply(Json next, const char* what) {
+bool Editor::apply(Json next, const char* what) {
+  const std::size_t before = doc_.history_size();
   if (const std::string e = doc_.change(std::move(next)); !e.empty())
     messages_.push_back(std::string(what) + " refused: " + e);
+  return doc_.history_size() != before;  // a change to what it already is makes no step either
 }
 
 void Editor::add_item(ItemKind kind, Json item) {
   Pick added;
   const Json next = editor::with_item(doc_.json(), kind, std::move(item), added);
-  const std::size_t before = doc_.history_size();
-  apply(next, "adding it was");
-  if (doc_.history_size() != before) selection_ = {added};
+  if (apply(next, "adding it was")) selection_ = {added};
 }
 
 void Editor::undo() {
@@ -188,17 +188,13 @@ void Editor::save() {
 
 void Editor::delete_selection() {
   if (selection_.empty()) return;
-  const std::size_t before = doc_.history_size();
-  apply(editor::removed(doc_.json(), selection_), "deleting it was");
-  if (doc_.history_size() != before) selection_.clear();
+  if (apply(editor::removed(doc_.json(), selection_), "deleting it was")) selection_.clear();
 }
 
 void Editor::duplicate_selection() {
   editor::Selection copies;
   const Json next = editor::duplicated(doc_.json(), selection_, {grid_ * 2.0, grid_ * 2.0}, copies);
-  const std::size_t before = doc_.history_size();
-  apply(next, "duplicating was");
-  if (doc_.history_size() != before) selection_ = copies;
+  if (apply(next, "duplicating was")) selection_ = copies;
 }
 
 void Editor::nudge(Vec2 delta) {
@@ -539,9 +535,7 @@ void Editor::mouse_up(Uint8 button) {
             editor::with_item(doc_.json(), ItemKind::region,
                               {{"name", name}, {"min", editor::vec2(lo)}, {"max", editor::vec2(hi)}}, added);
         if (goal) next["goal"] = name;
-        const std::size_t before = doc_.history_size();
-        apply(std::move(next), "the region was");
-        if (doc_.history_size() != before) selection_ = {added};
+        if (apply(std::move(next), "the region was")) selection_ = {added};
       }
       tool_ = EditTool::select;
       break;

@@ -76,7 +76,8 @@ class Editor {
   void press_select(tire::Vec2 p, bool shift);
   void finish_drawing();  // a polygon or chain being clicked in
   void add_item(editor::ItemKind kind, editor::Json item);
-  void apply(editor::Json next, const char* what);  // one change, its refusal reported
+  // One change, its refusal reported; true when the document took it as a step of its history.
+  bool apply(editor::Json next, const char* what);
   void end_drag();
   void undo();
   void redo();

@@ -197,8 +197,8 @@ TEST_CASE("global: a tire whose air and rings disagree exerts no torque on itsel
           "[unit][global][physics]") {
   // Pressure 1.2 or 0.8: the air asks for 20 % more (or less) area than the rings allow, and the
   // constraints push against each other every substep. Internal forces are central, so a free tire
-  // that starts at rest stays at rest, spin included. (Gauss–Seidel's one-way sweep turns the fight
-  // into a torque: the same tire spins up to 16.6 rad/s in 4 s at 8 × 1, README "The global method".)
+  // that starts at rest stays at rest, spin included. (Gauss–Seidel's projections, one after another,
+  // do not keep it: the same tire spins up to 16.6 rad/s in 4 s at 8 × 1, README "The global method".)
   SolverConfig config = global_config(GENERATE(1, 2, 8));
   const double pressure = GENERATE(0.8, 1.2);
   CAPTURE(config.substeps, pressure);
