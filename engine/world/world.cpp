@@ -253,7 +253,7 @@ void World::step(const TickInput& input) {
   color_pairs();
   // The global method solves the contacts between tires inside each tire's system instead
   // (tire_neighbours.h): each tire's neighbours.
-  const bool neighbours = config_.method == SolverMethod::global && !tire_pairs_.empty();
+  const bool neighbours = global && !tire_pairs_.empty();
   if (neighbours) neighbours_.set_pairs(tires_.size(), tire_pairs_);
 
   SubstepContext ctx{h,        0.0,
@@ -270,7 +270,7 @@ void World::step(const TickInput& input) {
       ctx.time = s * h;
       if (rigid_substeps && s > 0) {  // Box2D steps the last substep's pushes, then is read again
         rigid_.end_tick(h);
-        rigid_.begin_tick(h, true, ctx.time);
+        rigid_.begin_tick(h, global, ctx.time);
       }
       // Predict: v ← v + h f_ext/m;  x_prev ← x;  x ← x + h v.
       predict(ctx);
