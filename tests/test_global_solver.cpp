@@ -248,3 +248,49 @@ TEST_CASE("global: a spinning tire that lands rolls off at the speed its angular
   CHECK(m.velocity.x == Approx(expected).epsilon(0.05));
   CHECK(std::abs(m.velocity.x + m.omega * radius) < 0.05 * expected);  // rolling, not sliding
 }
+
+TEST_CASE("global: a tire rolling, jumping and landing keeps the level's substeps",
+          "[unit][global][refine]") {
+  // Its solves turn no constraint by more than refine_turn, so the refinement never takes more
+  // substeps (SolverConfig::refine_turn): what a tire costs on the shipped levels stays what the
+  // level asks for.
+  SolverConfig config = global_config(2);
+  config.tunnel_clamp = 4.0;
+  World world = flat_world(tire_at({0.0, 0.5}, true), config);
+  const Tire& t = world.tires().front();
+  double most_turn = 0.0;
+  for (int tick = 0; tick < 300; ++tick) {
+    world.step({1.0, tick % 60 == 30});  // full drive, a jump every second
+    most_turn = std::max(most_turn, t.newton_turn);
+    INFO("tick " << tick << ": the solves turned a constraint by " << t.newton_turn << " rad");
+    REQUIRE(world.tick_substeps() == 2);
+  }
+  INFO("most turn " << most_turn << " rad, speed " << t.velocity().x << " m/s");
+  CHECK(t.velocity().x > 5.0);  // it did roll
+  CHECK(most_turn < config.settle_turn);
+}
+
+TEST_CASE("global: a solve that turns a constraint past refine_turn doubles the next tick's substeps",
+          "[unit][global][refine]") {
+  // A free tire (no gravity, nothing to touch) with one tread particle pulled 0.3 m towards the hub:
+  // the solve that pulls it back turns the tread edges next to it by about a radian. The next ticks
+  // take 4, then 8 substeps (max_refine 4: up to 8), and once it is round again and only rings, 2.
+  const int max_refine = GENERATE(1, 4);
+  SolverConfig config = global_config(2);
+  config.max_refine = max_refine;
+  World world(config, {0.0, 0.0});
+  const TireId id = world.add_tire(tire_at({0.0, 0.0}));
+  Tire& t = *world.find_tire(id);
+  t.particles.x[0] = t.particles.x[0] * ((0.5 - 0.3) / 0.5);
+  t.particles.x_prev[0] = t.particles.x[0];
+  std::vector<int> substeps;
+  for (int tick = 0; tick < 120; ++tick) {
+    world.step({});
+    substeps.push_back(world.tick_substeps());
+  }
+  INFO("the substeps each tick took " << ::Catch::Detail::stringify(substeps));
+  CHECK(substeps.front() == 2);
+  CHECK(*std::max_element(substeps.begin(), substeps.end()) == 2 * max_refine);
+  CHECK(substeps.back() == 2);  // settled: the level's substeps again
+  if (max_refine > 1) CHECK(substeps[1] == 4);
+}

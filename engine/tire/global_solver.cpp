@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tire/math/check.h"
+#include "tire/math/trig.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/xpbd/contact.h"
 
@@ -541,8 +542,23 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
       break;
     }
   }
+  t.newton_turn = std::max(t.newton_turn, largest_turn(t));
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
   write_back(t, ctx);
+}
+
+double GlobalSolver::largest_turn(const Tire& t) const {
+  const std::uint32_t n = t.n;
+  const Particles& p = t.particles;
+  double least_cos = 1.0;  // cos θ between a constraint's d = x_b − x_a before the step and after it
+  for (const DistanceConstraint& c : t.distance.constraints()) {
+    const Vec2 d = p.x[c.b] - p.x[c.a];
+    const Vec2 e = d + at(dx_.data(), dof_of(c.b, n)) - at(dx_.data(), dof_of(c.a, n));
+    const double lengths2 = length_squared(d) * length_squared(e);
+    if (lengths2 > 0.0) least_cos = std::min(least_cos, dot(d, e) / std::sqrt(lengths2));
+  }
+  const double c = std::clamp(least_cos, -1.0, 1.0);
+  return tire::atan2(std::sqrt(1.0 - c * c), c);  // tire/math/trig.h: the same bits everywhere
 }
 
 // The contact records, as the velocity pass and the rest of the engine read them (λ as distances,

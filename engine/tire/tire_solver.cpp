@@ -351,6 +351,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
     for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
   t.control.jump = false;
   t.tick_contacts = TickContacts{};
+  t.newton_turn = 0.0;
 }
 
 void begin_substep(Tire& t, const SubstepContext& ctx) {

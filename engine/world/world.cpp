@@ -21,6 +21,7 @@ constexpr std::uint32_t kColors = 64;
 
 World::World(const SolverConfig& config, Vec2 gravity)
     : config_(config),
+      tick_config_(config),
       gravity_(gravity),
       rigid_(gravity),
       threads_(std::max(1u, std::thread::hardware_concurrency())) {
@@ -239,15 +240,19 @@ void World::step(const TickInput& input) {
   // moving may reach woken; each awake tire's broad phase against obstacles and props, and its
   // jump; the broad phase between tires (a lone tire skips it), its pairs coloured for the
   // parallel solve.
-  // With the global method Box2D steps with the substeps (rigid_world.h): each of its steps is h.
-  const double h = config_.dt / config_.substeps;
+  // With the global method Box2D steps with the substeps (rigid_world.h): each of its steps is h,
+  // and the tick takes the refinement's substeps (SolverConfig::refine_turn).
   const bool global = config_.method == SolverMethod::global;
+  if (!global) refine_ = 1;
+  tick_config_ = config_;
+  tick_config_.substeps = config_.substeps * refine_;
+  const double h = config_.dt / tick_config_.substeps;
   const bool rigid_substeps = global && !rigid_.props().empty();
   rigid_.begin_tick(rigid_substeps ? h : config_.dt, global);
   if (!config_.sleep && sleep_.asleep_count() > 0) wake_all();  // sleeping was turned off
   wake_for_props();
   if (sleep_.stale()) sleep_.refresh(tires_);
-  sweep_tires([&](Tire& t) { begin_tick(t, config_, rigid_); });
+  sweep_tires([&](Tire& t) { begin_tick(t, tick_config_, rigid_); });
   sleep_.clear_woken();
   find_tire_pairs();
   color_pairs();
@@ -257,7 +262,7 @@ void World::step(const TickInput& input) {
   if (neighbours) neighbours_.set_pairs(tires_.size(), tire_pairs_);
 
   SubstepContext ctx{h,        0.0,
-                     gravity_, &config_,
+                     gravity_, &tick_config_,
                      &rigid_,  !tire_pairs_.empty(),
                      &global_, neighbours ? &neighbours_ : nullptr};
   // (The fused schedule runs a substep's prediction and first iteration in one sweep; with the
@@ -266,7 +271,7 @@ void World::step(const TickInput& input) {
   if (schedule_ == StepSchedule::fused && !neighbours && !rigid_substeps) {
     fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
   } else {
-    for (int s = 0; s < config_.substeps; ++s) {
+    for (int s = 0; s < tick_config_.substeps; ++s) {
       ctx.time = s * h;
       if (rigid_substeps && s > 0) {  // Box2D steps the last substep's pushes, then is read again
         rigid_.end_tick(h);
@@ -285,10 +290,24 @@ void World::step(const TickInput& input) {
   // substep, with the global method); a tire that diverged is reset.
   rigid_.end_tick(rigid_substeps ? h : config_.dt);
   for (const std::uint32_t i : sleep_.awake()) guard_divergence(tires_[i]);
+  if (global) update_refinement();
   if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, config_, held);
   if (sleep_.stale()) sleep_.refresh(tires_);
   sleep_.hold_props_near_awake_tires(tires_, rigid_);
   ++tick_;
+}
+
+// Doubles the substeps while a solve turns a constraint too far for its linearisation, halves them
+// back once none turns far (SolverConfig::refine_turn); the decision is the tick's, for every tire,
+// as Box2D and the contacts between tires step with the substeps.
+void World::update_refinement() {
+  double turn = 0.0;
+  for (const std::uint32_t i : sleep_.awake()) turn = std::max(turn, tires_[i].newton_turn);
+  if (turn > config_.refine_turn)
+    refine_ = std::min(2 * refine_, std::max(1, config_.max_refine));
+  else if (turn < config_.settle_turn)
+    refine_ = std::max(1, refine_ / 2);
+  refine_ = std::min(refine_, std::max(1, config_.max_refine));
 }
 
 void World::find_tire_pairs() {
@@ -302,7 +321,7 @@ void World::find_tire_pairs() {
     for (const std::uint32_t i : sleep_.awake())
       sleep_.overlapping(pair_finder_.bounds(i), [&](std::uint32_t j) { sleep_.wake(tires_, j, rigid_); });
     if (sleep_.woken().empty()) return;
-    for (const std::uint32_t j : sleep_.woken()) begin_tick(tires_[j], config_, rigid_);
+    for (const std::uint32_t j : sleep_.woken()) begin_tick(tires_[j], tick_config_, rigid_);
     sleep_.clear_woken();
     sleep_.refresh(tires_);
   }
@@ -393,7 +412,7 @@ void World::update_velocities(const SubstepContext& ctx) {
 void World::fused_substeps(SubstepContext ctx) {
   const bool carry_velocity_pass = !rigid_.takes_impulses();
   SubstepContext previous = ctx;
-  for (int s = 0; s < config_.substeps; ++s) {
+  for (int s = 0; s < tick_config_.substeps; ++s) {
     ctx.time = s * ctx.h;
     const bool velocity_pass_here = s > 0 && carry_velocity_pass;
     if (s > 0 && !carry_velocity_pass) update_velocities(previous);

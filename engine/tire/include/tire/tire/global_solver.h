@@ -141,6 +141,8 @@ class GlobalSolver {
   // would push into their surface. True when anything changed.
   bool update_active_set(const Tire& t, const SubstepContext& ctx);
   void write_back(Tire& t, const SubstepContext& ctx);
+  // The largest angle (rad) by which Δx turns one of the tire's distance constraints.
+  double largest_turn(const Tire& t) const;
 
   static constexpr std::size_t kMaxRows = 3;    // the two areas and the grab
   static constexpr std::size_t kMaxBodies = 2;  // free props in one tire's system; more keep their give

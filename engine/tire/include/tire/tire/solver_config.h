@@ -71,6 +71,17 @@ struct SolverConfig {
   // A particle starts a contact in the global solve only when it is deeper than this (m): below it,
   // the rounding of a resting contact could add and drop it pass after pass.
   double contact_slop = 1e-9;
+  // Refinement. One Newton iteration a substep is XPBD's linearised step, which holds while the step
+  // turns each constraint a little. When a tire's solve turns one of its constraints by more than
+  // refine_turn (rad), the next tick takes twice the substeps, up to max_refine times the level's;
+  // a tick in which none turns by more than settle_turn takes half as many again (World::
+  // refinement). A soft tire crushed flat under 100 times its weight (tests/extremes/test_crush.cpp)
+  // has its spokes turned by 1–3 rad a step at 2 substeps and blows up; refined it holds, as at 8.
+  // A tire rolling, jumping or landing on the shipped levels turns its constraints by at most 0.19
+  // rad a step at 2 substeps. max_refine 1 turns it off.
+  double refine_turn = 0.3;
+  double settle_turn = 0.1;
+  int max_refine = 8;
 };
 
 }  // namespace tire

@@ -192,6 +192,9 @@ struct Tire {
   ArrayView<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
   TireControl control;
   TickContacts tick_contacts;  // the last tick's, for listeners (sound); reset by begin_tick
+  // The global method: the most one of its solves turned one of its constraints this tick (rad), for
+  // the refinement (SolverConfig::refine_turn); reset by begin_tick.
+  double newton_turn = 0.0;
 
   // A mouse grab: particle `grab_particle` pulled towards `grab_target` by a compliant XPBD
   // constraint C = |x − target| (compliance grab_compliance), while grabbed.

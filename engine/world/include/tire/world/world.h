@@ -117,6 +117,12 @@ class World {
     wake_all();
   }
 
+  // The global method's refinement (SolverConfig::refine_turn): the next tick takes this many times
+  // the config's substeps. Always 1 with Gauss–Seidel.
+  int refinement() const { return refine_; }
+  // The substeps the last tick took.
+  int tick_substeps() const { return tick_config_.substeps; }
+
   std::uint64_t tick() const { return tick_; }
   double time() const { return static_cast<double>(tick_) * config_.dt; }
 
@@ -141,6 +147,8 @@ class World {
   void solve_tire_pairs();
   void solve_by_tire_colour(const SubstepContext& ctx, bool last);
   void guard_divergence(Tire& t);
+  // After a tick: refine_ from how far the awake tires' solves turned their constraints.
+  void update_refinement();
   // The broad phase between the awake tires into tire_pairs_; a sleeping island that an awake tire
   // may reach this tick is woken first (and its tires begin their tick).
   void find_tire_pairs();
@@ -160,6 +168,8 @@ class World {
   void sweep_tires(F&& fn);
 
   SolverConfig config_;
+  SolverConfig tick_config_;  // this tick's: config_ with the refinement's substeps
+  int refine_ = 1;
   Vec2 gravity_;
   RigidWorld rigid_;
   std::vector<Tire> tires_;
