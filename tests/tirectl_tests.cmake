@@ -27,6 +27,12 @@ tirectl_test("validate reports a missing file" 2 ARGS validate ${BAD}/no-such-le
   STDERR "no-such-level.json: no such file")
 tirectl_test("run prints the final state" 0 ARGS run ${LEVELS}/01-first-roll.json --ticks 120 --steer 1
   STDOUT "\"ticks\": 120,.*\"status\": \"running\".*\"centroid\".*\"area_ratio\".*\"grounded\": [a-z]+,[ \n]*\"asleep\": false.*\"hash\": \"[0-9a-f]+\"")
+# The substeps the ticks took (SolverConfig::refine_turn): Gauss–Seidel keeps the level's; the global
+# method refines while a 1000 kg box crushes a soft tire flat.
+tirectl_test("run reports the substeps the ticks took" 0 ARGS run ${LEVELS}/01-first-roll.json --ticks 60 --steer 1
+  STDOUT "\"substeps\": {[ \n]*\"level\": 8,[ \n]*\"most\": 8,[ \n]*\"refined_ticks\": 0[ \n]*}")
+tirectl_test("run reports the substeps the global method's refinement added" 0 ARGS run ${BAD}/global-crush.json --ticks 60
+  STDOUT "\"substeps\": {[ \n]*\"level\": 2,[ \n]*\"most\": (4|8|16),[ \n]*\"refined_ticks\": [1-9][0-9]*[ \n]*}")
 tirectl_test("validate refuses a solver.sleep that is not a boolean" 2 ARGS validate ${BAD}/bad-sleep.json
   STDERR "bad-sleep.json: /solver/sleep: must be true or false, got \"no\"")
 tirectl_test("run refuses a solver.sleep that is not a boolean" 2 ARGS run ${BAD}/bad-sleep.json --ticks 10
@@ -81,6 +87,9 @@ tirectl_test("bench builds crowd-100" 0 ARGS bench --scene crowd-100 --warmup 0 
   STDOUT "\ncrowd-100,100,5600,0,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
 tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS bench --scene crowd-10000 --warmup 0 --steps 1
   STDOUT "\ncrowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
+tirectl_test("bench times a tire rolling on flat ground by either method" 0
+  ARGS bench --scene rolling-gauss-seidel-8x1 --scene rolling-global-2x1 --warmup 10 --steps 3
+  STDOUT "\nrolling-gauss-seidel-8x1,1,56,[0-9]+,0,[0-9]+,28,8,1,3,[^\n]*\nrolling-global-2x1,1,56,[0-9]+,0,[0-9]+,28,2,1,3,")
 tirectl_test("bench refuses an unknown scene" 2 ARGS bench --scene pile-7 STDERR "unknown scene \"pile-7\"")
 tirectl_test("bench steps with the plain schedule when asked" 0 ARGS bench --scene pile-10 --schedule plain --steps 3 --warmup 2
   STDOUT "\npile-10,10,560,")

@@ -550,14 +550,20 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
 double GlobalSolver::largest_turn(const Tire& t) const {
   const std::uint32_t n = t.n;
   const Particles& p = t.particles;
-  double least_cos = 1.0;  // cos θ between a constraint's d = x_b − x_a before the step and after it
+  // The least cos θ between a constraint's d = x_b − x_a before the step and e = d + Δd after it,
+  // kept as the fraction (d·e)|d·e| / (|d|²|e|²) = ±cos²θ, compared without dividing.
+  double num = 1.0, den = 1.0;
   for (const DistanceConstraint& c : t.distance.constraints()) {
     const Vec2 d = p.x[c.b] - p.x[c.a];
     const Vec2 e = d + at(dx_.data(), dof_of(c.b, n)) - at(dx_.data(), dof_of(c.a, n));
-    const double lengths2 = length_squared(d) * length_squared(e);
-    if (lengths2 > 0.0) least_cos = std::min(least_cos, dot(d, e) / std::sqrt(lengths2));
+    const double de = dot(d, e), lengths2 = length_squared(d) * length_squared(e);
+    if (lengths2 > 0.0 && de * std::abs(de) * den < num * lengths2) {
+      num = de * std::abs(de);
+      den = lengths2;
+    }
   }
-  const double c = std::clamp(least_cos, -1.0, 1.0);
+  const double cos2 = std::clamp(num / den, -1.0, 1.0);
+  const double c = std::copysign(std::sqrt(std::abs(cos2)), cos2);
   return tire::atan2(std::sqrt(1.0 - c * c), c);  // tire/math/trig.h: the same bits everywhere
 }
 

@@ -248,6 +248,22 @@ std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int subste
   return std::make_unique<WorldScene>(std::move(world));
 }
 
+// One default tire driven flat out along flat ground with nothing in its way (issue 13's cost
+// figure: a tire rolling on flat ground), by either method.
+std::unique_ptr<Steppable> rolling_world(tire::SolverMethod method, int substeps) {
+  tire::SolverConfig config;
+  config.method = method;
+  config.substeps = substeps;
+  config.tunnel_clamp = 4.0;  // the speed limit of Gauss–Seidel 8 × 1 at any substep count
+  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
+  world->add_obstacle({{{-1.0e6, -1.0}, {1.0e6, 0.0}}});
+  tire::TireSpec spec;
+  spec.position = {0.0, 0.52};
+  spec.player = true;
+  world->add_tire(spec);
+  return std::make_unique<WorldScene>(std::move(world));
+}
+
 const Scene kScenes[] = {
     {"prototype",
      "1 tire, 28 segments, radial spokes, 1 substep x 22 iterations, resting",
@@ -268,6 +284,14 @@ const Scene kScenes[] = {
     {"global-tire-2x1",
      "as global-tire, at 2 substeps x 1 iteration",
      [] { return prototype_world(tire::SpokePattern::cross, 2, 1, tire::SolverMethod::global); },
+     {1.0, false}},
+    {"rolling-gauss-seidel-8x1",
+     "1 default tire driven flat out on flat ground with nothing in its way, Gauss-Seidel 8 x 1",
+     [] { return rolling_world(tire::SolverMethod::gauss_seidel, 8); },
+     {1.0, false}},
+    {"rolling-global-2x1",
+     "as rolling-gauss-seidel-8x1, solved by the global method at 2 substeps x 1 iteration",
+     [] { return rolling_world(tire::SolverMethod::global, 2); },
      {1.0, false}},
     {"global-tire-resting",
      "as global-tire, resting (no steering)",

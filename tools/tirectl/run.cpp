@@ -18,7 +18,18 @@ namespace {
 
 nlohmann::ordered_json vec(tire::Vec2 v) { return nlohmann::ordered_json::array({v.x, v.y}); }
 
-nlohmann::ordered_json summary(const tire::LevelSession& session) {
+// The substeps the ticks took: the level's, and what the global method's refinement added
+// (SolverConfig::refine_turn).
+struct SubstepTally {
+  int most = 0;
+  long long refined_ticks = 0;  // ticks that took more than the level's substeps
+  void add(const tire::World& world) {
+    most = std::max(most, world.tick_substeps());
+    if (world.tick_substeps() > world.config().substeps) ++refined_ticks;
+  }
+};
+
+nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepTally& tally) {
   const tire::World& world = session.world();
   nlohmann::ordered_json tires = nlohmann::ordered_json::array();
   for (const tire::Tire& t : world.tires())
@@ -36,8 +47,15 @@ nlohmann::ordered_json summary(const tire::LevelSession& session) {
     const tire::Pose pose = rigid.current_pose(i);
     props.push_back({{"name", p.spec.name}, {"position", vec(pose.position)}, {"angle", pose.angle}});
   }
-  return {{"ticks", world.tick()}, {"time", world.time()}, {"status", tire::to_string(session.status())},
-          {"tires", tires},        {"props", props},       {"hash", tire::to_hex(session.state_hash())}};
+  const nlohmann::ordered_json substeps = {
+      {"level", world.config().substeps}, {"most", tally.most}, {"refined_ticks", tally.refined_ticks}};
+  return {{"ticks", world.tick()},
+          {"time", world.time()},
+          {"status", tire::to_string(session.status())},
+          {"tires", tires},
+          {"props", props},
+          {"substeps", substeps},
+          {"hash", tire::to_hex(session.state_hash())}};
 }
 
 void trace(const tire::World& world) {
@@ -46,9 +64,10 @@ void trace(const tire::World& world) {
   const tire::Vec2 c = p->centroid(), v = p->velocity();
   std::fprintf(
       stderr,
-      "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s\n",
+      "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s  "
+      "%d substeps\n",
       world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
-      p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "");
+      p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "", world.tick_substeps());
 }
 
 }  // namespace
@@ -99,6 +118,7 @@ int run(const RunOptions& options) {
   std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
   double steer = 0.0;
   std::size_t next = 0;
+  SubstepTally tally;
   for (long long tick = 0; tick < options.ticks; ++tick) {
     bool jump = false;
     while (next < inputs.size() && inputs[next].tick == static_cast<std::uint64_t>(tick)) {
@@ -108,6 +128,7 @@ int run(const RunOptions& options) {
     session->step({steer, jump});
     if (recorder) recorder->after_step(*session);
     tire::World& world = session->world();
+    tally.add(world);
     if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world);
     for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
     world.warnings().clear();
@@ -120,7 +141,7 @@ int run(const RunOptions& options) {
       return 2;
     }
   }
-  std::cout << summary(*session).dump(2) << "\n";
+  std::cout << summary(*session, tally).dump(2) << "\n";
   return 0;
 }
 

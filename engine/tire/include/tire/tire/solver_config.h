@@ -77,8 +77,8 @@ struct SolverConfig {
   // a tick in which none turns by more than settle_turn takes half as many again (World::
   // refinement). A soft tire crushed flat under 100 times its weight (tests/extremes/test_crush.cpp)
   // has its spokes turned by 1–3 rad a step at 2 substeps and blows up; refined it holds, as at 8.
-  // A tire rolling, jumping or landing on the shipped levels turns its constraints by at most 0.19
-  // rad a step at 2 substeps. max_refine 1 turns it off.
+  // A tire rolling, jumping and landing on flat ground turns its constraints by at most 0.05 rad a
+  // step at 2 substeps, and never refines. max_refine 1 turns it off.
   double refine_turn = 0.3;
   double settle_turn = 0.1;
   int max_refine = 8;
