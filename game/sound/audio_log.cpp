@@ -43,6 +43,7 @@ void AudioLog::write(const SoundEvent& e) {
   if (e.tire >= 0) line["tire"] = e.tire;
   line["gain"] = rounded(e.gain);
   line["pitch"] = rounded(e.pitch);
+  if (e.tire >= 0) line["pan"] = rounded(e.pan);
   out_ << line.dump() << '\n';
 }
 

@@ -4,7 +4,7 @@ namespace game::sound {
 
 void AudioOutput::callback(void* mixer, Uint8* stream, int bytes) {
   static_cast<VoiceMixer*>(mixer)->render(reinterpret_cast<float*>(stream),
-                                          static_cast<std::size_t>(bytes) / sizeof(float));
+                                          static_cast<std::size_t>(bytes) / (2 * sizeof(float)));
 }
 
 bool AudioOutput::open(VoiceMixer& mixer, std::string& error) {
@@ -18,7 +18,7 @@ bool AudioOutput::open(VoiceMixer& mixer, std::string& error) {
   SDL_AudioSpec want{};
   want.freq = SoundBank::kRate;
   want.format = AUDIO_F32SYS;
-  want.channels = 1;
+  want.channels = 2;   // left, right (VoiceMixer::render)
   want.samples = 512;  // 12 ms at 44.1 kHz: short enough for a hit to land with its frame
   want.callback = &AudioOutput::callback;
   want.userdata = &mixer;

@@ -57,6 +57,7 @@ void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Sur
       e.kind = SoundKind::impact;
       e.surface = surface;
       e.tire = t.id;
+      e.pan = pan_of(t);
       e.gain = surface_gain * std::pow(strength, k.impact_gain_power);
       e.pitch =
           std::clamp((k.impact_pitch_soft - k.impact_pitch_drop * strength) * surface_pitch * size_pitch(t),
@@ -65,6 +66,12 @@ void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Sur
     }
   }
   rise.last = impulse;
+}
+
+double EventExtractor::pan_of(const tire::Tire& t) const {
+  if (!listener_x_) return 0.0;
+  const double side = (t.centroid().x - *listener_x_) / tuning_.pan_width;
+  return tuning_.pan_most * std::clamp(side, -1.0, 1.0);
 }
 
 void EventExtractor::impacts(const tire::Tire& t, std::uint64_t tick, std::vector<SoundEvent>& out) {
@@ -78,6 +85,8 @@ void EventExtractor::impacts(const tire::Tire& t, std::uint64_t tick, std::vecto
 void EventExtractor::after_tick(const tire::World& world, const tire::TickInput& input,
                                 std::vector<SoundEvent>& out) {
   const std::uint64_t tick = world.tick();
+  const tire::Tire* listener = world.player();
+  listener_x_ = listener ? std::optional<double>(listener->centroid().x) : std::nullopt;
   for (const tire::Tire& t : world.tires()) {
     if (t.asleep) continue;  // not simulated: silent, and its figures are those it fell asleep with
     impacts(t, tick, out);
@@ -87,6 +96,7 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
       const double tread_speed = omega * t.spec.outer_radius;
       if (tread_speed >= tuning_.roll_min_speed) {
         SoundEvent e{tick, SoundKind::roll, Surface::ground, t.id};
+        e.pan = pan_of(t);
         e.gain = tuning_.roll_gain * std::min(1.0, tread_speed / tuning_.roll_full_speed);
         e.pitch = std::clamp((tuning_.roll_pitch_base + tuning_.roll_pitch_per_omega * omega) * pitch_scale,
                              tuning_.roll_pitch[0], tuning_.roll_pitch[1]);
@@ -95,6 +105,7 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
     }
     if (const double slip = t.tick_contacts.slip_speed; slip >= tuning_.skid_min_speed) {
       SoundEvent e{tick, SoundKind::skid, Surface::ground, t.id};
+      e.pan = pan_of(t);
       e.gain = tuning_.skid_gain * std::min(1.0, slip / tuning_.skid_full_speed);
       e.pitch = std::clamp((tuning_.skid_pitch_base + tuning_.skid_pitch_per_speed * slip) * pitch_scale,
                            tuning_.skid_pitch[0], tuning_.skid_pitch[1]);

@@ -30,6 +30,11 @@ struct ExtractorTuning {
   double roll_full_speed = 10.0;  // m/s of tread speed at gain 1
   double skid_min_speed = 0.6;    // m/s of sliding below which there is no skid
   double skid_full_speed = 6.0;   // m/s of sliding at gain 1
+  // Stereo: a tire pan_width to the player's right (the middle of the screen, which follows the
+  // player) sounds from the right at pan_most; nearer, in proportion. The player's own tire and the
+  // game's events sound from the middle.
+  double pan_width = 7.0;  // m: about half the view's width (camera.h: 7.5 m high, 16:9)
+  double pan_most = 0.8;
 
   // Impacts: gain = surface gain · strength^impact_gain_power (strength = hit / impact_full, at
   // most 1); pitch = (impact_pitch_soft − impact_pitch_drop · strength) · surface pitch · size
@@ -81,12 +86,15 @@ class EventExtractor {
     Rise surfaces[3];  // ground, prop, tire
   };
   void impacts(const tire::Tire& t, std::uint64_t tick, std::vector<SoundEvent>& out);
+  // Where `t` sounds from (SoundEvent::pan), heard from listener_x_.
+  double pan_of(const tire::Tire& t) const;
   void follow(Rise& rise, double impulse, const tire::Tire& t, Surface surface, std::uint64_t tick,
               std::vector<SoundEvent>& out);
 
   ExtractorTuning tuning_;
   std::unordered_map<tire::TireId, TireState> tires_;
-  bool player_grounded_ = false;  // before this tick's step: what the jump needs
+  std::optional<double> listener_x_;  // the player's hub, this tick (none: no player)
+  bool player_grounded_ = false;      // before this tick's step: what the jump needs
   std::optional<tire::Vec2> checkpoint_;
   std::vector<tire::ScriptMessage> messages_;
   tire::ScriptStatus status_ = tire::ScriptStatus::running;

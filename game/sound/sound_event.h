@@ -35,6 +35,7 @@ struct SoundEvent {
   std::int64_t tire = -1;  // the tire's id, or −1 for a game event
   double gain = 0.0;       // [0, 1]
   double pitch = 1.0;      // playback rate: 1 as synthesised, 2 an octave up
+  double pan = 0.0;        // [-1, 1], left to right: where the tire is from the player (0 for game events)
 };
 
 }  // namespace game::sound

@@ -22,12 +22,21 @@ void VoiceMixer::set_volume(double volume) { volume_ = std::clamp(volume, 0.0, 1
 
 double VoiceMixer::loudness(const Voice& v) const { return v.gain * bank_.envelope(v.kind, v.age, v.pitch); }
 
+// Equal power: the left and right gains' squares add up to 2 wherever the pan puts it, so a voice
+// is as loud panned as in the middle, where both are 1.
+void VoiceMixer::set_pan(Voice& v, double pan) {
+  const double angle = (std::clamp(pan, -1.0, 1.0) + 1.0) * (M_PI / 4.0);
+  v.left = static_cast<float>(M_SQRT2 * std::cos(angle));
+  v.right = static_cast<float>(M_SQRT2 * std::sin(angle));
+}
+
 void VoiceMixer::play(const SoundEvent& e) {
   if (is_held(e.kind)) {
     for (Voice& v : voices_) {
       if (v.kind == e.kind && v.key == e.tire) {
         v.gain = e.gain;
         v.pitch = e.pitch;
+        set_pan(v, e.pan);
         v.renewed = true;
         return;
       }
@@ -38,6 +47,7 @@ void VoiceMixer::play(const SoundEvent& e) {
   v.key = is_held(e.kind) ? e.tire : -1;
   v.gain = e.gain;
   v.pitch = e.pitch;
+  set_pan(v, e.pan);
   v.loudness = loudness(v);
   if (voices_.size() >= kVoicePool) {
     // Full: the new voice takes the place of the quietest if it is louder, else it is dropped.
@@ -91,7 +101,7 @@ MixStats VoiceMixer::end_tick(double dt) {
 }
 
 void VoiceMixer::render(float* out, std::size_t frames) {
-  std::fill(out, out + frames, 0.0f);
+  std::fill(out, out + 2 * frames, 0.0f);
   // A gain change takes 5 ms: no clicks when a voice starts, stops or is dropped.
   const float ramp = static_cast<float>(step_scale_ / (0.005 * SoundBank::kRate));
   const double master = muted_ ? 0.0 : volume_ * kVoiceHeadroom;
@@ -114,11 +124,12 @@ void VoiceMixer::render(float* out, std::size_t frames) {
       const auto f = static_cast<float>(v.position - static_cast<double>(k));
       const float x = s.data[k] + (s.data[k + 1] - s.data[k]) * f;
       v.level += std::clamp(target - v.level, -ramp, ramp);
-      out[i] += x * v.level;
+      out[2 * i] += x * v.level * v.left;
+      out[2 * i + 1] += x * v.level * v.right;
       v.position += step;
     }
   }
-  for (std::size_t i = 0; i < frames; ++i) out[i] = soft_limit(out[i]);
+  for (std::size_t i = 0; i < 2 * frames; ++i) out[i] = soft_limit(out[i]);
 }
 
 }  // namespace game::sound

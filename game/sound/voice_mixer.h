@@ -58,8 +58,8 @@ class VoiceMixer {
   }
   std::size_t voices() const { return voices_.size(); }
 
-  // Audio thread: mixes the chosen voices into `out` (mono, `frames` samples; overwritten). Never
-  // allocates.
+  // Audio thread: mixes the chosen voices into `out` (stereo, `frames` frames of a left and a right
+  // sample; overwritten). Never allocates.
   void render(float* out, std::size_t frames);
 
  private:
@@ -68,6 +68,8 @@ class VoiceMixer {
     std::int64_t key = -1;  // a held sound's tire; −1 for one-shots
     double gain = 0.0;
     double pitch = 1.0;
+    float left = 1.0f;  // its pan's gains, equal power: 1 and 1 in the middle
+    float right = 1.0f;
     double age = 0.0;       // s since it started (one-shots)
     double position = 0.0;  // in the sample (samples at the bank's rate)
     double loudness = 0.0;  // gain × its envelope now, as end_tick last saw it
@@ -78,6 +80,7 @@ class VoiceMixer {
     bool finished = false;  // its sample ran out (render)
   };
   double loudness(const Voice& v) const;
+  static void set_pan(Voice& v, double pan);
 
   const SoundBank& bank_;
   std::vector<Voice> voices_;

@@ -125,6 +125,61 @@ TEST_CASE("a rolling tire's tread sound rises in pitch as it speeds up, and the 
   CHECK(of_kind(events, SoundKind::message).size() == 1);  // the level's opening message
 }
 
+TEST_CASE("a tire to the player's right sounds from the right, the player's own from the middle", "[sound]") {
+  // resting.json's tire is the player's; a second one 6 m to its right, spinning on the ground,
+  // rolls and skids there: pan 0.8 × 6/7 = 0.69 while it stays there.
+  auto session = session_of(test_level("resting.json"));
+  REQUIRE(session->world().player() != nullptr);
+  const double player_x = session->world().player()->centroid().x;
+  tire::TireSpec spec = session->world().tires().front().spec;
+  spec.player = false;
+  spec.position = {player_x + 6.0, spec.position.y};
+  spec.angular_velocity = -20.0;
+  const tire::TireId other = session->world().add_tire(spec);
+  const ExtractorTuning tuning;
+  bool heard = false;
+  for (const SoundEvent& e : play(*session, 30)) {
+    if (e.tire < 0) {
+      CHECK(e.pan == 0.0);  // the game's events
+      continue;
+    }
+    if (e.tire == static_cast<std::int64_t>(other)) {
+      heard = true;
+      CHECK(e.pan > 0.0);
+      CHECK(e.pan <= tuning.pan_most);
+    } else {
+      CHECK(e.pan == 0.0);  // the player's own tire
+    }
+  }
+  CHECK(heard);
+}
+
+TEST_CASE("a voice panned left is louder on the left, and as loud in all as in the middle", "[sound]") {
+  const SoundBank bank;
+  const auto channel_power = [&](double pan) {
+    VoiceMixer mixer(bank);
+    mixer.set_volume(0.5);
+    SoundEvent e{1, SoundKind::roll, Surface::ground, 7, 0.5, 1.0};
+    e.pan = pan;
+    mixer.play(e);
+    mixer.end_tick(1.0 / 60.0);
+    std::vector<float> out(2 * 4096);
+    mixer.render(out.data(), out.size() / 2);
+    std::pair<double, double> power{0.0, 0.0};
+    for (std::size_t i = 0; i < out.size(); i += 2) {
+      power.first += static_cast<double>(out[i]) * out[i];
+      power.second += static_cast<double>(out[i + 1]) * out[i + 1];
+    }
+    return power;
+  };
+  const auto middle = channel_power(0.0), left = channel_power(-0.8), right = channel_power(0.8);
+  CHECK(middle.first == Approx(middle.second));
+  CHECK(left.first > 10.0 * left.second);
+  CHECK(right.second > 10.0 * right.first);
+  // Equal power: below the limiter's knee, the two channels add up to what the middle gives.
+  CHECK(left.first + left.second == Approx(middle.first + middle.second).epsilon(0.01));
+}
+
 TEST_CASE("a tire set spinning on the ground skids until it grips", "[sound]") {
   auto session = session_of(test_level("resting.json"));
   session->world().reset_tire(0);
@@ -203,7 +258,7 @@ TEST_CASE("300 loud events mixed stay inside [-1, 1]", "[sound]") {
       mixer.play({static_cast<std::uint64_t>(tick), kind, Surface::ground, i, 1.0, 0.5 + (i % 7) * 0.25});
     }
     mixer.end_tick(1.0 / 60.0);
-    mixer.render(out.data(), out.size());
+    mixer.render(out.data(), out.size() / 2);
     for (const float x : out) {
       REQUIRE(std::isfinite(x));
       REQUIRE(std::abs(x) < 1.0f);
@@ -231,7 +286,7 @@ TEST_CASE("muted, the mixer renders silence, and its volume scales what it rende
     mixer.play({1, SoundKind::win, Surface::none, -1, 0.5, 1.0});
     mixer.end_tick(1.0 / 60.0);
     std::vector<float> out(8192);
-    mixer.render(out.data(), out.size());
+    mixer.render(out.data(), out.size() / 2);
     double sum = 0.0;
     for (const float x : out) sum += static_cast<double>(x) * x;
     return std::sqrt(sum / static_cast<double>(out.size()));
@@ -261,7 +316,7 @@ TEST_CASE("the audio log writes one JSON line per event, held sounds when they s
     AudioLog log;
     std::string error;
     REQUIRE(log.open(file.string(), error));
-    log.write({5, SoundKind::impact, Surface::prop, 3, 0.75, 1.1});
+    log.write({5, SoundKind::impact, Surface::prop, 3, 0.75, 1.1, -0.25});
     for (std::uint64_t tick = 6; tick < 10; ++tick)
       log.write({tick, SoundKind::roll, Surface::ground, 0, 0.3, 1.0});
     log.write({10, SoundKind::roll, Surface::ground, 0, 0.3, 1.5});  // pitch moved: a line
@@ -274,12 +329,16 @@ TEST_CASE("the audio log writes one JSON line per event, held sounds when they s
   for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
   std::filesystem::remove(file);
   REQUIRE(lines.size() == 4);
-  CHECK(
-      lines[0] ==
-      nlohmann::json{
-          {"tick", 5}, {"kind", "impact"}, {"surface", "prop"}, {"tire", 3}, {"gain", 0.75}, {"pitch", 1.1}});
+  CHECK(lines[0] == nlohmann::json{{"tick", 5},
+                                   {"kind", "impact"},
+                                   {"surface", "prop"},
+                                   {"tire", 3},
+                                   {"gain", 0.75},
+                                   {"pitch", 1.1},
+                                   {"pan", -0.25}});
   CHECK(lines[1]["kind"] == "roll");
   CHECK(lines[1]["tick"] == 6);
   CHECK(lines[2]["pitch"] == 1.5);
+  CHECK(lines[2]["pan"] == 0.0);
   CHECK(lines[3] == nlohmann::json{{"tick", 10}, {"kind", "mix"}, {"playing", 2}, {"wanted", 2}});
 }
