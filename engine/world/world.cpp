@@ -304,10 +304,10 @@ void World::update_refinement() {
   double turn = 0.0;
   for (const std::uint32_t i : sleep_.awake()) turn = std::max(turn, tires_[i].newton_turn);
   if (turn > config_.refine_turn)
-    refine_ = std::min(2 * refine_, std::max(1, config_.max_refine));
+    refine_ *= 2;
   else if (turn < config_.settle_turn)
-    refine_ = std::max(1, refine_ / 2);
-  refine_ = std::min(refine_, std::max(1, config_.max_refine));
+    refine_ /= 2;
+  refine_ = std::clamp(refine_, 1, std::max(1, config_.max_refine));
 }
 
 void World::find_tire_pairs() {
