@@ -75,7 +75,7 @@ struct SolverConfig {
   // turns each constraint a little. When a tire's solve turns one of its constraints by more than
   // refine_turn (rad), the next tick takes twice the substeps, up to max_refine times the level's;
   // a tick in which none turns by more than settle_turn takes half as many again (World::
-  // refinement). A soft tire crushed flat under 100 times its weight (tests/extremes/test_crush.cpp)
+  // tick_substeps). A soft tire crushed flat under 100 times its weight (tests/extremes/test_crush.cpp)
   // has its spokes turned by 1–3 rad a step at 2 substeps and blows up; refined it holds, as at 8.
   // A tire rolling, jumping and landing on flat ground turns its constraints by at most 0.05 rad a
   // step at 2 substeps, and never refines. max_refine 1 turns it off.

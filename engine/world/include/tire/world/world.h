@@ -117,10 +117,8 @@ class World {
     wake_all();
   }
 
-  // The global method's refinement (SolverConfig::refine_turn): the next tick takes this many times
-  // the config's substeps. Always 1 with Gauss–Seidel.
-  int refinement() const { return refine_; }
-  // The substeps the last tick took.
+  // The substeps the last tick took: the config's, times the global method's refinement
+  // (SolverConfig::refine_turn).
   int tick_substeps() const { return tick_config_.substeps; }
 
   std::uint64_t tick() const { return tick_; }
