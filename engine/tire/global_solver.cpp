@@ -318,6 +318,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
   const std::uint32_t n = t.n;
   const std::size_t size = CyclicBlockCholesky::kBlock * n;
   const Particles& p = t.particles;
+  rows_.resize(base_rows_);  // the contacts' rows are made again below
   k_.reset(n);
   for (std::uint32_t k = 0; k < n; ++k) {
     k_.diagonal(k) = base_diagonal_[k];
@@ -352,47 +353,139 @@ bool GlobalSolver::solve_pass(const Tire& t) {
       for (std::size_t q = 0; q < 3; ++q) b.kqq[r][q] += k * a[r] * a[q];
     }
   };
-  // Each active contact: its normal, and its static friction while it holds.
-  for (const Contact& c : contacts_) {
+  // Each active contact: its normal into K; its static friction while it holds, as a row while
+  // there is room and it is not a free prop's, else into K.
+  for (Contact& c : contacts_) {
+    c.normal_in_k = c.normal_active;
+    c.friction_in_k = false;
+    c.row_n = c.row_t = -1;
     if (!c.normal_active) continue;
     const Vec2 x = p.x[c.particle];
     add_row(c, c.normal, c.stiffness_n, c.stiffness_n * (c.plane - dot(c.normal, x)));
     if (!c.friction_active) continue;
     const Vec2 tangent = perp(c.normal);
-    add_row(c, tangent, c.stiffness_t,
-            -c.stiffness_t * dot(tangent, x - p.x_prev[c.particle] - c.surface_displacement));
+    const double target = -dot(tangent, x - p.x_prev[c.particle] - c.surface_displacement);
+    if (c.body < 0 && rows_.size() < base_rows_ + kMaxFrictionRows) {
+      c.row_t = add_contact_row(t, c, tangent, target, c.stiffness_t);
+    } else {
+      add_row(c, tangent, c.stiffness_t, c.stiffness_t * target);
+      c.friction_in_k = true;
+    }
   }
   ++counts_.factorisations;
   if (!k_.factor()) return false;
-  // L⁻¹ f, the capacitance rows' y_r = L⁻¹ g_r and the bodies' L⁻¹ B in forward sweeps; then the
-  // border system (header), at most kMaxUnknowns: by Cholesky when it is the rows' S = Yᵀ Y + α̃
-  // alone (symmetric positive definite), else by elimination.
-  const std::size_t m = rows_.size();
-  double* sides[kMaxRows + 1] = {f_.data()};
-  for (std::size_t r = 0; r < m; ++r) {
+  // L⁻¹ f, the rows' y_r = L⁻¹ g_r (the areas' and the grab's from their gradients) and the bodies'
+  // L⁻¹ B in forward sweeps.
+  for (std::size_t r = 0; r < base_rows_; ++r) {
     const double* g = g_.data() + r * stride_;
-    sides[r + 1] = y_.data() + r * stride_;
-    std::copy(g, g + size, sides[r + 1]);
+    std::copy(g, g + size, y_.data() + r * stride_);
   }
-  k_.forward(sides, m + 1);
+  forward_rows(0, true);
   for (std::size_t j = 0; j < 3 * nb; j += CyclicBlockCholesky::kMaxRightHandSides) {
     double* columns[CyclicBlockCholesky::kMaxRightHandSides];
     const std::size_t count = std::min(CyclicBlockCholesky::kMaxRightHandSides, 3 * nb - j);
     for (std::size_t v = 0; v < count; ++v) columns[v] = yb_.data() + (j + v) * stride_;
     k_.forward(columns, count);
   }
+  return solve_system(t);
+}
+
+std::int32_t GlobalSolver::add_contact_row(const Tire& t, const Contact& c, Vec2 d, double target,
+                                           double stiffness) {
+  if (rows_.size() == kMaxRows) return -1;
+  const std::size_t r = rows_.size();
+  double* y = y_.data() + r * stride_;
+  std::fill(y, y + CyclicBlockCholesky::kBlock * t.n, 0.0);
+  const std::size_t dof = dof_of(c.particle, t.n);
+  y[dof] = d.x;
+  y[dof + 1] = d.y;
+  Row row;
+  row.alpha_tilde = 1.0 / stiffness;
+  row.b = target;
+  const std::uint32_t block = block_of(c.particle, t.n);
+  row.first = block == 0 ? t.n : block;  // block 0 is the chain's border, eliminated last
+  rows_.push_back(row);
+  return static_cast<std::int32_t>(r);
+}
+
+void GlobalSolver::forward_rows(std::size_t first, bool with_f) {
+  constexpr std::size_t kSides = CyclicBlockCholesky::kMaxRightHandSides;
+  std::size_t r = first;
+  while (r < rows_.size() || with_f) {
+    double* sides[kSides];
+    std::size_t count = 0, start = k_.blocks();
+    if (with_f) {
+      sides[count++] = f_.data();
+      start = 1;
+      with_f = false;
+    }
+    for (; count < kSides && r < rows_.size(); ++r) {
+      sides[count++] = y_.data() + r * stride_;
+      start = std::min(start, rows_[r].first);
+    }
+    k_.forward(sides, count, start);
+  }
+}
+
+bool GlobalSolver::solve_changes(const Tire& t) {
+  const Particles& p = t.particles;
+  const std::size_t first_new = rows_.size();
+  for (Contact& c : contacts_) {
+    const bool friction = c.normal_active && c.friction_active;
+    if (c.normal_in_k) {
+      if (!c.normal_active || c.friction_in_k != friction) return false;  // K itself changes
+      if (c.row_t >= 0 && !friction) rows_[static_cast<std::size_t>(c.row_t)].live = false;
+      continue;
+    }
+    if (!c.normal_active) {  // not in K and out: its rows too, if it had any
+      if (c.row_n >= 0) rows_[static_cast<std::size_t>(c.row_n)].live = false;
+      if (c.row_t >= 0) rows_[static_cast<std::size_t>(c.row_t)].live = false;
+      continue;
+    }
+    if (c.body >= 0) return false;  // a free prop's contact is in its columns of B
+    const Vec2 x = p.x[c.particle];
+    const Vec2 tangent = perp(c.normal);
+    if (c.row_n < 0 || !rows_[static_cast<std::size_t>(c.row_n)].live) {
+      c.row_n = add_contact_row(t, c, c.normal, c.plane - dot(c.normal, x), c.stiffness_n);
+      if (c.row_n < 0) return false;
+    }
+    if (friction && (c.row_t < 0 || !rows_[static_cast<std::size_t>(c.row_t)].live)) {
+      c.row_t = add_contact_row(
+          t, c, tangent, -dot(tangent, x - p.x_prev[c.particle] - c.surface_displacement), c.stiffness_t);
+      if (c.row_t < 0) return false;
+    } else if (!friction && c.row_t >= 0) {
+      rows_[static_cast<std::size_t>(c.row_t)].live = false;
+    }
+  }
+  forward_rows(first_new, false);
+  ++counts_.updates;
+  return solve_system(t);
+}
+
+bool GlobalSolver::solve_system(const Tire& t) {
+  const std::uint32_t n = t.n;
+  const std::size_t size = CyclicBlockCholesky::kBlock * n;
+  const Particles& p = t.particles;
+  const std::size_t nb = bodies_.size();
+  // The border system (header), at most kMaxUnknowns: by Cholesky when it is the rows' S = Yᵀ Y + α̃
+  // alone (symmetric positive definite), else by elimination. Its unknowns: the live rows', then
+  // the bodies'.
+  std::size_t live[kMaxRows];
+  std::size_t m = 0;
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    if (rows_[r].live) live[m++] = r;
   const auto column = [&](std::size_t u) {  // unknown u's column of Y: a row's, then the bodies'
-    return u < m ? y_.data() + u * stride_ : yb_.data() + (u - m) * stride_;
+    return u < m ? y_.data() + live[u] * stride_ : yb_.data() + (u - m) * stride_;
   };
   const std::size_t unknowns = m + 3 * nb;
   double z[kMaxUnknowns] = {};
-  for (std::size_t r = 0; r < m; ++r) rows_[r].yf = dot_n(column(r), f_.data(), size);
+  for (std::size_t u = 0; u < m; ++u) rows_[live[u]].yf = dot_n(column(u), f_.data(), size);
   if (nb == 0) {
     double s[kMaxRows][kMaxRows] = {};
     for (std::size_t r = 0; r < m; ++r) {
       for (std::size_t q = 0; q <= r; ++q) s[r][q] = dot_n(column(r), column(q), size);
-      s[r][r] += rows_[r].alpha_tilde;
-      z[r] = rows_[r].b - rows_[r].yf;
+      s[r][r] += rows_[live[r]].alpha_tilde;
+      z[r] = rows_[live[r]].b - rows_[live[r]].yf;
     }
     for (std::size_t r = 0; r < m; ++r) {  // Cholesky of S, in its lower triangle
       for (std::size_t q = 0; q <= r; ++q) {
@@ -420,12 +513,12 @@ bool GlobalSolver::solve_pass(const Tire& t) {
       for (std::size_t q = 0; q < unknowns; ++q) {
         const double yy = dot_n(yr, column(q), size);
         if (r < m)
-          border_[r][q] = q < m ? yy + (q == r ? rows_[r].alpha_tilde : 0.0) : -yy;
+          border_[r][q] = q < m ? yy + (q == r ? rows_[live[r]].alpha_tilde : 0.0) : -yy;
         else
           border_[r][q] = yy;
       }
       if (r < m) {
-        border_[r][unknowns] = rows_[r].b - rows_[r].yf;
+        border_[r][unknowns] = rows_[live[r]].b - rows_[live[r]].yf;
       } else {  // (K_qq − Y_Bᵀ Y_B) Δq + Y_Bᵀ Y_G μ = f_q − Y_Bᵀ L⁻¹ f
         const std::size_t j = (r - m) / 3, a = (r - m) % 3;
         for (std::size_t q = m; q < unknowns; ++q) border_[r][q] = -border_[r][q];
@@ -436,7 +529,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     if (!solve_border(unknowns)) return false;
     for (std::size_t u = 0; u < unknowns; ++u) z[u] = border_[u][unknowns];
   }
-  for (std::size_t r = 0; r < m; ++r) rows_[r].mu = z[r];
+  for (std::size_t r = 0; r < m; ++r) rows_[live[r]].mu = z[r];
   for (std::size_t j = 0; j < nb; ++j)
     for (std::size_t a = 0; a < 3; ++a) bodies_[j].dq[a] = z[m + 3 * j + a];
   // Δx = L⁻ᵀ (L⁻¹ f + Y_G μ − Y_B Δq).
@@ -447,7 +540,9 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     for (std::size_t k = 0; k < size; ++k) dx_[k] += coefficient * y[k];
   }
   k_.backward(dx_.data());
-  // The contacts' multipliers at the new positions: μ = −k C(x + Δx, Δq).
+  // The contacts' multipliers: a row's own, or at the new positions μ = −k C(x + Δx, Δq) for one
+  // in K.
+  const auto row_mu = [&](std::int32_t r) { return rows_[static_cast<std::size_t>(r)].mu; };
   for (Contact& c : contacts_) {
     c.mu_n = c.mu_t = 0.0;
     if (!c.normal_active) continue;
@@ -460,9 +555,11 @@ bool GlobalSolver::solve_pass(const Tire& t) {
       moved_n = along(b, c.normal, c.arm);
       moved_t = along(b, tangent, c.arm);
     }
-    c.mu_n = c.stiffness_n * (c.plane + moved_n - dot(c.normal, x));
-    if (c.friction_active)
-      c.mu_t = -c.stiffness_t * (dot(tangent, x - p.x_prev[i] - c.surface_displacement) - moved_t);
+    c.mu_n = c.normal_in_k ? c.stiffness_n * (c.plane + moved_n - dot(c.normal, x)) : row_mu(c.row_n);
+    if (!c.friction_active) continue;
+    c.mu_t = c.friction_in_k
+                 ? -c.stiffness_t * (dot(tangent, x - p.x_prev[i] - c.surface_displacement) - moved_t)
+                 : row_mu(c.row_t);
   }
   return true;
 }
@@ -519,6 +616,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
       rows_.push_back(row);
     }
   }
+  base_rows_ = rows_.size();
   // Contacts held at the end of the substep's previous iteration stay in (their plane and whether
   // they stuck), so a resting tire does not lose its support between iterations.
   t.for_each_contact([&](std::uint32_t i) {
@@ -533,15 +631,11 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   find_contacts(t, ctx, nullptr);
   // Active-set passes (each a factorisation), until nothing changes or the passes run out; the
   // last pass's changes are solved once more, so Δx always matches the contacts written back.
+  // A pass whose changes K can take as rows solves on the factor it has (solve_changes).
   const int passes = std::max(1, ctx.config->contact_passes);
-  for (int pass = 0;; ++pass) {
-    if (!solve_pass(t)) return;  // not finite (a NaN put in from outside): the divergence guard resets it
-    if (!update_active_set(t, ctx)) break;
-    if (pass + 1 == passes) {
-      if (!solve_pass(t)) return;
-      break;
-    }
-  }
+  if (!solve_pass(t)) return;  // not finite (a NaN put in from outside): the divergence guard resets it
+  for (int pass = 1; pass <= passes && update_active_set(t, ctx); ++pass)
+    if (!solve_changes(t) && !solve_pass(t)) return;
   t.newton_turn = std::max(t.newton_turn, largest_turn(t));
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
   write_back(t, ctx);

@@ -114,14 +114,17 @@ void upper_solve(const Block4& l, double* v) {
   }
 }
 
-// v ← v − A x, given Aᵀ: A x = Σ_k x_k (row k of Aᵀ).
-void subtract_product(double* v, const Block4& a_t, const double* x) {
+// A x, given Aᵀ: Σ_k x_k (row k of Aᵀ).
+V4 product(const Block4& a_t, const double* x) {
   V4 s = splat(x[0]) * row(a_t, 0);
   s += splat(x[1]) * row(a_t, 1);
   s += splat(x[2]) * row(a_t, 2);
   s += splat(x[3]) * row(a_t, 3);
-  store(v, load(v) - s);
+  return s;
 }
+
+// v ← v − A x, given Aᵀ.
+void subtract_product(double* v, const Block4& a_t, const double* x) { store(v, load(v) - product(a_t, x)); }
 
 // v ← v − Aᵀ x, given Aᵀ: (Aᵀ x)_r = (row r of Aᵀ)·x.
 void subtract_transpose_product(double* v, const Block4& a_t, const double* x) {
@@ -176,18 +179,25 @@ bool CyclicBlockCholesky::factor() {
   return cholesky(diag_[0]);
 }
 
-void CyclicBlockCholesky::forward(double* const* ys, std::size_t count) const {
+void CyclicBlockCholesky::forward(double* const* ys, std::size_t count, std::size_t first) const {
   TIRE_ASSERT(count <= kMaxRightHandSides, "too many right-hand sides for one forward solve");
   const std::size_t p = blocks_;
+  TIRE_ASSERT(first >= 1 && first <= p, "a forward solve's first block outside the chain");
   // Block by block, every vector at once: their chains are independent, so the CPU overlaps them.
-  for (std::size_t j = 1; j < p; ++j)
+  // Block 0 of each, which every block's border term updates, stays in a register meanwhile.
+  V4 head[kMaxRightHandSides];
+  for (std::size_t v = 0; v < count; ++v) head[v] = load(ys[v]);
+  for (std::size_t j = first; j < p; ++j)
     for (std::size_t v = 0; v < count; ++v) {
       double* yj = ys[v] + B * j;
-      if (j > 1) subtract_product(yj, couple_[j - 1], yj - B);
+      if (j > first) subtract_product(yj, couple_[j - 1], yj - B);
       lower_solve(diag_[j], yj);
-      subtract_product(ys[v], border_[j], yj);
+      head[v] -= product(border_[j], yj);
     }
-  for (std::size_t v = 0; v < count; ++v) lower_solve(diag_[0], ys[v]);
+  for (std::size_t v = 0; v < count; ++v) {
+    store(ys[v], head[v]);
+    lower_solve(diag_[0], ys[v]);
+  }
 }
 
 void CyclicBlockCholesky::backward(double* x) const {

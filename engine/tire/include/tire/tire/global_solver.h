@@ -11,10 +11,15 @@
 // rate ∇C·(x − xₙ) taken as ΔC = C(x) − C(xₙ) (equal to first order; zero for a rigid turn). K is
 // the mass matrix plus the stiffness of every distance constraint: with the unknowns ordered
 // segment by segment it is block tridiagonal with a cyclic wrap (CyclicBlockCholesky).
-// Contacts are rows of one particle each, so they go into K too, as constraints of compliance
-// SolverConfig::rigid_compliance (10 nm under a tire's weight): the normal C = n·x − plane with
-// μ_n ≥ 0, and static friction t·(x − xₙ − surface motion) = 0 while |μ_t| ≤ μ_s μ_n (Müller et al.
-// 2020, Sec. 3.5; kinetic friction stays in the velocity pass, Sec. 3.6). A free dynamic prop (one
+// Contacts are rows of one particle each, constraints of compliance SolverConfig::rigid_compliance
+// (10 nm under a tire's weight): the normal C = n·x − plane with μ_n ≥ 0, and static friction
+// t·(x − xₙ − surface motion) = 0 while |μ_t| ≤ μ_s μ_n (Müller et al. 2020, Sec. 3.5; kinetic
+// friction stays in the velocity pass, Sec. 3.6). The normals go into K, which keeps its shape. The
+// first few frictions are rows of the capacitance system below instead, since they are what the
+// active-set passes change most (a driven tire's wheelspin lets go of a third of its contacts'
+// friction): a pass that only lets frictions go, or takes in new contacts, solves on the factor it
+// has, dropping those rows or adding some (Woodbury), and refactors K only when a normal in K lets
+// go or a free prop's contact changes. A free dynamic prop (one
 // Box2D holds on nothing: it moves within the tick as it is pushed) is a rigid body in the system:
 // its displacement q = (u, θ) over the substep is three more unknowns, with its mass and inertia as
 // their M and each of its contacts a constraint C = d·x − plane − a·q, a = (d, r × d) (Müller 2020
@@ -25,8 +30,8 @@
 // A prop resting on something stays on its course within the tick (rigid_world.h): its contacts
 // keep that give, scaled by its mobility. Which contacts are in is found by active-set passes, one
 // factorisation each.
-// The two area constraints (their gradients are dense over a ring) and the mouse grab keep their
-// multipliers μ as unknowns, a dense "capacitance" system of at most three rows:
+// The two area constraints (their gradients are dense over a ring), the mouse grab and those
+// contact rows keep their multipliers μ as unknowns, a small dense "capacitance" system:
 //     (G K⁻¹ Gᵀ + α̃_G/(1 + γ)) μ = b − G K⁻¹ f,   then Δx = K⁻¹ (f + Gᵀ μ).
 // The free props' displacements join them as a border of three columns each, B = ∂²E/∂x∂q:
 //     [ S_GG + α̃    −Y_Gᵀ Y_B      ] [ μ  ]   [ b − Y_Gᵀ L⁻¹ f  ]
@@ -63,22 +68,27 @@ class GlobalSolver {
 
   // Work done by the last solve(), for tests and the bench.
   struct Counts {
-    std::uint32_t factorisations = 0;  // of K: one per active-set pass
+    std::uint32_t factorisations = 0;  // of K: the first active-set pass, and those that change K
+    std::uint32_t updates = 0;         // passes solved on the factor they found
     std::uint32_t contacts = 0;        // contacts in the system at the end
   };
   const Counts& counts() const { return counts_; }
 
  private:
-  // A row of the capacitance system: an area constraint or the grab.
+  // A row of the capacitance system, g·Δx + α̃ μ = b with K Δx = f + g μ: an area constraint, the
+  // grab, or a contact's friction or normal (g the direction d at its particle, b its target
+  // displacement along d, α̃ its compliance: μ is then its force × h²).
   struct Row {
     double alpha_tilde = 0.0;  // α̃/(1 + γ)
     double b = 0.0;            // the right-hand side: −(C + γ ΔC)/(1 + γ)
     double yf = 0.0;           // (L⁻¹ g)·(L⁻¹ f)
     double mu = 0.0;           // its multiplier, from the last pass
+    std::size_t first = 1;     // the first block of the chain where L⁻¹ g is not zero (forward())
+    bool live = true;          // false once its contact has let it go
   };
-  // A particle against an obstacle or a prop. Its normal (and static friction) are rows of
-  // compliance rigid_compliance, plus what a dynamic prop gives way, taken into K itself: each
-  // touches one particle, so K keeps its shape.
+  // A particle against an obstacle or a prop. Its normal (and static friction) are constraints of
+  // compliance rigid_compliance, plus what a dynamic prop gives way: in K (each touches one
+  // particle, so K keeps its shape) or rows (row_n, row_t; see the file's comment).
   struct Contact {
     std::uint32_t particle = 0;
     Vec2 normal;                // unit, out of the surface
@@ -97,6 +107,10 @@ class GlobalSolver {
     double stiffness_t = 0.0;  // the same along the tangent
     bool normal_active = true;
     bool friction_active = true;
+    bool normal_in_k = false;  // what K holds of it since it was last factored
+    bool friction_in_k = false;
+    std::int32_t row_n = -1;  // its rows, or −1
+    std::int32_t row_t = -1;
     double mu_n = 0.0;  // multipliers from the last pass (kg·m: force × h²)
     double mu_t = 0.0;
   };
@@ -134,9 +148,20 @@ class GlobalSolver {
   void find_tire_contacts(const Tire& t, const SubstepContext& ctx, const double* dx, std::size_t first_new);
   // Puts c in the system, in place of the particle's contact if it has one; `depth` its penetration.
   void offer(const Contact& c, double depth);
-  // One active-set pass: K with the active contacts, factored; the capacitance rows solved; Δx and
-  // each contact's multipliers. False when K could not be factored (not finite).
+  // One active-set pass: K with the active contacts' normals (and frictions beyond
+  // kMaxFrictionRows, and a free prop's), factored; the other frictions as rows. False when K could
+  // not be factored (not finite).
   bool solve_pass(const Tire& t);
+  // An active-set pass on the factor the last solve_pass left: frictions that let go drop their
+  // rows, contacts K does not hold come in as rows. False when the changes need K refactored (a
+  // normal in K let go, a free prop's contact changed, no room for the rows) or it failed.
+  bool solve_changes(const Tire& t);
+  // Appends a contact's row along d (at most kMaxRows), its L⁻¹ g still to compute; its index, or −1.
+  std::int32_t add_contact_row(const Tire& t, const Contact& c, Vec2 d, double target, double stiffness);
+  // L⁻¹ g of rows [first, rows_.size()) (in y_), four at a time, f_ first when with_f.
+  void forward_rows(std::size_t first, bool with_f);
+  // The capacitance system of the live rows and the bodies, then Δx and each contact's multipliers.
+  bool solve_system(const Tire& t);
   // Drops contacts that pull and friction that cannot hold; takes back released contacts that Δx
   // would push into their surface. True when anything changed.
   bool update_active_set(const Tire& t, const SubstepContext& ctx);
@@ -144,7 +169,10 @@ class GlobalSolver {
   // The largest angle (rad) by which Δx turns one of the tire's distance constraints.
   double largest_turn(const Tire& t) const;
 
-  static constexpr std::size_t kMaxRows = 3;    // the two areas and the grab
+  static constexpr std::size_t kBaseRows = 3;         // the two areas and the grab
+  static constexpr std::size_t kMaxFrictionRows = 4;  // frictions as rows after a factorisation
+  static constexpr std::size_t kMaxChangeRows = 4;    // and contacts taken in on its factor
+  static constexpr std::size_t kMaxRows = kBaseRows + kMaxFrictionRows + kMaxChangeRows;
   static constexpr std::size_t kMaxBodies = 2;  // free props in one tire's system; more keep their give
   static constexpr std::size_t kMaxUnknowns = kMaxRows + 3 * kMaxBodies;
 
@@ -157,9 +185,10 @@ class GlobalSolver {
   std::vector<double> f_;       // f with them, then L⁻¹ f
   std::vector<double> dx_;      // the last pass's Δx, in block order
   std::vector<Row> rows_;
-  std::vector<double> g_;   // column r: the gradient g_r
-  std::vector<double> y_;   // column r: L⁻¹ g_r
-  std::vector<double> yb_;  // column 3j + c: L⁻¹ of body j's column c of B
+  std::size_t base_rows_ = 0;  // the areas' and the grab's, first in rows_
+  std::vector<double> g_;      // column r: the gradient g_r
+  std::vector<double> y_;      // column r: L⁻¹ g_r
+  std::vector<double> yb_;     // column 3j + c: L⁻¹ of body j's column c of B
   std::vector<Body> bodies_;
   double border_[kMaxUnknowns][kMaxUnknowns + 1] = {};  // the border system, its right side last
   std::vector<Contact> contacts_;
