@@ -635,8 +635,11 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   const int passes = std::max(1, ctx.config->contact_passes);
   if (!solve_pass(t)) return;  // not finite (a NaN put in from outside): the divergence guard resets it
   for (int pass = 1; pass <= passes && update_active_set(t, ctx); ++pass)
-    if (!solve_changes(t) && !solve_pass(t)) return;
+    if (!(ctx.config->reuse_factor && solve_changes(t)) && !solve_pass(t)) return;
   t.newton_turn = std::max(t.newton_turn, largest_turn(t));
+  ++t.global_work.solves;
+  t.global_work.factorisations += counts_.factorisations;
+  t.global_work.updates += counts_.updates;
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
   write_back(t, ctx);
 }

@@ -352,6 +352,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   t.control.jump = false;
   t.tick_contacts = TickContacts{};
   t.newton_turn = 0.0;
+  t.global_work = {};
 }
 
 void begin_substep(Tire& t, const SubstepContext& ctx) {

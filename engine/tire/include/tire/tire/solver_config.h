@@ -59,6 +59,11 @@ struct SolverConfig {
   // then drops those that pull (λ_n < 0) or slip (|λ_t| > μ_s λ_n) and adds particles that now
   // penetrate. A resting tire settles in one or two.
   int contact_passes = 8;
+  // Whether a pass that only lets frictions go or takes in new contacts solves on the factor of K
+  // the pass before it made (GlobalSolver: the changes as rows, by Woodbury), rather than
+  // refactoring K: the same solution to rounding, for a third of the cost of a driven tire. For
+  // the tests and the bench, which compare the two.
+  bool reuse_factor = true;
   // The compliance of what is rigid in the global solve (m/N): contacts, and distance constraints
   // of compliance 0 (its primal form divides by α, so every α is at least this). It is an XPBD
   // compliance, not a penalty: a tire's whole weight (100 N) sinks a contact by 0.1 nm at any

@@ -195,6 +195,14 @@ struct Tire {
   // The global method: the most one of its solves turned one of its constraints this tick (rad), for
   // the refinement (SolverConfig::refine_turn); reset by begin_tick.
   double newton_turn = 0.0;
+  // The global method's work this tick (GlobalSolver): its solves, the factorisations of K they
+  // made, and the active-set passes they solved on a factor already made; reset by begin_tick.
+  struct GlobalWork {
+    std::uint32_t solves = 0;
+    std::uint32_t factorisations = 0;
+    std::uint32_t updates = 0;
+  };
+  GlobalWork global_work;
 
   // A mouse grab: particle `grab_particle` pulled towards `grab_target` by a compliant XPBD
   // constraint C = |x − target| (compliance grab_compliance), while grabbed.
