@@ -60,6 +60,7 @@ void GlobalSolver::reserve(std::uint32_t segments) {
   contact_of_.assign(2 * std::size_t{segments}, -1);
   depth_.assign(2 * std::size_t{segments}, 0.0);
   gradient_.assign(segments, Vec2{});
+  links_.reserve(kMaxLinksPerSegment * std::size_t{segments});
 }
 
 // K = M + (1 + γ) Jᵀ α̃⁻¹ J and f = −M (x − x̃) − Jᵀ α̃⁻¹ (C + γ ΔC) over the distance
@@ -87,26 +88,48 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     base_f_[k + 1] = r.y;
   }
   const double min_compliance = ctx.config->rigid_compliance;
-  for (const DistanceConstraint& c : t.distance.constraints()) {
+  const double h2 = h * h;
+  double last_compliance = -1.0, inv_alpha_tilde = 0.0;  // the groups' few compliances, in runs
+  links_.clear();
+  const auto constraints = t.distance.constraints();
+  TIRE_ASSERT(constraints.size() <= links_.capacity(),
+              "a tire with more constraints than the global solver has room for");
+  // Each constraint's gradient and its terms of K and f first, then into the blocks: the square
+  // roots and divisions of one loop overlap, which the blocks' sums would hold in sequence.
+  for (const DistanceConstraint& c : constraints) {
+    Link l;
+    l.a = c.a;
+    l.b = c.b;
+    l.dof_a = dof_of(c.a, n);
+    l.dof_b = dof_of(c.b, n);
     const Vec2 d = p.x[c.b] - p.x[c.a];
     const double len = length(d);
-    if (!(len > 0.0)) continue;  // coincident particles: no gradient (as in the Gauss–Seidel kernel)
-    const Vec2 nrm = d / len;    // ∇_b C = n = −∇_a C
-    const double inv_alpha_tilde = h * h / std::max(c.compliance, min_compliance);
-    // The constraint's change over the substep, C(x) − C(xₙ): eq. 26's ∇C·(x − xₙ) to first order,
-    // but zero for a rigid turn, where the linearisation reads a turn by θ as a shortening by
-    // L(1 − cos θ), and damping then squeezed a fast-spinning tire (its area 96 % at 30 rad/s and
-    // 2 substeps). Its derivative is ∇C, as K's (1 + γ) factor has it.
-    const double rate = len - length(p.x_prev[c.b] - p.x_prev[c.a]);
-    const double e = (len - c.rest_length + gamma * rate) * inv_alpha_tilde;
-    const std::size_t ka = dof_of(c.a, n), kb = dof_of(c.b, n);
-    base_f_[ka] += nrm.x * e;
-    base_f_[ka + 1] += nrm.y * e;
-    base_f_[kb] -= nrm.x * e;
-    base_f_[kb + 1] -= nrm.y * e;
-    const double s = (1.0 + gamma) * inv_alpha_tilde;
-    const std::uint32_t ba = block_of(c.a, n), bb = block_of(c.b, n);
-    const std::size_t oa = offset_of(c.a, n), ob = offset_of(c.b, n);
+    if (len > 0.0) {               // coincident particles: no gradient (as in the Gauss–Seidel kernel)
+      l.normal = d * (1.0 / len);  // ∇_b C = n = −∇_a C
+      if (c.compliance != last_compliance) {
+        last_compliance = c.compliance;
+        inv_alpha_tilde = h2 / std::max(c.compliance, min_compliance);
+      }
+      // The constraint's change over the substep, C(x) − C(xₙ): eq. 26's ∇C·(x − xₙ) to first
+      // order, but zero for a rigid turn, where the linearisation reads a turn by θ as a shortening
+      // by L(1 − cos θ), and damping then squeezed a fast-spinning tire (its area 96 % at 30 rad/s
+      // and 2 substeps). Its derivative is ∇C, as K's (1 + γ) factor has it.
+      const double rate = len - length(p.x_prev[c.b] - p.x_prev[c.a]);
+      l.force = (len - c.rest_length + gamma * rate) * inv_alpha_tilde;
+      l.stiffness = (1.0 + gamma) * inv_alpha_tilde;
+    }
+    links_.push_back(l);
+  }
+  for (const Link& l : links_) {
+    if (l.stiffness == 0.0) continue;
+    const Vec2 nrm = l.normal;
+    base_f_[l.dof_a] += nrm.x * l.force;
+    base_f_[l.dof_a + 1] += nrm.y * l.force;
+    base_f_[l.dof_b] -= nrm.x * l.force;
+    base_f_[l.dof_b + 1] -= nrm.y * l.force;
+    const double s = l.stiffness;
+    const std::uint32_t ba = block_of(l.a, n), bb = block_of(l.b, n);
+    const std::size_t oa = l.dof_a - B * ba, ob = l.dof_b - B * bb;
     add_outer(base_diagonal_[ba], oa, oa, nrm, s);
     add_outer(base_diagonal_[bb], ob, ob, nrm, s);
     if (ba == bb) {
@@ -645,14 +668,13 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
 }
 
 double GlobalSolver::largest_turn(const Tire& t) const {
-  const std::uint32_t n = t.n;
   const Particles& p = t.particles;
   // The least cos θ between a constraint's d = x_b − x_a before the step and e = d + Δd after it,
   // kept as the fraction (d·e)|d·e| / (|d|²|e|²) = ±cos²θ, compared without dividing.
   double num = 1.0, den = 1.0;
-  for (const DistanceConstraint& c : t.distance.constraints()) {
+  for (const Link& c : links_) {
     const Vec2 d = p.x[c.b] - p.x[c.a];
-    const Vec2 e = d + at(dx_.data(), dof_of(c.b, n)) - at(dx_.data(), dof_of(c.a, n));
+    const Vec2 e = d + at(dx_.data(), c.dof_b) - at(dx_.data(), c.dof_a);
     const double de = dot(d, e), lengths2 = length_squared(d) * length_squared(e);
     if (lengths2 > 0.0 && de * std::abs(de) * den < num * lengths2) {
       num = de * std::abs(de);

@@ -195,7 +195,18 @@ class GlobalSolver {
   std::vector<std::int32_t> contact_of_;  // per particle: its contact, or −1
   std::vector<double> depth_;             // find_contacts: the depth of each contact found
   std::vector<Vec2> gradient_;            // a ring's area gradient
-  double rigid_alpha_tilde_ = 0.0;        // rigid_compliance / h²
+  // The tire's distance constraints as assemble() found them: their particles and unknowns, and
+  // their gradient n = ∇_b C, force term (C + γ ΔC)/α̃ and stiffness (1 + γ)/α̃ (0: no gradient).
+  struct Link {
+    std::uint32_t a = 0, b = 0;
+    std::size_t dof_a = 0, dof_b = 0;
+    Vec2 normal;
+    double force = 0.0;
+    double stiffness = 0.0;
+  };
+  static constexpr std::size_t kMaxLinksPerSegment = 8;  // a tire has 3 (radial spokes) or 5 (cross)
+  std::vector<Link> links_;
+  double rigid_alpha_tilde_ = 0.0;  // rigid_compliance / h²
   Counts counts_;
 };
 
