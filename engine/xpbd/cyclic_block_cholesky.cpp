@@ -36,11 +36,6 @@ V4 splat(double x) { return V4{x, x, x, x}; }
 double& at(Block4& m, std::size_t r, std::size_t c) { return m[r * B + c]; }
 double at(const Block4& m, std::size_t r, std::size_t c) { return m[r * B + c]; }
 
-// Where cholesky() keeps 1/L_jj: in the upper triangle, which L does not use (row 0 holds j = 1 … 3,
-// row 1 holds j = 0).
-double& inverse_diagonal(Block4& m, std::size_t j) { return j == 0 ? m[1 * B + 2] : m[j]; }
-double inverse_diagonal(const Block4& m, std::size_t j) { return j == 0 ? m[1 * B + 2] : m[j]; }
-
 Block4 transpose(const Block4& m) {
   Block4 t{};
   for (std::size_t r = 0; r < B; ++r)
@@ -63,55 +58,48 @@ void subtract_abt(Block4& m, const Block4& at_, const Block4& bt) {
   }
 }
 
-// m ← its lower Cholesky factor L, with 1/L_jj where the upper triangle was (the solves multiply
-// by it rather than divide). False on a pivot that is not positive (or not finite).
-bool cholesky(Block4& m) {
+// m ← L⁻¹ for m's lower Cholesky factor L (m = L Lᵀ), and m_t ← L⁻ᵀ: the solves then multiply by
+// them, four lanes at a time, where substitution would go entry by entry. False on a pivot that is
+// not positive (or not finite).
+bool cholesky_inverse(Block4& m, Block4& m_t) {
+  Block4 l{};
+  double inv[B];
   for (std::size_t j = 0; j < B; ++j) {
     double d = at(m, j, j);
-    for (std::size_t k = 0; k < j; ++k) d -= at(m, j, k) * at(m, j, k);
+    for (std::size_t k = 0; k < j; ++k) d -= at(l, j, k) * at(l, j, k);
     if (!(d > 0.0) || !std::isfinite(d)) return false;
-    const double l = std::sqrt(d);
-    const double inv = 1.0 / l;
-    at(m, j, j) = l;
+    at(l, j, j) = std::sqrt(d);
+    inv[j] = 1.0 / at(l, j, j);
     for (std::size_t i = j + 1; i < B; ++i) {
       double s = at(m, i, j);
-      for (std::size_t k = 0; k < j; ++k) s -= at(m, i, k) * at(m, j, k);
-      at(m, i, j) = s * inv;
+      for (std::size_t k = 0; k < j; ++k) s -= at(l, i, k) * at(l, j, k);
+      at(l, i, j) = s * inv[j];
     }
-    inverse_diagonal(m, j) = inv;
   }
+  // L⁻¹ column by column: (L⁻¹)_jj = 1/L_jj and below it (L⁻¹)_ij = −(Σ_{k=j}^{i−1} L_ik (L⁻¹)_kj)/L_ii.
+  m.fill(0.0);
+  for (std::size_t j = 0; j < B; ++j) {
+    at(m, j, j) = inv[j];
+    for (std::size_t i = j + 1; i < B; ++i) {
+      double s = 0.0;
+      for (std::size_t k = j; k < i; ++k) s += at(l, i, k) * at(m, k, j);
+      at(m, i, j) = -s * inv[i];
+    }
+  }
+  m_t = transpose(m);
   return true;
 }
 
-// X ← L⁻¹ X, the four columns of X at once (forward substitution on its rows).
-void lower_solve_rows(const Block4& l, Block4& x) {
-  V4 r0 = row(x, 0) * splat(inverse_diagonal(l, 0));
-  V4 r1 = (row(x, 1) - splat(at(l, 1, 0)) * r0) * splat(inverse_diagonal(l, 1));
-  V4 r2 = (row(x, 2) - splat(at(l, 2, 0)) * r0 - splat(at(l, 2, 1)) * r1) * splat(inverse_diagonal(l, 2));
-  V4 r3 = (row(x, 3) - splat(at(l, 3, 0)) * r0 - splat(at(l, 3, 1)) * r1 - splat(at(l, 3, 2)) * r2) *
-          splat(inverse_diagonal(l, 3));
-  set_row(x, 0, r0);
-  set_row(x, 1, r1);
-  set_row(x, 2, r2);
-  set_row(x, 3, r3);
-}
-
-// v ← L⁻¹ v (forward substitution)
-void lower_solve(const Block4& l, double* v) {
-  for (std::size_t i = 0; i < B; ++i) {
-    double s = v[i];
-    for (std::size_t k = 0; k < i; ++k) s -= at(l, i, k) * v[k];
-    v[i] = s * inverse_diagonal(l, i);
-  }
-}
-
-// v ← L⁻ᵀ v (back substitution with Lᵀ)
-void upper_solve(const Block4& l, double* v) {
-  for (std::size_t i = B; i-- > 0;) {
-    double s = v[i];
-    for (std::size_t k = i + 1; k < B; ++k) s -= at(l, k, i) * v[k];
-    v[i] = s * inverse_diagonal(l, i);
-  }
+// X ← A X given A = L⁻¹ (row-major, lower triangular), the four columns of X at once: row r of
+// A X is Σ_{k ≤ r} A_rk (row k of X).
+void lower_multiply_rows(const Block4& a, Block4& x) {
+  const V4 x0 = row(x, 0), x1 = row(x, 1), x2 = row(x, 2), x3 = row(x, 3);
+  set_row(x, 0, splat(at(a, 0, 0)) * x0);
+  set_row(x, 1, splat(at(a, 1, 0)) * x0 + splat(at(a, 1, 1)) * x1);
+  set_row(x, 2, splat(at(a, 2, 0)) * x0 + splat(at(a, 2, 1)) * x1 + splat(at(a, 2, 2)) * x2);
+  set_row(
+      x, 3,
+      splat(at(a, 3, 0)) * x0 + splat(at(a, 3, 1)) * x1 + splat(at(a, 3, 2)) * x2 + splat(at(a, 3, 3)) * x3);
 }
 
 // A x, given Aᵀ: Σ_k x_k (row k of Aᵀ).
@@ -126,6 +114,9 @@ V4 product(const Block4& a_t, const double* x) {
 // v ← v − A x, given Aᵀ.
 void subtract_product(double* v, const Block4& a_t, const double* x) { store(v, load(v) - product(a_t, x)); }
 
+// v ← A v, given Aᵀ.
+void multiply(double* v, const Block4& a_t) { store(v, product(a_t, v)); }
+
 // v ← v − Aᵀ x, given Aᵀ: (Aᵀ x)_r = (row r of Aᵀ)·x.
 void subtract_transpose_product(double* v, const Block4& a_t, const double* x) {
   for (std::size_t r = 0; r < B; ++r) {
@@ -139,6 +130,7 @@ void subtract_transpose_product(double* v, const Block4& a_t, const double* x) {
 
 void CyclicBlockCholesky::reserve(std::size_t blocks) {
   diag_.resize(std::max(diag_.size(), blocks));
+  diag_t_.resize(std::max(diag_t_.size(), blocks));
   couple_.resize(std::max(couple_.size(), blocks));
   border_.resize(std::max(border_.size(), blocks));
 }
@@ -160,7 +152,7 @@ bool CyclicBlockCholesky::factor() {
   // border_[j] holds L_{0,j}ᵀ.
   for (std::size_t j = 1; j < p; ++j) {
     if (j > 1) subtract_abt(diag_[j], couple_[j - 1], couple_[j - 1]);  // K_jj − L_{j,j−1} L_{j,j−1}ᵀ
-    if (!cholesky(diag_[j])) return false;
+    if (!cholesky_inverse(diag_[j], diag_t_[j])) return false;
     // Block 0's row: K_{0,j} is K_{1,0}ᵀ at j = 1 and the wrap K_{0,P−1} at j = P−1, zero between;
     // here transposed: K_{1,0} and K_{0,P−1}ᵀ.
     Block4& b = border_[j];
@@ -172,11 +164,11 @@ bool CyclicBlockCholesky::factor() {
       b.fill(0.0);
     if (j > 1)
       subtract_abt(b, couple_[j - 1], border_[j - 1]);  // (L_{0,j−1} L_{j,j−1}ᵀ)ᵀ = L_{j,j−1} L_{0,j−1}ᵀ
-    lower_solve_rows(diag_[j], b);                      // L_{0,j}ᵀ = L_jj⁻¹ (K_{0,j} − …)ᵀ
-    if (j + 1 < p) lower_solve_rows(diag_[j], couple_[j]);  // L_{j+1,j}ᵀ = L_jj⁻¹ K_{j+1,j}ᵀ
-    subtract_abt(diag_[0], b, b);                           // K_00 − Σ L_{0,j} L_{0,j}ᵀ
+    lower_multiply_rows(diag_[j], b);                   // L_{0,j}ᵀ = L_jj⁻¹ (K_{0,j} − …)ᵀ
+    if (j + 1 < p) lower_multiply_rows(diag_[j], couple_[j]);  // L_{j+1,j}ᵀ = L_jj⁻¹ K_{j+1,j}ᵀ
+    subtract_abt(diag_[0], b, b);                              // K_00 − Σ L_{0,j} L_{0,j}ᵀ
   }
-  return cholesky(diag_[0]);
+  return cholesky_inverse(diag_[0], diag_t_[0]);
 }
 
 void CyclicBlockCholesky::forward(double* const* ys, std::size_t count, std::size_t first) const {
@@ -191,24 +183,24 @@ void CyclicBlockCholesky::forward(double* const* ys, std::size_t count, std::siz
     for (std::size_t v = 0; v < count; ++v) {
       double* yj = ys[v] + B * j;
       if (j > first) subtract_product(yj, couple_[j - 1], yj - B);
-      lower_solve(diag_[j], yj);
+      multiply(yj, diag_t_[j]);  // L_jj⁻¹ y_j
       head[v] -= product(border_[j], yj);
     }
   for (std::size_t v = 0; v < count; ++v) {
     store(ys[v], head[v]);
-    lower_solve(diag_[0], ys[v]);
+    multiply(ys[v], diag_t_[0]);
   }
 }
 
 void CyclicBlockCholesky::backward(double* x) const {
   const std::size_t p = blocks_;
   const double* x0 = x;
-  upper_solve(diag_[0], x);
+  multiply(x, diag_[0]);  // L_00⁻ᵀ x_0
   for (std::size_t j = p - 1; j >= 1; --j) {
     double* xj = x + B * j;
     if (j + 1 < p) subtract_transpose_product(xj, couple_[j], xj + B);
     subtract_transpose_product(xj, border_[j], x0);
-    upper_solve(diag_[j], xj);
+    multiply(xj, diag_[j]);
   }
 }
 

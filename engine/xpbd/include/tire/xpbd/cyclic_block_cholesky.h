@@ -53,11 +53,13 @@ class CyclicBlockCholesky {
 
  private:
   std::size_t blocks_ = 0;
-  // Before factor(): K's blocks. After: L's, with diag_[k] = L_kk (lower triangular), couple_[k] =
-  // L_{k+1,k}ᵀ for the chain k = 1 … P−2, and border_[k] = L_{0,k}ᵀ (block 0's row) for k = 1 … P−1:
-  // the blocks below the diagonal are kept transposed, so what the factor and the forward solve
-  // read of them are rows, four doubles side by side.
+  // Before factor(): K's blocks. After: L's, with diag_[k] = L_kk⁻¹ (lower triangular) and
+  // diag_t_[k] = L_kk⁻ᵀ, so that the solves multiply by them; couple_[k] = L_{k+1,k}ᵀ for the chain
+  // k = 1 … P−2, and border_[k] = L_{0,k}ᵀ (block 0's row) for k = 1 … P−1: the blocks below the
+  // diagonal are kept transposed, so what the factor and the forward solve read of them are rows,
+  // four doubles side by side.
   std::vector<Block4> diag_;
+  std::vector<Block4> diag_t_;
   std::vector<Block4> couple_;
   std::vector<Block4> border_;
 };
