@@ -59,32 +59,41 @@ void subtract_abt(Block4& m, const Block4& at_, const Block4& bt) {
 }
 
 // m ← L⁻¹ for m's lower Cholesky factor L (m = L Lᵀ), and m_t ← L⁻ᵀ: the solves then multiply by
-// them, four lanes at a time, where substitution would go entry by entry. False on a pivot that is
-// not positive (or not finite).
+// them, four lanes at a time, where substitution would go entry by entry. Found as m = U D Uᵀ (U unit
+// lower triangular), so that the chain from pivot to pivot holds a division each and no square
+// root: L = U D^½ and L⁻¹ = D^-½ U⁻¹, whose four square roots come last, side by side. False on a
+// pivot that is not positive (or not finite).
 bool cholesky_inverse(Block4& m, Block4& m_t) {
-  Block4 l{};
-  double inv[B];
+  // U and U D below the diagonal ((U D)_ij = U_ij d_j), written before they are read (zeroing them
+  // took a quarter of the time).
+  double u[B][B], ud[B][B], d[B];
   for (std::size_t j = 0; j < B; ++j) {
-    double d = at(m, j, j);
-    for (std::size_t k = 0; k < j; ++k) d -= at(l, j, k) * at(l, j, k);
-    if (!(d > 0.0) || !std::isfinite(d)) return false;
-    at(l, j, j) = std::sqrt(d);
-    inv[j] = 1.0 / at(l, j, j);
+    double dj = at(m, j, j);
+    for (std::size_t k = 0; k < j; ++k) dj -= u[j][k] * ud[j][k];
+    if (!(dj > 0.0) || !std::isfinite(dj)) return false;
+    d[j] = dj;
+    const double inv = 1.0 / dj;
     for (std::size_t i = j + 1; i < B; ++i) {
       double s = at(m, i, j);
-      for (std::size_t k = 0; k < j; ++k) s -= at(l, i, k) * at(l, j, k);
-      at(l, i, j) = s * inv[j];
+      for (std::size_t k = 0; k < j; ++k) s -= u[i][k] * ud[j][k];
+      ud[i][j] = s;
+      u[i][j] = s * inv;
     }
   }
-  // L⁻¹ column by column: (L⁻¹)_jj = 1/L_jj and below it (L⁻¹)_ij = −(Σ_{k=j}^{i−1} L_ik (L⁻¹)_kj)/L_ii.
+  // U⁻¹ column by column: 1 on the diagonal, (U⁻¹)_ij = −Σ_{k=j}^{i−1} U_ik (U⁻¹)_kj below it; then
+  // row i times d_i^-½.
   m.fill(0.0);
   for (std::size_t j = 0; j < B; ++j) {
-    at(m, j, j) = inv[j];
+    at(m, j, j) = 1.0;
     for (std::size_t i = j + 1; i < B; ++i) {
       double s = 0.0;
-      for (std::size_t k = j; k < i; ++k) s += at(l, i, k) * at(m, k, j);
-      at(m, i, j) = -s * inv[i];
+      for (std::size_t k = j; k < i; ++k) s -= u[i][k] * at(m, k, j);
+      at(m, i, j) = s;
     }
+  }
+  for (std::size_t i = 0; i < B; ++i) {
+    const double scale = 1.0 / std::sqrt(d[i]);
+    for (std::size_t j = 0; j <= i; ++j) at(m, i, j) *= scale;
   }
   m_t = transpose(m);
   return true;
