@@ -25,13 +25,20 @@ std::size_t dof_of(std::uint32_t particle, std::uint32_t n) {
   return CyclicBlockCholesky::kBlock * block_of(particle, n) + offset_of(particle, n);
 }
 
-// m[ro.., co..] += s n nᵀ: a 2×2 outer product into a 4×4 block, at particle offsets ro and co.
-void add_outer(Block4& m, std::size_t ro, std::size_t co, Vec2 n, double s) {
+// s n nᵀ, a 2×2 symmetric outer product: its three distinct entries.
+struct Outer {
+  double xx, xy, yy;
+  Outer operator-() const { return {-xx, -xy, -yy}; }
+};
+Outer outer(Vec2 n, double s) { return {s * n.x * n.x, s * n.x * n.y, s * n.y * n.y}; }
+
+// m[ro.., co..] += o: a 2×2 outer product into a 4×4 block, at particle offsets ro and co.
+void add_outer(Block4& m, std::size_t ro, std::size_t co, const Outer& o) {
   constexpr std::size_t B = CyclicBlockCholesky::kBlock;
-  m[ro * B + co] += s * n.x * n.x;
-  m[ro * B + co + 1] += s * n.x * n.y;
-  m[(ro + 1) * B + co] += s * n.y * n.x;
-  m[(ro + 1) * B + co + 1] += s * n.y * n.y;
+  m[ro * B + co] += o.xx;
+  m[ro * B + co + 1] += o.xy;
+  m[(ro + 1) * B + co] += o.xy;
+  m[(ro + 1) * B + co + 1] += o.yy;
 }
 
 double dot_n(const double* a, const double* b, std::size_t n) {
@@ -133,16 +140,17 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     const double s = l.stiffness;
     const std::uint32_t ba = block_of(l.a, n), bb = block_of(l.b, n);
     const std::size_t oa = l.dof_a - B * ba, ob = l.dof_b - B * bb;
-    add_outer(base_diagonal_[ba], oa, oa, nrm, s);
-    add_outer(base_diagonal_[bb], ob, ob, nrm, s);
+    const Outer o = outer(nrm, s);
+    add_outer(base_diagonal_[ba], oa, oa, o);
+    add_outer(base_diagonal_[bb], ob, ob, o);
     if (ba == bb) {
-      add_outer(base_diagonal_[ba], oa, ob, nrm, -s);
-      add_outer(base_diagonal_[ba], ob, oa, nrm, -s);
+      add_outer(base_diagonal_[ba], oa, ob, -o);
+      add_outer(base_diagonal_[ba], ob, oa, -o);
     } else if (bb == next_block(ba, n)) {
-      add_outer(base_coupling_[ba], ob, oa, nrm, -s);  // block row bb, column ba
+      add_outer(base_coupling_[ba], ob, oa, -o);  // block row bb, column ba
     } else {
       TIRE_ASSERT(ba == next_block(bb, n), "a tire constraint joins segments that are not neighbours");
-      add_outer(base_coupling_[bb], oa, ob, nrm, -s);
+      add_outer(base_coupling_[bb], oa, ob, -o);
     }
   }
 }
@@ -365,7 +373,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
   const auto add_row = [&](const Contact& c, Vec2 d, double k, double force) {
     const std::uint32_t i = c.particle;
     const std::size_t dof = dof_of(i, n);
-    add_outer(k_.diagonal(block_of(i, n)), offset_of(i, n), offset_of(i, n), d, k);
+    add_outer(k_.diagonal(block_of(i, n)), offset_of(i, n), offset_of(i, n), outer(d, k));
     f_[dof] += d.x * force;
     f_[dof + 1] += d.y * force;
     if (c.body < 0) return;
