@@ -172,13 +172,6 @@ void DistanceConstraintSet::set_rest_length(std::size_t k, double rest_length) {
       if (batch.a[l] == batch.a[0]) state.rest_length[l] = rest_length;
 }
 
-DistanceConstraint DistanceConstraintSet::constraint(std::size_t k) const {
-  const std::uint32_t s = layout_->slot()[k];
-  const DistanceLayout::Pair p = layout_->pairs()[k];
-  const double compliance = pending_.empty() ? compliance_[layout_->group()[k]] : pending_[k];
-  return {p.a, p.b, state_[s / kLanes].rest_length[s % kLanes], compliance};
-}
-
 void DistanceConstraintSet::set_compliance(std::size_t first, std::size_t count, double compliance) {
   TIRE_ASSERT(compliance >= 0.0 && std::isfinite(compliance), "a compliance is negative, NaN or infinite");
   if (pending_.empty())

@@ -231,4 +231,12 @@ class DistanceConstraintSet {
   ArrayBlock own_;  // the arrays' block when they have one of their own; empty in a tire's
 };
 
+// Inline: the global method's assembly reads every constraint of a tire each solve.
+inline DistanceConstraint DistanceConstraintSet::constraint(std::size_t k) const {
+  const std::uint32_t s = layout_->slot()[k];
+  const DistanceLayout::Pair p = layout_->pairs()[k];
+  const double compliance = pending_.empty() ? compliance_[layout_->group()[k]] : pending_[k];
+  return {p.a, p.b, state_[s / kLanes].rest_length[s % kLanes], compliance};
+}
+
 }  // namespace tire
