@@ -110,8 +110,8 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
   const auto constraints = t.distance.constraints();
   TIRE_ASSERT(constraints.size() <= links_.capacity(),
               "a tire with more constraints than the global solver has room for");
-  // Each constraint's gradient and its terms of K and f first, then into the blocks: the square
-  // roots and divisions of one loop overlap, which the blocks' sums would hold in sequence.
+  // Each constraint's gradient and its terms of K and f, kept in links_ (largest_turn reads the
+  // particles and unknowns again), then summed into the blocks.
   for (const DistanceConstraint& c : constraints) {
     Link l;
     l.a = c.a;
