@@ -316,12 +316,8 @@ TEST_CASE("global: an active-set pass that lets friction go solves on the factor
     const Tire& tb = b.tires().front();
     for (std::size_t i = 0; i < ta.particles.x.size(); ++i)
       most_apart = std::max(most_apart, length(ta.particles.x[i] - tb.particles.x[i]));
-    work_a.solves += ta.global_work.solves;
-    work_a.factorisations += ta.global_work.factorisations;
-    work_a.updates += ta.global_work.updates;
-    work_b.solves += tb.global_work.solves;
-    work_b.factorisations += tb.global_work.factorisations;
-    work_b.updates += tb.global_work.updates;
+    work_a += ta.global_work;
+    work_b += tb.global_work;
   }
   INFO("reusing: " << work_a.solves << " solves, " << work_a.factorisations << " factorisations, "
                    << work_a.updates << " updates; refactoring: " << work_b.factorisations

@@ -412,7 +412,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
       c.friction_in_k = true;
     }
   }
-  ++counts_.factorisations;
+  ++work_.factorisations;
   if (!k_.factor()) return false;
   // L⁻¹ f, the rows' y_r = L⁻¹ g_r (the areas' and the grab's from their gradients) and the bodies'
   // L⁻¹ B in forward sweeps.
@@ -498,7 +498,7 @@ bool GlobalSolver::solve_changes(const Tire& t) {
     }
   }
   forward_rows(first_new, false);
-  ++counts_.updates;
+  ++work_.updates;
   return solve_system(t);
 }
 
@@ -632,7 +632,8 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   TIRE_ASSERT(t.n <= segments_, "a global solver too small for the tire: reserve() it first");
   const std::uint32_t n = t.n;
   const double gamma = t.spec.material_damping / ctx.h;  // γ = α̃β̃/h with β = τ/α (XPBD eq. 26)
-  counts_ = {};
+  work_ = {};
+  work_.solves = 1;
   rows_.clear();
   contacts_.clear();
   bodies_.clear();
@@ -677,9 +678,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   for (int pass = 1; pass <= passes && update_active_set(t, ctx); ++pass)
     if (!(ctx.config->reuse_factor && solve_changes(t)) && !solve_pass(t)) return;
   t.newton_turn = std::max(t.newton_turn, largest_turn(t));
-  ++t.global_work.solves;
-  t.global_work.factorisations += counts_.factorisations;
-  t.global_work.updates += counts_.updates;
+  t.global_work += work_;
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
   write_back(t, ctx);
 }
@@ -751,7 +750,6 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
       if (c.normal.y >= g) t.on_tire[c.particle] = 1;  // resting on the neighbour
     }
     owe(rec, c.particle, rec.lambda_n - before.lambda_n, rec.lambda_t - before.lambda_t);
-    ++counts_.contacts;
   }
 }
 

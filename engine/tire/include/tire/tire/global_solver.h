@@ -16,20 +16,22 @@
 // t·(x − xₙ − surface motion) = 0 while |μ_t| ≤ μ_s μ_n (Müller et al. 2020, Sec. 3.5; kinetic
 // friction stays in the velocity pass, Sec. 3.6). The normals go into K, which keeps its shape. The
 // first few frictions are rows of the capacitance system below instead, since they are what the
-// active-set passes change most (a driven tire's wheelspin lets go of a third of its contacts'
-// friction): a pass that only lets frictions go, or takes in new contacts, solves on the factor it
-// has, dropping those rows or adding some (Woodbury), and refactors K only when a normal in K lets
-// go or a free prop's contact changes. A free dynamic prop (one
-// Box2D holds on nothing: it moves within the tick as it is pushed) is a rigid body in the system:
-// its displacement q = (u, θ) over the substep is three more unknowns, with its mass and inertia as
-// their M and each of its contacts a constraint C = d·x − plane − a·q, a = (d, r × d) (Müller 2020
-// eq. 2–3), so that all its contacts with the tire move it together, by what they push in total.
-// (Each contact taking the prop's give alone, its generalised inverse mass, as the Gauss–Seidel
-// contacts do, lets every contact move it as if the others were not there, and the prop then moves
-// by their sum: a 6 kg crate lying on a tire at 2 substeps bounced on it by 1.3 cm for ever.)
-// A prop resting on something stays on its course within the tick (rigid_world.h): its contacts
-// keep that give, scaled by its mobility. Which contacts are in is found by active-set passes, one
-// factorisation each.
+// active-set passes change most (a tire driven flat out spins its wheels, and 39 % of its solves
+// let a contact's friction go after the first pass): a pass that only lets frictions go, or takes
+// in new contacts, solves on the factor it has, dropping those rows or adding some (Woodbury), and
+// refactors K only when a normal in K lets go or a free prop's contact changes.
+//
+// A free dynamic prop (one Box2D holds on nothing: it moves within the tick as it is pushed) is a
+// rigid body in the system: its displacement q = (u, θ) over the substep is three more unknowns,
+// with its mass and inertia as their M and each of its contacts a constraint C = d·x − plane − a·q,
+// a = (d, r × d) (Müller 2020 eq. 2–3), so that all its contacts with the tire move it together, by
+// what they push in total. (Each contact taking the prop's give alone, its generalised inverse mass,
+// as the Gauss–Seidel contacts do, lets every contact move it as if the others were not there, and
+// the prop then moves by their sum: a 6 kg crate lying on a tire at 2 substeps bounced on it by
+// 1.3 cm for ever.) A prop resting on something stays on its course within the tick
+// (rigid_world.h): its contacts keep that give, scaled by its mobility. Which contacts are in is
+// found by active-set passes.
+//
 // The two area constraints (their gradients are dense over a ring), the mouse grab and those
 // contact rows keep their multipliers μ as unknowns, a small dense "capacitance" system:
 //     (G K⁻¹ Gᵀ + α̃_G/(1 + γ)) μ = b − G K⁻¹ f,   then Δx = K⁻¹ (f + Gᵀ μ).
@@ -65,14 +67,6 @@ class GlobalSolver {
   // system, moves the particles, and leaves the contact records (and the impulses owed to props)
   // as the Gauss–Seidel contacts would.
   void solve(Tire& tire, const SubstepContext& ctx);
-
-  // Work done by the last solve(), for tests and the bench.
-  struct Counts {
-    std::uint32_t factorisations = 0;  // of K: the first active-set pass, and those that change K
-    std::uint32_t updates = 0;         // passes solved on the factor they found
-    std::uint32_t contacts = 0;        // contacts in the system at the end
-  };
-  const Counts& counts() const { return counts_; }
 
  private:
   // A row of the capacitance system, g·Δx + α̃ μ = b with K Δx = f + g μ: an area constraint, the
@@ -207,7 +201,7 @@ class GlobalSolver {
   static constexpr std::size_t kMaxLinksPerSegment = 8;  // a tire has 3 (radial spokes) or 5 (cross)
   std::vector<Link> links_;
   double rigid_alpha_tilde_ = 0.0;  // rigid_compliance / h²
-  Counts counts_;
+  Tire::GlobalWork work_;           // the current solve's, added to the tire's at its end
 };
 
 // One GlobalSolver per thread that may solve tires at once: lend() hands out one no other thread

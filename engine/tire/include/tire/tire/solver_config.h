@@ -61,7 +61,7 @@ struct SolverConfig {
   int contact_passes = 8;
   // Whether a pass that only lets frictions go or takes in new contacts solves on the factor of K
   // the pass before it made (GlobalSolver: the changes as rows, by Woodbury), rather than
-  // refactoring K: the same solution to rounding, for a third of the cost of a driven tire. For
+  // refactoring K: the same solution to rounding, a fifth less work for a tire driven flat out. For
   // the tests and the bench, which compare the two.
   bool reuse_factor = true;
   // The compliance of what is rigid in the global solve (m/N): contacts, and distance constraints

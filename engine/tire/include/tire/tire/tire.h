@@ -201,6 +201,12 @@ struct Tire {
     std::uint32_t solves = 0;
     std::uint32_t factorisations = 0;
     std::uint32_t updates = 0;
+    GlobalWork& operator+=(const GlobalWork& o) {
+      solves += o.solves;
+      factorisations += o.factorisations;
+      updates += o.updates;
+      return *this;
+    }
   };
   GlobalWork global_work;
 
