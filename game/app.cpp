@@ -520,7 +520,7 @@ void App::draw_ui() {
   hud.tick = world.tick();
   if (const tire::Tire* p = world.player()) {
     hud.speed = length(p->velocity());
-    hud.grounded = p->grounded();
+    hud.grounded = p->touched_ground_within(world.config().jump_grace);
   }
   hud.fps = fps_;
   hud.physics_ms = physics_ms_;

@@ -120,7 +120,8 @@ std::string dump(const Level& level) {
   v(level.gravity);
   const SolverConfig& c = level.solver;
   s << "|solver " << c.dt << " " << c.substeps << " " << c.iterations << " " << static_cast<int>(c.method)
-    << " " << c.damping << " " << c.tunnel_clamp << " " << c.ground_normal_y << " " << c.sleep << "\n";
+    << " " << c.damping << " " << c.tunnel_clamp << " " << c.ground_normal_y << " " << c.jump_grace << " "
+    << c.sleep << "\n";
   for (const TireSpec& t : level.tires) {
     s << "tire ";
     v(t.position);

@@ -30,7 +30,8 @@ TEST_CASE("every shipped level is valid", "[unit][level]") {
 TEST_CASE("the default level reads as written", "[unit][level]") {
   const Level level = default_level();
   CHECK(level.name == "First roll");
-  CHECK(level.solver.substeps == 8);
+  CHECK(level.solver.method == SolverMethod::global);
+  CHECK(level.solver.substeps == 2);
   REQUIRE(level.tires.size() == 1);
   CHECK(level.tires[0].segments == 28);
   CHECK(level.tires[0].compliance.inner == 1e-7);

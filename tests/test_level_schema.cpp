@@ -413,6 +413,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"damping", s.damping},
         {"tunnel_clamp", s.tunnel_clamp},
         {"ground_normal_y", s.ground_normal_y},
+        {"jump_grace", s.jump_grace},
         {"method", method_name(s.method)},
         {"sleep", s.sleep}}},
       {"tire",

@@ -170,6 +170,9 @@ std::vector<LevelKey> solver_keys() {
                "{range}: a particle travels at most this many rest tread-segment lengths per substep"),
       from_row(P::solver_ground_normal_y,
                "{range}: a contact counts as ground (for jumping) when its normal's y is at least this"),
+      from_row(
+          P::solver_jump_grace,
+          "{range}: a jump is honoured when the tread touched ground at most this long ago (coyote time)"),
       Key("method", T::choice,
           "\"gauss-seidel\": each constraint on its own; \"global\": each tire solved as one system")
           .choices(methods)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <span>
 
@@ -86,6 +87,7 @@ void Tire::reset() {
   std::fill(contacts.begin(), contacts.end(), ContactRecord{});
   std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
+  air_time = std::numeric_limits<double>::infinity();
   distance.reset_lambda();
   area_lambda = 0.0;
   rim_area_lambda = 0.0;

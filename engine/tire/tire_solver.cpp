@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tire/math/check.h"
 #include "tire/math/exp.h"
@@ -322,6 +323,7 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
                                  ctx.time + ctx.h, ctx.time + ctx.h});
     if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
   });
+  t.air_time = t.grounded() ? 0.0 : t.air_time + ctx.h;
   // The global method damps inside its solve (XPBD eq. 26); Gauss–Seidel damps here.
   const bool dashpots = ctx.config->method == SolverMethod::gauss_seidel;
   if (const double tau = t.spec.material_damping; tau > 0.0 && dashpots) {
@@ -347,8 +349,10 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
   rigid.query(bounds_of(t.particles.x).expanded(reach), t.candidates, t.prop_candidates);
-  if (t.control.jump && t.grounded())
+  if (t.control.jump && t.touched_ground_within(config.jump_grace)) {
     for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
+    t.air_time = std::numeric_limits<double>::infinity();  // one jump until the tread lands again
+  }
   t.control.jump = false;
   t.tick_contacts = TickContacts{};
   t.newton_turn = 0.0;

@@ -71,6 +71,7 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::solver_damping:
     case ParamId::solver_tunnel_clamp:
     case ParamId::solver_ground_normal_y:
+    case ParamId::solver_jump_grace:
     case ParamId::gravity_x:
     case ParamId::gravity_y: return false;
   }
@@ -137,6 +138,7 @@ std::optional<double> World::parameter(std::string_view key) const {
     case ParamId::solver_damping: return config_.damping;
     case ParamId::solver_tunnel_clamp: return config_.tunnel_clamp;
     case ParamId::solver_ground_normal_y: return config_.ground_normal_y;
+    case ParamId::solver_jump_grace: return config_.jump_grace;
     case ParamId::gravity_x: return gravity_.x;
     case ParamId::gravity_y: return gravity_.y;
     default: break;
@@ -572,6 +574,7 @@ void World::hash_into(StateHash& h) const {
     h.add_bytes(t.particles.x.data(), t.particles.x.size() * sizeof(Vec2));
     h.add_bytes(t.particles.v.data(), t.particles.v.size() * sizeof(Vec2));
     h.add_bytes(t.grounded_flags.data(), t.grounded_flags.size());
+    h.add(t.air_time);
     if (config_.sleep) {  // the sleep state, where sleeping is on (sleep_islands.h)
       h.add(t.asleep);
       h.add(t.still_time);

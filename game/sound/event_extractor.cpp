@@ -91,7 +91,7 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
     if (t.asleep) continue;  // not simulated: silent, and its figures are those it fell asleep with
     impacts(t, tick, out);
     const double pitch_scale = size_pitch(t);
-    if (t.grounded()) {
+    if (t.touched_ground_within(world.config().jump_grace)) {
       const double omega = std::abs(t.angular_velocity());
       const double tread_speed = omega * t.spec.outer_radius;
       if (tread_speed >= tuning_.roll_min_speed) {
@@ -122,7 +122,7 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
   const tire::Tire* player = world.player();
   if (input.jump && player_grounded_ && player)
     out.push_back({tick, SoundKind::jump, Surface::none, -1, tuning_.jump_gain, 1.0});
-  player_grounded_ = player && player->grounded();
+  player_grounded_ = player && player->touched_ground_within(world.config().jump_grace);
 }
 
 void EventExtractor::after_tick(const tire::LevelSession& session, const tire::TickInput& input,

@@ -9,11 +9,14 @@ TEST_CASE("a tire launched at 10 km/s at a wall is clamped, stopped by the wall 
           "[extremes][clamp]") {
   // Ground, and a 5 cm wall at x = 5 m (100 m tall). The tire rests on the ground at x = 0 and
   // is given 1e4 m/s towards the wall; max_speed is raised to 1e5 m/s so that only the clamp
-  // (one outer segment per substep: 0.112 m / (1/480 s) = 53.7 m/s) limits it.
+  // (eight outer segments a tick, both as the default's 4 a substep at 2 substeps and as Gauss–Seidel
+  // 8 × 1's one: 0.112 m / (1/480 s) = 53.7 m/s) limits it.
   // Energy scale: E after the first tick, when the clamp has acted (½ M v_clamp² + M g y ≈ 14.4 kJ):
   // E(0) = ½ · 10 · 1e8 = 5e8 J is no meaningful scale for what follows, and from the first tick on
   // nothing may add energy. Area bounds [0.2, 3] from 1 s on; the impact comes at ~0.1 s.
-  const SolverConfig config;
+  const bool global = GENERATE(true, false);
+  const SolverConfig config = global ? SolverConfig{} : SolverConfig::gauss_seidel_8x1();
+  CAPTURE(method_name(config.method));
   World world = ground_world(config);
   world.add_obstacle({{{5, -10}, {5.05, 100}}});
   TireSpec spec = tire_spec({0, 0.5});
@@ -41,8 +44,10 @@ TEST_CASE("a tire launched at 10 km/s at a wall is clamped, stopped by the wall 
              fmt("%.3f", t.centroid().y) + " m, final area " + fmt("%.3f", t.area_ratio()));
   probe.judge();
   INFO(probe.line());
-  CHECK(max_x <=
-        5.0);  // it did not pass into or through the wall (contacts put particles on its face, x = 5)
+  // It did not pass into or through the wall: Gauss–Seidel's contacts put particles on its face,
+  // x = 5; the global method's are as stiff as SolverConfig::rigid_compliance (1e-12 m/N), and
+  // under the impact sink by nanometres (6.3e-9 m).
+  CHECK(max_x <= 5.0 + (global ? 1e-6 : 0.0));
 }
 
 TEST_CASE("a tire falling from 10 km reaches the clamp speed and lands without instability",

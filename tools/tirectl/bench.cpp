@@ -130,8 +130,9 @@ enum class Sleep : bool { off, on };
 std::unique_ptr<Steppable> pile(int count, int crates = 0,
                                 tire::SolverMethod method = tire::SolverMethod::gauss_seidel,
                                 int substeps = 8, Sleep sleep = Sleep::off) {
-  tire::SolverConfig config;
-  config.method = method;
+  tire::SolverConfig config = method == tire::SolverMethod::gauss_seidel
+                                  ? tire::SolverConfig::gauss_seidel_8x1()
+                                  : tire::SolverConfig{};
   config.substeps = substeps;
   config.sleep = sleep == Sleep::on;
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
@@ -186,7 +187,8 @@ constexpr int kCrowdFalling = 100;
 constexpr std::uint64_t kCrowdDropTicks = 240;
 
 std::unique_ptr<Steppable> crowd(int resting) {
-  auto world = std::make_unique<tire::World>(tire::SolverConfig{}, tire::Vec2{0.0, -9.81});
+  // Gauss–Seidel 8 × 1, the method for crowds and piles of hundreds (README, "The default method").
+  auto world = std::make_unique<tire::World>(tire::SolverConfig::gauss_seidel_8x1(), tire::Vec2{0.0, -9.81});
   const double shelves_right = kCrowdPitLeft - 1.0;
   // The ground under the shelves is the lowest shelf; the pit's floor and walls.
   world->add_obstacle({{{-1.0, -1.0}, {shelves_right, 0.0}}});
@@ -237,7 +239,8 @@ std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int subste
   config.substeps = substeps;
   config.iterations = iterations;
   config.method = method;
-  config.sleep = false;  // the solver's cost: a resting tire would fall asleep
+  config.tunnel_clamp = 1.0;  // the prototype's scene as measured before the default changed
+  config.sleep = false;       // the solver's cost: a resting tire would fall asleep
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
   world->add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
   world->add_obstacle({{{3.0, 0.0}, {4.0, 0.6}}});

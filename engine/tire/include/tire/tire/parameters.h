@@ -43,6 +43,7 @@ enum class ParamId : std::uint8_t {
   solver_damping,
   solver_tunnel_clamp,
   solver_ground_normal_y,
+  solver_jump_grace,
   gravity_x,
   gravity_y,
   tire_angle,
@@ -114,7 +115,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 27>{{
+  return std::array<Parameter, 28>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -127,6 +128,8 @@ inline constexpr std::array kParameters = [] {
        kLevelOnly, "Anti-tunneling clamp (rest tread-segment lengths per substep), in {range}."},
       {P::solver_ground_normal_y, "solver.ground_normal_y", "", {0, 1}, false, kSolver.ground_normal_y, kLevelOnly,
        "A contact is ground (for jumping) when its normal's y is at least this, in {range}; 0.5 accepts up to 60°."},
+      {P::solver_jump_grace, "solver.jump_grace", "s", {0, 1}, false, kSolver.jump_grace, kLevelOnly,
+       "A jump is honoured when the tread touched ground at most this long ago (s), in {range}."},
       // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
       // each component in this range too.
       {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,

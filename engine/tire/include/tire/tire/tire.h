@@ -17,6 +17,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "tire/rigid/prop_geometry.h"
@@ -126,6 +127,9 @@ struct Tire {
   double area() const;  // current area of the outer ring (m²)
   double area_ratio() const { return area() / area_constraint.rest_area; }
   bool grounded() const;  // an outer particle touched ground in the last substep
+  // The tread touched ground at most `grace` seconds ago (0: in the last substep). The jump asks
+  // this with SolverConfig::jump_grace; so do the HUD and the tread's sound, which then agree with it.
+  bool touched_ground_within(double grace) const { return air_time <= grace; }
   // Particles in contact in the last substep: with a surface, or with another tire (pushed by it or
   // carrying it).
   std::size_t touching_particles() const;
@@ -178,7 +182,10 @@ struct Tire {
   // Bit i set: contacts[i] was written this substep. Only those are visited and cleared, so a
   // substep costs nothing for the particles nowhere near a surface.
   ArrayView<std::uint64_t> contact_mask;
-  ArrayView<std::uint8_t> grounded_flags;      // per particle, last substep
+  ArrayView<std::uint8_t> grounded_flags;  // per particle, last substep
+  // How long since the tread last touched ground (s): 0 while it does; infinite after a jump and at
+  // spawn, until it lands. A jump is honoured while it is at most SolverConfig::jump_grace.
+  double air_time = std::numeric_limits<double>::infinity();
   std::vector<std::uint32_t> candidates;       // obstacles near the tire this tick (broad phase)
   std::vector<std::uint32_t> prop_candidates;  // props near the tire this tick (broad phase)
   std::vector<PropFrame> prop_frames;          // their poses this substep

@@ -23,7 +23,7 @@ struct SubstepContext {
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and
-// the tire is grounded.
+// the tread touched ground within SolverConfig::jump_grace.
 void begin_tick(Tire& tire, const SolverConfig& config, const RigidWorld& rigid);
 
 // A substep in three phases, so that a world can solve contacts between tires inside each iteration:
