@@ -90,6 +90,10 @@ tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS be
 tirectl_test("bench times a tire rolling on flat ground by either method" 0
   ARGS bench --scene rolling-gauss-seidel-8x1 --scene rolling-global-2x1 --warmup 10 --steps 3
   STDOUT "\nrolling-gauss-seidel-8x1,1,56,[0-9]+,0,[0-9]+,28,8,1,3,[^\n]*\nrolling-global-2x1,1,56,[0-9]+,0,[0-9]+,28,2,1,3,")
+# The bare tire (the tire solver alone) at the default settings, as the flat level is: global 2 x 1.
+tirectl_test("bench steps the bare tire and the flat level at the default settings" 0
+  ARGS bench --scene bare-tire --scene flat-level --warmup 10 --steps 3
+  STDOUT "\nbare-tire,1,56,[0-9]+,0,1,28,2,1,3,[^\n]*\nflat-level,1,56,[0-9]+,0,[0-9]+,28,2,1,3,")
 tirectl_test("bench refuses an unknown scene" 2 ARGS bench --scene pile-7 STDERR "unknown scene \"pile-7\"")
 tirectl_test("bench steps with the plain schedule when asked" 0 ARGS bench --scene pile-10 --schedule plain --steps 3 --warmup 2
   STDOUT "\npile-10,10,560,")

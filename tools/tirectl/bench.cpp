@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "process_memory.h"
 #include "tire/io/level.h"
+#include "tire/tire/global_solver.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/world/world.h"
 
@@ -69,17 +70,19 @@ class WorldScene final : public Steppable {
 };
 
 // One tire and its ground, stepped by the tire solver alone: no World around it (no level, no
-// divergence guard, no Box2D stepping, nothing else). The floor for "flat-level".
+// divergence guard, no Box2D stepping, no refinement, nothing else), at the default settings, as
+// "flat-level" is. Its floor.
 class BareTireScene final : public Steppable {
  public:
   BareTireScene() : rigid_({0.0, -9.81}), tire_(0, spec()) {
     rigid_.add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
+    global_.reserve(1, spec().segments);
   }
   void step(const tire::TickInput& input) override {
     tire_.control = {input.steer, input.jump};
     tire::begin_tick(tire_, config_, rigid_);
     const double h = config_.dt / config_.substeps;
-    tire::SubstepContext ctx{h, 0.0, {0.0, -9.81}, &config_, &rigid_};
+    tire::SubstepContext ctx{h, 0.0, {0.0, -9.81}, &config_, &rigid_, false, &global_};
     for (int s = 0; s < config_.substeps; ++s) {
       ctx.time = s * h;
       tire::substep(tire_, ctx, rigid_);
@@ -104,6 +107,7 @@ class BareTireScene final : public Steppable {
   tire::SolverConfig config_;
   tire::RigidWorld rigid_;
   tire::Tire tire_;
+  tire::GlobalSolverPool global_;  // the default method's solver
 };
 
 // The same tire and ground as a level file read by the loader, stepped by the World: everything a
@@ -277,11 +281,11 @@ const Scene kScenes[] = {
      [] { return prototype_world(tire::SpokePattern::radial, 1, 22); },
      {1.0, false}},
     {"default-tire",
-     "1 tire, 28 segments, cross spokes, 8 substeps x 1 iteration (the default level)",
+     "1 tire, 28 segments, cross spokes, Gauss-Seidel 8 substeps x 1 iteration (the default until issue 13)",
      [] { return prototype_world(tire::SpokePattern::cross, 8, 1); },
      {1.0, false}},
     {"global-tire",
-     "as default-tire, solved by the global method at its default settings (4 substeps x 1 iteration)",
+     "as default-tire, solved by the global method at 4 substeps x 1 iteration",
      [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); },
      {1.0, false}},
     {"global-tire-2x1",
