@@ -34,9 +34,10 @@ struct SolverConfig {
   double ground_normal_y = 0.5;
   // A jump is honoured when the tread touched ground at most this long ago (s), not only when it
   // touches it in the tick's last substep ("coyote time"). A tire as stiff as its material rolls
-  // like a polygon: flat out on level ground it lands on each corner and leaves the ground between
-  // corners, so at 2 substeps the last substep of 57 % of ticks has no ground contact (Gauss–Seidel
-  // at 8 × 1, soft from its substeps, none), and a jump asked for then was lost. 0.1 s is six ticks.
+  // like a polygon: driven on level ground it lands on each corner and leaves the ground between
+  // corners. On level 01 at 2 substeps, between 1 and 2 s of full drive, the last substep of 57 % of
+  // ticks had no ground contact (Gauss–Seidel 8 × 1, soft from its substeps: none), and a jump
+  // asked for in those ticks was lost. 0.1 s is six ticks.
   double jump_grace = 0.1;
   // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state.
   double divergence_limit = 1.0e5;
