@@ -134,9 +134,12 @@ enum class Sleep : bool { off, on };
 std::unique_ptr<Steppable> pile(int count, int crates = 0,
                                 tire::SolverMethod method = tire::SolverMethod::gauss_seidel,
                                 int substeps = 8, Sleep sleep = Sleep::off) {
+  // Gauss–Seidel as its old default had it (clamp 1); the global method as the default has it. The
+  // method set either way, so that a scene's name holds whatever the default is.
   tire::SolverConfig config = method == tire::SolverMethod::gauss_seidel
                                   ? tire::SolverConfig::gauss_seidel_8x1()
                                   : tire::SolverConfig{};
+  config.method = method;
   config.substeps = substeps;
   config.sleep = sleep == Sleep::on;
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
