@@ -125,12 +125,31 @@ std::optional<SurfaceContact> polygon_contact(const PropGeometry& g, Vec2 from, 
   return SurfaceContact{g.normals[enter_edge], depth};
 }
 
+// Whether `p` is inside the chain's solid: behind an edge's line by less than `thickness`, within
+// the edge's extent.
+bool inside_chain(const PropGeometry& g, Vec2 p) {
+  const std::size_t n = g.vertices.size();
+  for (std::size_t i = 0; i < g.normals.size(); ++i) {
+    const Vec2 a = g.vertices[i], edge = g.vertices[(i + 1) % n] - a;
+    const double s = dot(g.normals[i], p - a);
+    if (s >= 0.0 || s <= -g.thickness) continue;
+    const double t = dot(p - a, edge) / length_squared(edge);
+    if (t >= 0.0 && t <= 1.0) return true;
+  }
+  return false;
+}
+
 // One-sided thick chain: inside an edge means behind its line by less than `thickness`, within
 // its extent. A particle that crossed an edge's line from the front this substep is sent back
-// through that edge; one already behind is pushed out through the edge it is least deep behind.
-std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Vec2 to) {
+// through that edge; one already inside at the substep's start is pushed out through the edge it
+// is least deep behind, if a surface held it at the end of the substep before (`held`). One that
+// comes in from behind the solid (from below a floating slope, or past its end) passes, as through
+// Box2D's one-sided edges: pushed out through the front, it would be thrown by up to `thickness` in
+// one substep (a tire driven up under level 07's slope left it at 105 m/s).
+std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Vec2 to, bool held) {
   const std::size_t n = g.vertices.size();
   std::optional<SurfaceContact> best;
+  const bool from_inside = held && inside_chain(g, from);
   for (std::size_t i = 0; i < g.normals.size(); ++i) {
     const Vec2 a = g.vertices[i], b = g.vertices[(i + 1) % n];
     const Vec2 normal = g.normals[i];
@@ -138,6 +157,7 @@ std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Ve
     if (s_to >= 0.0 || s_to <= -g.thickness) continue;
     const Vec2 edge = b - a;
     const double s_from = dot(normal, from - a);
+    if (s_from < 0.0 && !from_inside) continue;  // came from behind the solid
     double t;
     if (s_from >= 0.0) {
       // Crossed the line this substep: where along the edge?
@@ -157,12 +177,12 @@ std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Ve
 
 }  // namespace
 
-std::optional<SurfaceContact> local_contact(const PropGeometry& g, Vec2 from, Vec2 to) {
+std::optional<SurfaceContact> local_contact(const PropGeometry& g, Vec2 from, Vec2 to, bool held) {
   switch (g.shape) {
     case PropShape::circle: return circle_contact(g.radius, from, to);
     case PropShape::box:
     case PropShape::polygon: return polygon_contact(g, from, to);
-    case PropShape::chain: return chain_contact(g, from, to);
+    case PropShape::chain: return chain_contact(g, from, to, held);
   }
   return std::nullopt;
 }

@@ -39,6 +39,62 @@ class CollectFixtures final : public b2QueryCallback {
   std::vector<std::uint32_t>& props_;
 };
 
+// Restitution acts only on the approach velocity the bodies had before the tires pushed them
+// (issue 33). Box2D gives a contact the bounce −e·v_rel for the relative normal velocity v_rel it
+// finds at the start of its step (b2ContactSolver's velocity bias, Catto's sequential impulses),
+// and that velocity includes the impulses the tires handed a prop just before: a crate or a ball
+// pushed into the ground it lies on would be bounced back up by that ground, the push taken as an
+// impact. Measured before: a tire rolling into level 07's pit onto the ball (restitution 0.3) left
+// at 27 m/s, tire and ball going from 1160 to 4092 J. So before Box2D solves a contact of a pushed
+// prop, its restitution is scaled so that the bounce is e times the approach the bodies had
+// without the push: e_eff = e · max(0, −v_before) / −v_now at the point that approaches fastest.
+// A prop pushed into its support is then held by it, not bounced; a prop that was already falling
+// onto it still bounces from its own speed.
+class RestitutionRule final : public b2ContactListener {
+ public:
+  const std::vector<Prop>* props = nullptr;
+
+  void PreSolve(b2Contact* contact, const b2Manifold*) override {
+    contact->ResetRestitution();
+    const float restitution = contact->GetRestitution();
+    if (restitution <= 0.0f || !props) return;
+    const Prop* a = pushed_prop(contact->GetFixtureA());
+    const Prop* b = pushed_prop(contact->GetFixtureB());
+    if (!a && !b) return;
+    b2WorldManifold manifold;
+    contact->GetWorldManifold(&manifold);
+    const Vec2 normal = from_b2(manifold.normal);  // from A to B
+    const b2Body& body_a = *contact->GetFixtureA()->GetBody();
+    const b2Body& body_b = *contact->GetFixtureB()->GetBody();
+    double approach_now = 0.0, approach_before = 0.0;
+    for (int k = 0; k < contact->GetManifold()->pointCount; ++k) {
+      const Vec2 point = from_b2(manifold.points[k]);
+      const double now = -dot(normal, velocity_at(body_b, nullptr, point) - velocity_at(body_a, nullptr, point));
+      if (now <= approach_now) continue;
+      approach_now = now;
+      approach_before = -dot(normal, velocity_at(body_b, b, point) - velocity_at(body_a, a, point));
+    }
+    if (approach_now <= 0.0) return;
+    const double share = std::clamp(approach_before / approach_now, 0.0, 1.0);
+    contact->SetRestitution(static_cast<float>(restitution * share));
+  }
+
+ private:
+  const Prop* pushed_prop(b2Fixture* f) const {
+    const std::uintptr_t tag = f->GetUserData().pointer;
+    if (!(tag & kPropTag)) return nullptr;
+    const Prop& p = (*props)[tag & ~kPropTag];
+    return p.pushed ? &p : nullptr;
+  }
+  // The velocity of the body's material point at `point`: as Box2D has it, or, for a pushed prop,
+  // as it was before the push.
+  static Vec2 velocity_at(const b2Body& body, const Prop* pushed, Vec2 point) {
+    const Vec2 r = point - from_b2(body.GetWorldCenter());
+    if (pushed) return pushed->velocity_before_push + perp(r) * pushed->omega_before_push;
+    return from_b2(body.GetLinearVelocity()) + perp(r) * static_cast<double>(body.GetAngularVelocity());
+  }
+};
+
 b2BodyType body_type(PropType t) {
   switch (t) {
     case PropType::dynamic_body: return b2_dynamicBody;
@@ -56,8 +112,12 @@ Pose Prop::pose_at(double t) const {
   return Pose::make(center_at(t) - turned.rotate(local_center), turned.angle);
 }
 
-RigidWorld::RigidWorld(Vec2 gravity) : world_(std::make_unique<b2World>(to_b2(gravity))), gravity_(gravity) {
+RigidWorld::RigidWorld(Vec2 gravity)
+    : world_(std::make_unique<b2World>(to_b2(gravity))),
+      restitution_rule_(std::make_unique<RestitutionRule>()),
+      gravity_(gravity) {
   use_engine_float_math();  // Box2D's rotations are the engine's (box2d_float_math.cpp)
+  world_->SetContactListener(restitution_rule_.get());
   b2BodyDef def;
   def.type = b2_staticBody;
   ground_ = world_->CreateBody(&def);
@@ -342,7 +402,8 @@ void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t
 
 void RigidWorld::end_tick(double dt) {
   for (std::uint32_t i = 0; i < props_.size(); ++i) {
-    const Prop& p = props_[i];
+    Prop& p = props_[i];
+    p.pushed = false;
     if (!p.alive || !p.is_dynamic()) continue;
     if (p.untravelled != Vec2{} || p.untravelled_angle != 0.0) {
       // Box2D's step ends at its start plus dt times the final velocity (gravity and the pushes in
@@ -354,9 +415,13 @@ void RigidWorld::end_tick(double dt) {
       bodies_[i]->SetAwake(true);  // Box2D may have put a prop lying on a tire to sleep
     }
     if (p.impulse == Vec2{} && p.angular_impulse == 0.0) continue;
+    p.pushed = true;
+    p.velocity_before_push = from_b2(bodies_[i]->GetLinearVelocity());
+    p.omega_before_push = bodies_[i]->GetAngularVelocity();
     bodies_[i]->ApplyLinearImpulseToCenter(to_b2(p.impulse), true);
     bodies_[i]->ApplyAngularImpulse(static_cast<float>(p.angular_impulse), true);
   }
+  static_cast<RestitutionRule&>(*restitution_rule_).props = &props_;
   if (needs_stepping())
     world_->Step(static_cast<float>(dt), kBox2dVelocityIterations, kBox2dPositionIterations);
 }

@@ -34,6 +34,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   const BlockSlot<std::uint8_t> on_tire_slot = layout.add<std::uint8_t>(count);
   const BlockSlot<double> soft_lambda_slot = layout.add<double>(n);
   const BlockSlot<std::uint64_t> contact_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
+  const BlockSlot<std::uint64_t> held_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
   const BlockSlot<ContactRecord> contacts_slot = layout.add<ContactRecord>(count);
   arrays = ArrayBlock(layout);
   particles = Particles(arrays, particle_slots);
@@ -41,6 +42,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   on_tire = arrays.construct(on_tire_slot);
   soft_lambda = arrays.construct(soft_lambda_slot);
   contact_mask = arrays.construct(contact_mask_slot);
+  held_mask = arrays.construct(held_mask_slot);
   contacts = arrays.construct(contacts_slot);
   // The broad-phase lists, for a usual scene (see tire.h).
   candidates.reserve(16);
@@ -86,6 +88,7 @@ void Tire::reset() {
   std::fill(particles.w.begin(), particles.w.end(), w);
   std::fill(contacts.begin(), contacts.end(), ContactRecord{});
   std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
+  std::fill(held_mask.begin(), held_mask.end(), std::uint64_t{0});
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
   air_time = std::numeric_limits<double>::infinity();
   distance.reset_lambda();
@@ -147,6 +150,7 @@ bool Tire::grounded() const {
 
 void Tire::clear_contacts() {
   for_each_contact([this](std::uint32_t i) { contacts[i] = ContactRecord{}; });
+  std::copy(contact_mask.begin(), contact_mask.end(), held_mask.begin());
   std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
 }
 
@@ -172,6 +176,7 @@ bool Tire::sizes_consistent() const {
   const std::size_t count = particle_count();
   if (particles.x.size() != count || particles.x_prev.size() != count || particles.v.size() != count ||
       particles.w.size() != count || contacts.size() != count || contact_mask.size() != (count + 63) / 64 ||
+      held_mask.size() != contact_mask.size() ||
       grounded_flags.size() != count || on_tire.size() != count || soft_lambda.size() != n)
     return false;
   for (const DistanceConstraint& c : distance.constraints())

@@ -10,6 +10,7 @@
 #include "tire/io/level.h"
 #include "tire/math/state_hash.h"
 #include "tire/replay/replay.h"
+#include "tire/world/energy.h"
 #include "tire/world/world.h"
 
 namespace tirectl {
@@ -29,7 +30,36 @@ struct SubstepTally {
   }
 };
 
-nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepTally& tally) {
+// The world's energy tick by tick (tire/world/energy.h): the largest rise of the total over any
+// stretch of the run, E(t) − min E(s ≤ t). Steering, jumps, scripts and kinematic props do work on
+// the world, so a rise is not by itself a fault; with none of them, it is energy a contact made.
+struct EnergyWatch {
+  tire::Energy now;
+  double lowest = 0.0;
+  double largest_rise = 0.0;
+  long long rise_tick = 0;  // the tick that ended the largest rise
+  void start(const tire::World& world) {
+    now = tire::world_energy(world);
+    lowest = now.total();
+  }
+  void add(const tire::World& world) {
+    now = tire::world_energy(world);
+    const double e = now.total();
+    lowest = std::min(lowest, e);
+    if (e - lowest > largest_rise) {
+      largest_rise = e - lowest;
+      rise_tick = static_cast<long long>(world.tick());
+    }
+  }
+  nlohmann::ordered_json to_json() const {
+    return {{"kinetic", now.kinetic},         {"gravitational", now.gravitational},
+            {"elastic", now.elastic},         {"total", now.total()},
+            {"largest_rise", largest_rise},   {"largest_rise_tick", rise_tick}};
+  }
+};
+
+nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepTally& tally,
+                               const EnergyWatch& energy) {
   const tire::World& world = session.world();
   nlohmann::ordered_json tires = nlohmann::ordered_json::array();
   for (const tire::Tire& t : world.tires())
@@ -55,19 +85,21 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
           {"tires", tires},
           {"props", props},
           {"substeps", substeps},
+          {"energy", energy.to_json()},
           {"hash", tire::to_hex(session.state_hash())}};
 }
 
-void trace(const tire::World& world) {
+void trace(const tire::World& world, const EnergyWatch& energy) {
   const tire::Tire* p = world.player();
   if (!p) return;
   const tire::Vec2 c = p->centroid(), v = p->velocity();
   std::fprintf(
       stderr,
       "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s  "
-      "%d substeps\n",
+      "%d substeps  energy %.1f J\n",
       world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
-      p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "", world.tick_substeps());
+      p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "", world.tick_substeps(),
+      energy.now.total());
 }
 
 }  // namespace
@@ -119,6 +151,8 @@ int run(const RunOptions& options) {
   double steer = 0.0;
   std::size_t next = 0;
   SubstepTally tally;
+  EnergyWatch energy;
+  energy.start(session->world());
   for (long long tick = 0; tick < options.ticks; ++tick) {
     bool jump = false;
     while (next < inputs.size() && inputs[next].tick == static_cast<std::uint64_t>(tick)) {
@@ -129,7 +163,8 @@ int run(const RunOptions& options) {
     if (recorder) recorder->after_step(*session);
     tire::World& world = session->world();
     tally.add(world);
-    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world);
+    energy.add(world);
+    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world, energy);
     for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
     world.warnings().clear();
   }
@@ -141,7 +176,7 @@ int run(const RunOptions& options) {
       return 2;
     }
   }
-  std::cout << summary(*session, tally).dump(2) << "\n";
+  std::cout << summary(*session, tally, energy).dump(2) << "\n";
   return 0;
 }
 

@@ -55,8 +55,10 @@ struct PropGeometry {
 };
 
 // The contact of a particle that moved from `from` to `to` (both local coordinates), as a local
-// normal and depth; nullopt when it does not touch.
-std::optional<SurfaceContact> local_contact(const PropGeometry& g, Vec2 from, Vec2 to);
+// normal and depth; nullopt when it does not touch. `held`: a surface held the particle at the end
+// of the substep before. A one-sided chain pushes out a particle that starts inside it only if so:
+// one that was not came in from behind the solid, and passes.
+std::optional<SurfaceContact> local_contact(const PropGeometry& g, Vec2 from, Vec2 to, bool held = true);
 
 // True when a polygon's points are convex and counter-clockwise (no three in a line).
 bool is_convex_ccw(const std::vector<Vec2>& points);

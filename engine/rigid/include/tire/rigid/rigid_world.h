@@ -39,6 +39,7 @@
 
 class b2World;
 class b2Body;
+class b2ContactListener;
 
 namespace tire {
 
@@ -65,6 +66,11 @@ struct Prop {
   double untravelled_angle = 0.0;
   bool airborne = false;  // substep motion: awake, and touching nothing in Box2D this tick
   bool awake = false;     // Box2D simulates it this tick (a dynamic prop not asleep)
+  // Its velocity as Box2D had it before the tires' impulses of this step were handed over
+  // (end_tick): the approach velocity its restitution may act on (RestitutionRule, rigid_world.cpp).
+  Vec2 velocity_before_push;
+  double omega_before_push = 0.0;
+  bool pushed = false;  // the tires handed it an impulse in this step
 
   // What holds a dynamic prop up (shock propagation, one level deep): the normals, pointing into
   // the prop, of its Box2D contacts with static and kinematic bodies at the start of the tick. A
@@ -187,6 +193,7 @@ class RigidWorld {
 
   // Box2D stays behind this wall (the layer links it privately): its types are only named here.
   std::unique_ptr<b2World> world_;
+  std::unique_ptr<b2ContactListener> restitution_rule_;  // rigid_world.cpp: RestitutionRule
   b2Body* ground_ = nullptr;  // carries every obstacle fixture
   std::vector<Obstacle> obstacles_;
   std::vector<Prop> props_;

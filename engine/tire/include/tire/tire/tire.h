@@ -151,7 +151,9 @@ struct Tire {
       for (std::uint64_t bits = contact_mask[word]; bits != 0; bits &= bits - 1)
         f(static_cast<std::uint32_t>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
   }
-  // Puts the written records back to default and clears the mask.
+  // Whether particle i was held by a surface (its record written) in the substep before this one.
+  bool was_held(std::uint32_t i) const { return (held_mask[i >> 6] >> (i & 63)) & 1u; }
+  // Puts the written records back to default and clears the mask, keeping it as held_mask.
   void clear_contacts();
 
   // Asks the CPU to start loading what a substep reads (a hint; changes nothing): the world calls
@@ -182,6 +184,9 @@ struct Tire {
   // Bit i set: contacts[i] was written this substep. Only those are visited and cleared, so a
   // substep costs nothing for the particles nowhere near a surface.
   ArrayView<std::uint64_t> contact_mask;
+  // The mask of the substep before (clear_contacts keeps it): a one-sided chain pushes out a
+  // particle it finds inside only if a surface held it then (prop_geometry.h, local_contact).
+  ArrayView<std::uint64_t> held_mask;
   ArrayView<std::uint8_t> grounded_flags;  // per particle, last substep
   // How long since the tread last touched ground (s): 0 while it does; infinite after a jump and at
   // spawn, until it lands. A jump is honoured while it is at most SolverConfig::jump_grace.

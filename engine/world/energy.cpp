@@ -1,0 +1,51 @@
+#include "tire/world/energy.h"
+
+#include "tire/world/world.h"
+
+namespace tire {
+
+namespace {
+
+// ½ C²/α of an area constraint; none when rigid.
+double area_energy(const AreaConstraint& a, double area) {
+  if (!(a.compliance > 0.0)) return 0.0;
+  const double c = area - a.pressure * a.rest_area;
+  return 0.5 * c * c / a.compliance;
+}
+
+}  // namespace
+
+Energy tire_energy(const Tire& t, Vec2 gravity) {
+  Energy e;
+  const double m = t.particle_mass();
+  const Particles& p = t.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    e.kinetic += 0.5 * m * length_squared(p.v[i]);
+    e.gravitational -= m * dot(gravity, p.x[i]);
+  }
+  for (const DistanceConstraint& c : t.distance.constraints()) {
+    if (!(c.compliance > 0.0)) continue;
+    const double stretch = length(p.x[c.b] - p.x[c.a]) - c.rest_length;
+    e.elastic += 0.5 * stretch * stretch / c.compliance;
+  }
+  e.elastic += area_energy(t.area_constraint, t.area());
+  const AreaConstraint& rim = t.rim_area_constraint;
+  e.elastic += area_energy(rim, polygon_area(p.x.data() + rim.first, rim.count));
+  return e;
+}
+
+Energy world_energy(const World& world) {
+  Energy e;
+  for (const Tire& t : world.tires()) e += tire_energy(t, world.gravity());
+  const RigidWorld& rigid = world.rigid();
+  for (std::uint32_t i = 0; i < rigid.props().size(); ++i) {
+    const Prop& prop = rigid.props()[i];
+    if (!prop.alive || prop.spec.type != PropType::dynamic_body) continue;
+    const PropState s = rigid.prop_state(i);
+    e.kinetic += 0.5 * s.mass * length_squared(s.velocity) + 0.5 * s.inertia * s.angular_velocity * s.angular_velocity;
+    e.gravitational -= s.mass * dot(world.gravity(), s.center);
+  }
+  return e;
+}
+
+}  // namespace tire
