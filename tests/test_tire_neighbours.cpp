@@ -81,7 +81,7 @@ TEST_CASE("a push handed to a neighbour moves it as a rigid body: momentum kept"
   const Tire& b = s.tires[1];
   std::vector<Vec2> before(b.particles.x.begin(), b.particles.x.end());
   const RigidMotion rigid = b.rigid_motion();
-  s.neighbours.apply_reactions(s.tires, 1.0, 1.0 / 480);
+  s.neighbours.apply_reactions(s.tires, 1.0, 1.0 / 480, 0);  // tire 1's turn is still to come
   Vec2 linear;
   double angular = 0.0;
   double stretch = 0.0;
@@ -107,7 +107,7 @@ TEST_CASE("a push a substep could not carry is clamped to the anti-tunnelling li
   const Tire& b = s.tires[1];
   std::vector<Vec2> before(b.particles.x.begin(), b.particles.x.end());
   const double clamp = 1.5;
-  s.neighbours.apply_reactions(s.tires, clamp, 1.0 / 480);
+  s.neighbours.apply_reactions(s.tires, clamp, 1.0 / 480, 0);
   double farthest = 0.0;
   Vec2 mean;
   for (std::size_t k = 0; k < before.size(); ++k) {
@@ -116,4 +116,30 @@ TEST_CASE("a push a substep could not carry is clamped to the anti-tunnelling li
   }
   CHECK(farthest == Approx(clamp * b.segment_length).epsilon(1e-9));  // at the limit, not beyond
   CHECK(mean.x > 0.0);  // still the push's way (it pushes tire 1 to the right: −μ n with μ n to the left)
+}
+
+TEST_CASE("a push owed to a tire already solved this substep waits for its next prediction, momentum kept",
+          "[unit][soft][global]") {
+  // Tire 1 (colour 1) pushed after its own colour was solved: it does not move now; the push waits
+  // in late_push as a rigid change of velocity whose momentum is the push's, −μ n / h.
+  const Vec2 push{-0.004, 0.001};
+  Pushed s(push);
+  const Tire& b = s.tires[1];
+  std::vector<Vec2> before(b.particles.x.begin(), b.particles.x.end());
+  const RigidMotion rigid = b.rigid_motion();
+  const double h = 1.0 / 480;
+  s.neighbours.apply_reactions(s.tires, 1.0, h, 1);
+  for (std::size_t k = 0; k < before.size(); ++k) CHECK(b.particles.x[k] == before[k]);
+  REQUIRE(b.late_push.any);
+  Vec2 momentum;
+  double angular = 0.0;
+  const double m = b.particle_mass();
+  for (const Vec2& x : b.particles.x) {
+    const Vec2 dv = b.late_push.velocity + perp(x - b.late_push.centre) * b.late_push.spin;
+    momentum += dv * m;
+    angular += cross(x - rigid.centroid, dv) * m;
+  }
+  CHECK(momentum.x * h == Approx(-push.x).margin(1e-12));
+  CHECK(momentum.y * h == Approx(-push.y).margin(1e-12));
+  CHECK(angular * h == Approx(-cross(s.point - rigid.centroid, push)).margin(1e-12));
 }

@@ -132,7 +132,8 @@ TreadView TireNeighbours::tread(std::uint32_t tire) const {
           static_cast<double>(std::max<std::size_t>(1, neighbours(tire).size()))};
 }
 
-void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h) const {
+void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h,
+                                     std::size_t colour) const {
   // Summed per neighbour first (in tire order, then in each tire's order), then one rigid
   // displacement each, about its centroid as it is now.
   bool any = false;
@@ -165,6 +166,13 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
       const double scale = limit / std::sqrt(farthest2);
       shift = shift * scale;
       turn *= scale;
+    }
+    if (colour_[i] <= colour) {
+      // Solved already: the push waits for the velocity update, as the velocity −Δx/h.
+      t.late_push.add(shift * (-1.0 / h), turn * (-1.0 / h), rigid.centroid);
+      linear_[i] = Vec2{};
+      angular_[i] = 0.0;
+      continue;
     }
     // The push is an impulse: it moves the particles and their velocities alike, so that the
     // inertial target x̃ = xₙ + h v of the tire's own solve (global_solver.h) moves with them and a

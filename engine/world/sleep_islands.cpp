@@ -162,6 +162,7 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
         ++asleep_;
         t.island = tires[r].id;
         std::fill(t.particles.v.begin(), t.particles.v.end(), Vec2{});
+        t.late_push = {};  // the island's weight passed between its tires: none while it sleeps
       }
       stale_ = true;
     }

@@ -385,7 +385,7 @@ void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) solve_iteration(tires_[tires[k]], ctx, last);
     });
-    neighbours_.apply_reactions(tires_, config_.tunnel_clamp, ctx.h);
+    neighbours_.apply_reactions(tires_, config_.tunnel_clamp, ctx.h, c);
     if (c + 1 < neighbours_.colours()) neighbours_.refresh(tires_, tires);
   }
 }
@@ -575,6 +575,9 @@ void World::hash_into(StateHash& h) const {
     h.add_bytes(t.particles.v.data(), t.particles.v.size() * sizeof(Vec2));
     h.add_bytes(t.grounded_flags.data(), t.grounded_flags.size());
     h.add(t.air_time);
+    h.add(t.late_push.velocity);
+    h.add(t.late_push.spin);
+    h.add(t.late_push.centre);
     if (config_.sleep) {  // the sleep state, where sleeping is on (sleep_islands.h)
       h.add(t.asleep);
       h.add(t.still_time);

@@ -197,6 +197,25 @@ struct Tire {
   std::vector<ContactPair> pairs;              // particles near any of them this substep
   std::vector<PropImpulse> prop_impulses;      // owed to props since they were last handed over
   ArrayView<double> soft_lambda;  // per outer particle: normal λ against other tires, this substep
+  // Pushes from neighbours that came after the tire's own solve in a substep (the global method's
+  // contacts between tires, TireNeighbours::apply_reactions): a rigid change of velocity,
+  // v += velocity + perp(x − centre)·spin, owed to the next prediction, which adds it and clears
+  // it. Kept apart until then, so that the tire's velocity between ticks is its motion's (a tire at
+  // the bottom of a pile owes the weight of those above it every substep).
+  struct LatePush {
+    Vec2 velocity;
+    double spin = 0.0;
+    Vec2 centre;
+    bool any = false;
+    // Adds a rigid change of velocity about `about`, re-expressed about this one's centre.
+    void add(Vec2 v, double w, Vec2 about) {
+      if (!any) centre = about;
+      velocity += v + perp(centre - about) * w;
+      spin += w;
+      any = true;
+    }
+  };
+  LatePush late_push;
   Vec2 tread_hub;                 // mean of the tread particles, after this iteration's own solve
   double tread_reach = 0.0;       // largest distance of a tread particle from tread_hub
   Vec2 rim_hub;                   // the same for the rim, for the tread–rim contact

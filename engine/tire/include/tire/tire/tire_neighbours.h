@@ -106,8 +106,14 @@ class TireNeighbours {
   std::vector<TireReaction>& reactions(std::uint32_t tire) const { return reactions_[tire]; }
   // Hands every owed push to its tire, in tire order, and forgets them; marks the particles that
   // carry another tire (on_tire), as the Gauss–Seidel contact does. `tunnel_clamp`: the most a
-  // particle may move, in rest tread segments; h the substep.
-  void apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h) const;
+  // particle may move, in rest tread segments; h the substep; `colour` the colour just solved.
+  // A tire of a later colour is moved now, before its own solve. A tire of this colour or an
+  // earlier one has been solved this iteration: its push is kept as an impulse for the velocity
+  // update (Tire::late_push), not a displacement now. Moved now, it would be driven into what holds
+  // it (the floor, a wall) after its solve had held it there; the next substep would start inside
+  // and its solve turn the way out into velocity: the energy that made piles creep (60 tires in a
+  // 6 m box never slept at 2 × 1; docs/at-rest.md).
+  void apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h, std::size_t colour) const;
 
  private:
   const Tire* first_ = nullptr;
