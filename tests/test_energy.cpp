@@ -83,12 +83,10 @@ TEST_CASE("energy: a tire thrown at props lying still never gains mechanical ene
   // "Over a small ball" at one substep is not held: run over at 12 m/s the 0.2 kg ball is thrown
   // out with up to 80 J more than the tire and ball had (6.3 %, docs/at-rest.md); at 2 substeps
   // 0.8 %.
-  const std::vector<Throw> cases = {{"onto a crate on the ground", {1, 2, 4, 8}},
-                                    {"over a small ball", {2, 4, 8}},
-                                    {"into a crate against a wall", {1, 2, 4, 8}},
-                                    {"down between two crates", {1, 2, 4, 8}},
-                                    {"onto a ball in a pit", {1, 2, 4, 8}},
-                                    {"into a pit onto a ball, rolling", {1, 2, 4, 8}}};
+  const std::vector<Throw> cases = {
+      {"onto a crate on the ground", {1, 2, 4, 8}},  {"over a small ball", {2, 4, 8}},
+      {"into a crate against a wall", {1, 2, 4, 8}}, {"down between two crates", {1, 2, 4, 8}},
+      {"onto a ball in a pit", {1, 2, 4, 8}},        {"into a pit onto a ball, rolling", {1, 2, 4, 8}}};
   for (const Throw& c : cases)
     for (const double e : {0.3, 0.5})
       for (const int substeps : c.substeps) {

@@ -69,7 +69,8 @@ class RestitutionRule final : public b2ContactListener {
     double approach_now = 0.0, approach_before = 0.0;
     for (int k = 0; k < contact->GetManifold()->pointCount; ++k) {
       const Vec2 point = from_b2(manifold.points[k]);
-      const double now = -dot(normal, velocity_at(body_b, nullptr, point) - velocity_at(body_a, nullptr, point));
+      const double now =
+          -dot(normal, velocity_at(body_b, nullptr, point) - velocity_at(body_a, nullptr, point));
       if (now <= approach_now) continue;
       approach_now = now;
       approach_before = -dot(normal, velocity_at(body_b, b, point) - velocity_at(body_a, a, point));

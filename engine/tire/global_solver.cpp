@@ -274,7 +274,8 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
     } else {
       const PropFrame& frame = t.prop_frames[pair.index];
       const Prop& body = rigid.props()[frame.prop];
-      hit = local_contact(body.geometry, frame.start.to_local(p.x_prev[i]), frame.end.to_local(x), t.was_held(i));
+      hit = local_contact(body.geometry, frame.start.to_local(p.x_prev[i]), frame.end.to_local(x),
+                          t.was_held(i));
       if (hit) {
         hit->normal = frame.end.rotate(hit->normal);
         prop = static_cast<std::int32_t>(frame.prop);

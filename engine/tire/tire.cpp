@@ -177,8 +177,8 @@ bool Tire::sizes_consistent() const {
   const std::size_t count = particle_count();
   if (particles.x.size() != count || particles.x_prev.size() != count || particles.v.size() != count ||
       particles.w.size() != count || contacts.size() != count || contact_mask.size() != (count + 63) / 64 ||
-      held_mask.size() != contact_mask.size() ||
-      grounded_flags.size() != count || on_tire.size() != count || soft_lambda.size() != n)
+      held_mask.size() != contact_mask.size() || grounded_flags.size() != count || on_tire.size() != count ||
+      soft_lambda.size() != n)
     return false;
   for (const DistanceConstraint& c : distance.constraints())
     if (c.a >= count || c.b >= count) return false;

@@ -42,7 +42,8 @@ Energy world_energy(const World& world) {
     const Prop& prop = rigid.props()[i];
     if (!prop.alive || prop.spec.type != PropType::dynamic_body) continue;
     const PropState s = rigid.prop_state(i);
-    e.kinetic += 0.5 * s.mass * length_squared(s.velocity) + 0.5 * s.inertia * s.angular_velocity * s.angular_velocity;
+    e.kinetic +=
+        0.5 * s.mass * length_squared(s.velocity) + 0.5 * s.inertia * s.angular_velocity * s.angular_velocity;
     e.gravitational -= s.mass * dot(world.gravity(), s.center);
   }
   return e;

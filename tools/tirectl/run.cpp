@@ -52,9 +52,8 @@ struct EnergyWatch {
     }
   }
   nlohmann::ordered_json to_json() const {
-    return {{"kinetic", now.kinetic},         {"gravitational", now.gravitational},
-            {"elastic", now.elastic},         {"total", now.total()},
-            {"largest_rise", largest_rise},   {"largest_rise_tick", rise_tick}};
+    return {{"kinetic", now.kinetic}, {"gravitational", now.gravitational}, {"elastic", now.elastic},
+            {"total", now.total()},   {"largest_rise", largest_rise},       {"largest_rise_tick", rise_tick}};
   }
 };
 

@@ -194,7 +194,7 @@ class RigidWorld {
   // Box2D stays behind this wall (the layer links it privately): its types are only named here.
   std::unique_ptr<b2World> world_;
   std::unique_ptr<b2ContactListener> restitution_rule_;  // rigid_world.cpp: RestitutionRule
-  b2Body* ground_ = nullptr;  // carries every obstacle fixture
+  b2Body* ground_ = nullptr;                             // carries every obstacle fixture
   std::vector<Obstacle> obstacles_;
   std::vector<Prop> props_;
   std::vector<b2Body*> bodies_;  // props_[i]'s Box2D body; null once the prop is removed

@@ -216,9 +216,9 @@ struct Tire {
     }
   };
   LatePush late_push;
-  Vec2 tread_hub;                 // mean of the tread particles, after this iteration's own solve
-  double tread_reach = 0.0;       // largest distance of a tread particle from tread_hub
-  Vec2 rim_hub;                   // the same for the rim, for the tread–rim contact
+  Vec2 tread_hub;            // mean of the tread particles, after this iteration's own solve
+  double tread_reach = 0.0;  // largest distance of a tread particle from tread_hub
+  Vec2 rim_hub;              // the same for the rim, for the tread–rim contact
   double rim_reach = 0.0;
   ArrayView<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
   TireControl control;
