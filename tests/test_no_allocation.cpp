@@ -333,9 +333,9 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
 }
 
 TEST_CASE("falling asleep and waking do not allocate", "[unit][performance]") {
-  // Islands form, sleep (tires and a crate lying on one), and wake whole, again and again. Gauss–Seidel
-  // 8 × 1: with the global method tires resting against each other creep (README, "The default
-  // method"), and one of the twelve did not sleep within 900 ticks.
+  // Islands form, sleep (tires and a crate lying on one), and wake whole, again and again.
+  // Gauss–Seidel 8 × 1: with the global method 7 of the 12 sleep within 900 ticks (tires touching
+  // tires rest, but do not all sleep yet: docs/at-rest.md).
   World world(SolverConfig::gauss_seidel_8x1(), {0, -9.81});
   world.add_obstacle({{{-50, -1}, {50, 0}}});
   std::vector<TireId> ids;
