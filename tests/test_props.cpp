@@ -96,8 +96,13 @@ TEST_CASE("a chain is one-sided: solid on the right of its points, as thick as i
   c = local_contact(g, {-1, -0.3}, {-1, -0.2});  // already under the line, within the thickness
   REQUIRE(c);
   CHECK(c->depth == Approx(0.2));
-  CHECK_FALSE(local_contact(g, {-1, -0.9}, {-1, -0.8}));  // deeper than the thickness: not this chain
-  CHECK_FALSE(local_contact(g, {-1, 0.5}, {-1, 0.2}));    // above: free
+  // The same particle when no surface held it the substep before: it came up from behind the
+  // solid, and passes (pushed out, it would be thrown 0.2 m in one substep).
+  CHECK_FALSE(local_contact(g, {-1, -0.3}, {-1, -0.2}, false));
+  CHECK_FALSE(local_contact(g, {-1, -0.6}, {-1, -0.4}, false));
+  CHECK(local_contact(g, {-1, 0.1}, {-1, -0.05}, false));  // crossing from the front: a contact all the same
+  CHECK_FALSE(local_contact(g, {-1, -0.9}, {-1, -0.8}));   // deeper than the thickness: not this chain
+  CHECK_FALSE(local_contact(g, {-1, 0.5}, {-1, 0.2}));     // above: free
   // On the sloped edge the normal is the edge's.
   c = local_contact(g, {2.5, 0.0}, {2.5, -0.6});
   REQUIRE(c);
