@@ -349,7 +349,8 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
       c.mu_static = c.mu_kinetic = mu;
       c.friction_active = mu > 0.0;
       c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + tread.give(point, normal));
-      c.stiffness_t = 1.0 / (rigid_alpha_tilde_ + tread.give(point, perp(normal)));
+      c.give_t = tread.give(point, perp(normal));
+      c.stiffness_t = 1.0 / (rigid_alpha_tilde_ + c.give_t);
       offer(c, depth);
     }
   }
@@ -741,6 +742,7 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
     rec.stuck = c.friction_active;
     rec.plane = c.plane;
     rec.tire = c.tire;
+    rec.other_give_t = c.give_t;
     if (c.tire >= 0) {
       // The neighbour's edge takes −μ: the whole of this iteration's, as its plane was taken where
       // the edge stood after the last one's.

@@ -150,7 +150,6 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
   if (!any) return;
   for (std::size_t i = 0; i < tires.size(); ++i) {
     if (linear_[i] == Vec2{} && angular_[i] == 0.0) continue;
-    pushed_.push_back(static_cast<std::uint32_t>(i));
     Tire& t = tires[i];
     const RigidMotion rigid = t.rigid_motion();
     // The angular push was taken about the captured centroid; moved to the current one.
@@ -167,13 +166,14 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
       shift = shift * scale;
       turn *= scale;
     }
+    linear_[i] = Vec2{};
+    angular_[i] = 0.0;
     if (colour_[i] <= colour) {
-      // Solved already: the push waits for the velocity update, as the velocity −Δx/h.
+      // Solved already: the push waits for its next prediction, as the velocity −Δx/h.
       t.late_push.add(shift * (-1.0 / h), turn * (-1.0 / h), rigid.centroid);
-      linear_[i] = Vec2{};
-      angular_[i] = 0.0;
       continue;
     }
+    pushed_.push_back(static_cast<std::uint32_t>(i));
     // The push is an impulse: it moves the particles and their velocities alike, so that the
     // inertial target x̃ = xₙ + h v of the tire's own solve (global_solver.h) moves with them and a
     // later solve of this substep does not pull the tire back (which lost a collision's momentum).
@@ -183,8 +183,6 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
       p.x[k] -= dx;
       p.v[k] -= dx * (1.0 / h);
     }
-    linear_[i] = Vec2{};
-    angular_[i] = 0.0;
   }
 }
 

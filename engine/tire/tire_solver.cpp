@@ -248,7 +248,13 @@ void cap_horizontal_speed(Tire& t, RigidMotion& m) {
 //    tangent t; j changes the whole tire's velocity and spin (later contacts see the change);
 //  - the deformation part: the particle's tangential velocity about that rigid motion (a tread
 //    squeezed out sideways) takes what is left of μ_k J_n, at most all of it.
-// Impulses owed to dynamic props are recorded. A spinning landing then rolls off at the speed its
+// Impulses owed to dynamic props are recorded. Against another tire (the global method's contacts
+// between tires, whose static friction is in the position solve) the slip is relative to the
+// neighbour's tread, the rigid part's mass is the pair's reduced mass (the neighbour's give along
+// the tangent, TreadView::give, added to the tire's), and the neighbour takes the opposite impulse
+// as a push for its next prediction (TireNeighbours::apply_reactions after the velocity pass). Without
+// it a contact between tires that slipped had no friction at all, and a tire wedged in a pile could
+// spin in place for ever (docs/at-rest.md). A spinning landing then rolls off at the speed its
 // angular momentum gives at 1 to 256 substeps; Müller's per-particle form reaches that speed only at
 // 256. Where a short slide decides (a polygon's landings on a slope) the two forms differ even at
 // 2048 substeps, by up to 5 cm over a 2 s roll at 12 segments (README, the trade-off's cross-check).
@@ -261,7 +267,7 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
   double dw = 0.0;  // and of the spin
   t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& c = t.contacts[i];
-    if (c.tire >= 0 || !c.active || c.stuck) return;
+    if (!c.active || c.stuck || (c.tire >= 0 && !ctx.neighbours)) return;
     const Vec2 r = p.x[i] - m.centroid;
     const auto tangential = [&](Vec2 v) { return v - c.normal * dot(v, c.normal); };
     double budget = c.mu_kinetic * particle_mass * c.lambda_n / ctx.h;  // μ_k J_n (N·s)
@@ -270,7 +276,7 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
     if (const double speed = length(slip); speed > 0.0 && budget > 0.0) {
       const Vec2 tangent = slip / speed;
       const double rt = cross(r, tangent);
-      const double m_eff = 1.0 / (1.0 / mass + rt * rt / m.inertia);
+      const double m_eff = 1.0 / (1.0 / mass + rt * rt / m.inertia + c.other_give_t);
       const double j = std::min(budget, m_eff * speed);
       budget -= j;
       impulse = tangent * -j;
@@ -287,6 +293,9 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
     if (c.prop >= 0 && impulse != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
       t.prop_impulses.push_back(
           {static_cast<std::uint32_t>(c.prop), impulse * -1.0, p.x[i], ctx.time + ctx.h, ctx.time + ctx.h});
+    if (c.tire >= 0 && impulse != Vec2{})  // the neighbour takes −impulse: a push of impulse·h (kg·m)
+      ctx.neighbours->reactions(ctx.neighbours->index_of(t))
+          .push_back({static_cast<std::uint32_t>(c.tire), 0, p.x[i], impulse * ctx.h, false});
   });
   if (dv == Vec2{} && dw == 0.0) return;
   for (std::uint32_t i = 0; i < p.size(); ++i) p.v[i] += dv + perp(p.x[i] - m.centroid) * dw;

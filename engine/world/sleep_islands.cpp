@@ -4,7 +4,49 @@
 #include <cmath>
 #include <limits>
 
+#include "tire/math/trig.h"
+
 namespace tire {
+
+namespace {
+
+// The unit direction from `hub` to tread particle 0: how far the tire has turned, read from where it is.
+Vec2 spoke_of(const Tire& t, Vec2 hub) {
+  const Vec2 d = t.particles.x[0] - hub;
+  const double l = length(d);
+  return l > 0.0 ? d / l : Vec2{1.0, 0.0};
+}
+
+// The tire's motion over the tick's last substep, from its positions: (x − x_prev)/h. Not its
+// velocities: the velocity pass leaves in them what the next solve takes back (the kinetic friction
+// of a contact that slips while the solve holds the tire in place, the pushes owed to the next
+// prediction), so a tire wedged in a pile can keep 0.3 rad/s of spin in v while it does not move by
+// a micrometre. `deform2`: the mean over the particles of |u − rigid motion's|², u their motion.
+RigidMotion last_motion(const Tire& t, double h, double& deform2) {
+  const Particles& p = t.particles;
+  const double count = static_cast<double>(p.size());
+  RigidMotion m;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    m.centroid += p.x[k];
+    m.velocity += p.x[k] - p.x_prev[k];
+  }
+  m.centroid = m.centroid / count;
+  m.velocity = m.velocity / (count * h);
+  double momentum = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Vec2 r = p.x[k] - m.centroid;
+    momentum += cross(r, (p.x[k] - p.x_prev[k]) / h - m.velocity);
+    m.inertia += length_squared(r);  // per unit particle mass: every particle weighs the same
+  }
+  m.omega = m.inertia > 0.0 ? momentum / m.inertia : 0.0;
+  deform2 = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k)
+    deform2 += length_squared((p.x[k] - p.x_prev[k]) / h - m.velocity - perp(p.x[k] - m.centroid) * m.omega);
+  deform2 /= count;
+  return m;
+}
+
+}  // namespace
 
 void SleepIslands::reserve(std::size_t tires, std::size_t props) {
   awake_.reserve(tires);
@@ -67,7 +109,7 @@ bool SleepIslands::wake(std::vector<Tire>& tires, std::uint32_t i, RigidWorld& r
     t.asleep = false;
     t.still_time = 0.0;
     t.still_anchor = t.centroid();
-    t.still_turn = 0.0;
+    t.still_spoke = spoke_of(t, t.still_anchor);
     --asleep_;
     island_.push_back(j);
     woken_.push_back(j);
@@ -104,24 +146,23 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
   const auto n = static_cast<std::uint32_t>(tires.size());
   const double limit2 = config.sleep_deform_speed * config.sleep_deform_speed;
   bool any_ready = false;
+  const double h = config.dt / config.substeps;
   for (const std::uint32_t i : awake_) {
     Tire& t = tires[i];
-    const RigidMotion m = t.rigid_motion();
-    double deform2 = 0.0;  // Σ |v − rigid motion's|² over the particles (all of one mass)
-    for (std::uint32_t k = 0; k < t.particles.size(); ++k)
-      deform2 +=
-          length_squared(t.particles.v[k] - m.velocity - perp(t.particles.x[k] - m.centroid) * m.omega);
-    deform2 /= static_cast<double>(t.particles.size());
-    // Where it has got to since it became still: its hub, and its tread by its turning.
-    t.still_turn += m.omega * config.dt;
-    const double drift = length(m.centroid - t.still_anchor) + std::abs(t.still_turn) * t.spec.outer_radius;
+    double deform2 = 0.0;
+    const RigidMotion m = last_motion(t, h, deform2);
+    // Where it has got to since it became still, by its positions: its hub, and its tread by the
+    // angle it has turned through.
+    const Vec2 spoke = spoke_of(t, m.centroid);
+    const double turn = tire::atan2(cross(t.still_spoke, spoke), dot(t.still_spoke, spoke));
+    const double drift = length(m.centroid - t.still_anchor) + std::abs(turn) * t.spec.outer_radius;
     // A tire held, driven or grabbed is not resting, however slowly it moves.
     const bool still = drift <= config.sleep_speed * config.sleep_time && deform2 < limit2 && !t.grabbed &&
                        t.control.steer == 0.0;
     t.still_time = still ? t.still_time + config.dt : 0.0;
     if (!still) {
       t.still_anchor = m.centroid;
-      t.still_turn = 0.0;
+      t.still_spoke = spoke;
     }
     any_ready = any_ready || t.still_time >= config.sleep_time;
   }

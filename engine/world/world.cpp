@@ -293,7 +293,7 @@ void World::step(const TickInput& input) {
   rigid_.end_tick(rigid_substeps ? h : config_.dt);
   for (const std::uint32_t i : sleep_.awake()) guard_divergence(tires_[i]);
   if (global) update_refinement();
-  if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, config_, held);
+  if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, tick_config_, held);
   if (sleep_.stale()) sleep_.refresh(tires_);
   sleep_.hold_props_near_awake_tires(tires_, rigid_);
   ++tick_;
@@ -396,6 +396,8 @@ void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
 void World::update_velocities(const SubstepContext& ctx) {
   sweep_tires([&](Tire& t) { end_substep(t, ctx); });
   hand_over_impulses();
+  // Kinetic friction's reactions between tires, for their next prediction (every tire is solved).
+  if (ctx.neighbours) neighbours_.apply_reactions(tires_, config_.tunnel_clamp, ctx.h, neighbours_.colours());
 }
 
 // The fused schedule (StepSchedule::fused): step()'s substeps with the tire phases that follow each
@@ -582,7 +584,7 @@ void World::hash_into(StateHash& h) const {
       h.add(t.asleep);
       h.add(t.still_time);
       h.add(t.still_anchor);
-      h.add(t.still_turn);
+      h.add(t.still_spoke);
       h.add(t.island);
     }
   }

@@ -99,6 +99,7 @@ class GlobalSolver {
     double mu_kinetic = 0.0;
     double stiffness_n = 0.0;  // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
     double stiffness_t = 0.0;  // the same along the tangent
+    double give_t = 0.0;       // a neighbour tire's give along the tangent (tire_neighbours.h)
     bool normal_active = true;
     bool friction_active = true;
     bool normal_in_k = false;  // what K holds of it since it was last factored

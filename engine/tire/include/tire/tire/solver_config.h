@@ -47,16 +47,18 @@ struct SolverConfig {
   // "solver": {"sleep": false} turns it off.
   bool sleep = true;
   // Still (m/s): a tire whose hub has stayed within sleep_speed · sleep_time of where it was when it
-  // became still, its tread within that of where its turning would have taken it (so its mean
-  // speed over the time is under sleep_speed), and whose deformation is slower than
-  // sleep_deform_speed (the root mean square of its particles' velocities less its rigid motion's);
-  // a dynamic prop whose centre and outline move slower than sleep_speed. Box2D's
-  // b2_linearSleepTolerance is 0.01 m/s for rigid bodies, instant by instant; a settled pile of
-  // tires keeps a few cm/s of solver jitter that goes nowhere, and a mean over the time lets it
-  // sleep. The small tires at the bottom of level 08's pile of 300 keep up to 0.16 m/s of
-  // deformation jitter (RMS) at 8 × 1 while their hubs stay within 3 mm: 0.25 lets them sleep.
+  // became still, and its tread within that of where it was then (by the angle it has turned
+  // through), so that its mean speed over the time is under sleep_speed (Box2D v3's sleep
+  // threshold, 0.05 m/s); and whose deformation moved slower than sleep_deform_speed over the
+  // tick's last substep (the root mean square of its particles' motion less its rigid motion's:
+  // Box2D 2.4's b2_linearSleepTolerance, 0.01 m/s). Read from positions, not velocities
+  // (sleep_islands.cpp). A dynamic prop is still when its centre and outline move slower than
+  // sleep_speed. So a tire sleeps only once its deformation has stopped changing, in the shape it
+  // would settle to awake: a soft tire's sag asleep is its sag awake to 0.5 % at 2–32 substeps,
+  // where 0.25 m/s, which let level 08's jittering pile sleep under Gauss–Seidel, froze it ringing,
+  // up to 35 % off (docs/at-rest.md).
   double sleep_speed = 0.05;
-  double sleep_deform_speed = 0.25;
+  double sleep_deform_speed = 0.01;
   // How long an island's bodies must all have been still before it sleeps (s): Box2D's
   // b2_timeToSleep.
   double sleep_time = 0.5;

@@ -253,9 +253,9 @@ struct Tire {
   // is how long it has been still (SolverConfig::sleep_speed), counted while it is awake.
   bool asleep = false;
   double still_time = 0.0;
-  Vec2 still_anchor;        // its hub when it last became still
-  double still_turn = 0.0;  // how far it has turned since (rad)
-  TireId island = 0;        // while asleep: the island it sleeps in (the id of one of its tires)
+  Vec2 still_anchor;  // its hub when it last became still
+  Vec2 still_spoke;   // and the direction from its hub to tread particle 0 then (unit)
+  TireId island = 0;  // while asleep: the island it sleeps in (the id of one of its tires)
 };
 
 }  // namespace tire

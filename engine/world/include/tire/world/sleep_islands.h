@@ -48,7 +48,8 @@ class SleepIslands {
 
   // The end of a tick: each awake tire's stillness counted over dt, then each island of awake
   // bodies whose bodies have all been still for sleep_time put to sleep, except the one holding
-  // `keep_awake` (the player while a key is held).
+  // `keep_awake` (the player while a key is held). `config`: the tick's (its substeps are the ones
+  // the tick took): a tire's stillness is read from its motion over the last substep.
   void settle(std::vector<Tire>& tires, std::span<const TirePair> pairs, RigidWorld& rigid,
               const SolverConfig& config, std::optional<std::uint32_t> keep_awake);
   // Every tick, sleeping on or off: Box2D does not see tires, so a prop lying on an awake tire looks

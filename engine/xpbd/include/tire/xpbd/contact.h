@@ -119,6 +119,9 @@ struct ContactRecord {
   double plane = 0.0;
   double lambda_t = 0.0;
   std::int32_t tire = -1;  // the global method's: the other tire's index in the world, or −1
+  // Against another tire: what that tire gives way along the tangent at the contact as the rigid
+  // body it is (TreadView::give), for the kinetic friction between them (reduced mass).
+  double other_give_t = 0.0;
 };
 
 // Friction of two surfaces in contact, mixed as Box2D's b2MixFriction does.
