@@ -114,8 +114,8 @@ Pose Prop::pose_at(double t) const {
 }
 
 RigidWorld::RigidWorld(Vec2 gravity)
-    : world_(std::make_unique<b2World>(to_b2(gravity))),
-      restitution_rule_(std::make_unique<RestitutionRule>()),
+    : restitution_rule_(std::make_unique<RestitutionRule>()),
+      world_(std::make_unique<b2World>(to_b2(gravity))),
       gravity_(gravity) {
   use_engine_float_math();  // Box2D's rotations are the engine's (box2d_float_math.cpp)
   world_->SetContactListener(restitution_rule_.get());

@@ -192,8 +192,9 @@ class RigidWorld {
   void steer_along_path(std::uint32_t i, double dt);
 
   // Box2D stays behind this wall (the layer links it privately): its types are only named here.
-  std::unique_ptr<b2World> world_;
+  // The contact listener first, so that it outlives the world that calls it.
   std::unique_ptr<b2ContactListener> restitution_rule_;  // rigid_world.cpp: RestitutionRule
+  std::unique_ptr<b2World> world_;
   b2Body* ground_ = nullptr;                             // carries every obstacle fixture
   std::vector<Obstacle> obstacles_;
   std::vector<Prop> props_;
