@@ -195,7 +195,7 @@ class RigidWorld {
   // The contact listener first, so that it outlives the world that calls it.
   std::unique_ptr<b2ContactListener> restitution_rule_;  // rigid_world.cpp: RestitutionRule
   std::unique_ptr<b2World> world_;
-  b2Body* ground_ = nullptr;                             // carries every obstacle fixture
+  b2Body* ground_ = nullptr;  // carries every obstacle fixture
   std::vector<Obstacle> obstacles_;
   std::vector<Prop> props_;
   std::vector<b2Body*> bodies_;  // props_[i]'s Box2D body; null once the prop is removed
