@@ -80,3 +80,106 @@ TEST_CASE("at rest: a soft tire's sag asleep is its sag awake, at 2, 8 and 32 su
     CHECK(std::abs(sag[1] - sag[0]) <= 0.01 * sag[0]);
   }
 }
+
+TEST_CASE("at rest: momentum is kept across contacts between tires and with a free prop", "[unit][rest]") {
+  // No gravity and nothing else to push against: whatever the contacts do, the sum of the bodies'
+  // momenta stays what it was (the pushes between tires, late or not, and kinetic friction's
+  // reactions are equal and opposite; a prop's impulse is the tire's).
+  World world({}, {0, 0});
+  TireSpec a = tire_at({-1.2, 0.0}), b = tire_at({1.2, 0.3});
+  a.velocity = {6.0, 0.0};
+  a.angular_velocity = -10.0;
+  b.velocity = {-4.0, 0.0};
+  world.add_tire(a);
+  world.add_tire(b);
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {0.5, 0.5};
+  crate.density = 20;
+  crate.position = {0.0, -1.2};
+  world.add_prop(crate);
+  TireSpec c = tire_at({-2.0, -1.2});
+  c.velocity = {5.0, 0.0};
+  world.add_tire(c);
+  const auto momentum = [&] {
+    Vec2 p;
+    for (const Tire& t : world.tires()) p += t.velocity() * t.total_mass();
+    const PropState s = world.rigid().prop_state(0);
+    return p + s.velocity * s.mass;
+  };
+  const Vec2 before = momentum();
+  bool touched = false;
+  for (int i = 0; i < 60; ++i) {
+    world.step({});
+    touched = touched || world.tire_pair_count() > 0;
+  }
+  const Vec2 after = momentum();
+  INFO("momentum before " << before.x << ", " << before.y << "; after " << after.x << ", " << after.y);
+  CHECK(touched);
+  CHECK(world.tires()[0].velocity().x < 3.0);                       // the two tires met
+  CHECK(length(world.rigid().prop_state(0).velocity) > 0.5);        // and the crate was hit
+  CHECK(length(after - before) < 1e-4 * (length(before) + 100.0));  // Box2D holds the crate in floats
+}
+
+TEST_CASE("at rest: a stack of three tires on a crate on the ground stays put to 0.1 mm", "[unit][rest]") {
+  // The crate is a Box2D body between the ground and the tires: the tires' weight reaches the ground
+  // through it, and nothing may creep.
+  SolverConfig config;
+  config.sleep = false;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-100, -10}, {100, 0}}});
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {1.2, 0.4};
+  crate.density = 20;
+  crate.position = {0.0, 0.2};
+  world.add_prop(crate);
+  for (int k = 0; k < 3; ++k) world.add_tire(tire_at({0.0, 0.4 + 0.5 + 1.0 * k}));
+  run(world, 5 * 60);
+  std::vector<Vec2> at5;
+  for (const Tire& t : world.tires()) at5.push_back(t.centroid());
+  const Vec2 crate5 = world.rigid().prop_state(0).center;
+  run(world, 5 * 60);
+  double moved = 0.0;
+  for (std::size_t i = 0; i < at5.size(); ++i)
+    moved = std::max(moved, length(world.tires()[i].centroid() - at5[i]));
+  const double crate_moved = length(world.rigid().prop_state(0).center - crate5);
+  INFO("from 5 to 10 s: tires moved " << moved * 1e3 << " mm at most, the crate " << crate_moved * 1e3
+                                      << " mm");
+  CHECK(world.tires().back().centroid().y > 2.7);  // still a stack
+  CHECK(moved < 1e-4);
+  CHECK(crate_moved < 1e-4);
+}
+
+TEST_CASE("at rest: a crate on a tire on a crate stays put", "[unit][rest]") {
+  SolverConfig config;
+  config.sleep = false;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-100, -10}, {100, 0}}});
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {1.2, 0.4};
+  crate.density = 20;
+  crate.position = {0.0, 0.2};
+  world.add_prop(crate);
+  world.add_tire(tire_at({0.0, 0.9}));
+  crate.size = {0.6, 0.3};
+  crate.position = {0.0, 1.55};
+  world.add_prop(crate);
+  run(world, 5 * 60);
+  const Vec2 hub5 = world.tires().front().centroid();
+  const Vec2 top5 = world.rigid().prop_state(1).center, bottom5 = world.rigid().prop_state(0).center;
+  run(world, 5 * 60);
+  const double hub = length(world.tires().front().centroid() - hub5);
+  const double top = length(world.rigid().prop_state(1).center - top5);
+  const double bottom = length(world.rigid().prop_state(0).center - bottom5);
+  INFO("from 5 to 10 s: the tire moved " << hub * 1e3 << " mm, the top crate " << top * 1e3
+                                         << " mm, the bottom one " << bottom * 1e3 << " mm");
+  CHECK(world.rigid().prop_state(1).center.y > 1.4);  // the top crate still on the tire
+  CHECK(hub < 1e-4);
+  CHECK(bottom < 1e-4);
+  // The top crate, which Box2D steps against the tire's pushes handed over after the tire's solve,
+  // still creeps: 0.14 mm in these 5 s (docs/at-rest.md, "Still open"). Bounded here at 1 mm, so
+  // that a creep ten times worse fails.
+  CHECK(top < 1e-3);
+}
