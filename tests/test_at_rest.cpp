@@ -22,6 +22,25 @@ World pile_of_60(const SolverConfig& config) {
   return world;
 }
 
+// A 1.2 m × 0.4 m crate of 9.6 kg lying on the ground (prop 0), sleeping off.
+PropSpec ground_crate() {
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {1.2, 0.4};
+  crate.density = 20;
+  crate.position = {0.0, 0.2};
+  return crate;
+}
+
+World crate_on_ground() {
+  SolverConfig config;
+  config.sleep = false;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-100, -10}, {100, 0}}});
+  world.add_prop(ground_crate());
+  return world;
+}
+
 }  // namespace
 
 TEST_CASE("at rest: a pile of 60 tires stops moving under the default method", "[unit][rest]") {
@@ -124,16 +143,7 @@ TEST_CASE("at rest: momentum is kept across contacts between tires and with a fr
 TEST_CASE("at rest: a stack of three tires on a crate on the ground stays put to 0.1 mm", "[unit][rest]") {
   // The crate is a Box2D body between the ground and the tires: the tires' weight reaches the ground
   // through it, and nothing may creep.
-  SolverConfig config;
-  config.sleep = false;
-  World world(config, {0, -9.81});
-  world.add_obstacle({{{-100, -10}, {100, 0}}});
-  PropSpec crate;
-  crate.type = PropType::dynamic_body;
-  crate.size = {1.2, 0.4};
-  crate.density = 20;
-  crate.position = {0.0, 0.2};
-  world.add_prop(crate);
+  World world = crate_on_ground();
   for (int k = 0; k < 3; ++k) world.add_tire(tire_at({0.0, 0.4 + 0.5 + 1.0 * k}));
   run(world, 5 * 60);
   std::vector<Vec2> at5;
@@ -152,17 +162,9 @@ TEST_CASE("at rest: a stack of three tires on a crate on the ground stays put to
 }
 
 TEST_CASE("at rest: a crate on a tire on a crate stays put", "[unit][rest]") {
-  SolverConfig config;
-  config.sleep = false;
-  World world(config, {0, -9.81});
-  world.add_obstacle({{{-100, -10}, {100, 0}}});
-  PropSpec crate;
-  crate.type = PropType::dynamic_body;
-  crate.size = {1.2, 0.4};
-  crate.density = 20;
-  crate.position = {0.0, 0.2};
-  world.add_prop(crate);
+  World world = crate_on_ground();
   world.add_tire(tire_at({0.0, 0.9}));
+  PropSpec crate = ground_crate();
   crate.size = {0.6, 0.3};
   crate.position = {0.0, 1.55};
   world.add_prop(crate);
