@@ -128,6 +128,26 @@ Vec2 Tire::centroid() const { return mean(particles.x); }
 
 Vec2 Tire::velocity() const { return mean(particles.v); }
 
+RigidMotion Tire::substep_motion(double h) const {
+  RigidMotion m;
+  const double count = static_cast<double>(particles.size());
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    m.centroid += particles.x[k];
+    m.velocity += particles.x[k] - particles.x_prev[k];
+  }
+  m.centroid = m.centroid / count;
+  m.velocity = m.velocity / (count * h);
+  double momentum = 0.0, r2 = 0.0;  // per unit particle mass: every particle weighs the same
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    const Vec2 r = particles.x[k] - m.centroid;
+    momentum += cross(r, (particles.x[k] - particles.x_prev[k]) / h - m.velocity);
+    r2 += length_squared(r);
+  }
+  m.omega = r2 > 0.0 ? momentum / r2 : 0.0;
+  m.inertia = particle_mass() * r2;
+  return m;
+}
+
 RigidMotion Tire::rigid_motion() const {
   RigidMotion m{centroid(), velocity(), 0.0, 0.0};
   double momentum = 0.0;  // L and I per unit particle mass

@@ -310,8 +310,7 @@ void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
   const double impulse_per_lambda = t.particle_mass() / ctx.h;  // J = m·λ_n/h
   const auto& props = ctx.rigid->props();
   bool moving = false;  // the rigid motion below is made on the first sliding contact
-  Vec2 centre, velocity;
-  double omega = 0.0;
+  RigidMotion motion;
   t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& c = t.contacts[i];
     if (!c.active) return;
@@ -327,23 +326,9 @@ void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
     // not of the particle: a straight landing spreads the tread sideways, which is no skid.
     if (!moving) {
       moving = true;
-      Vec2 hub;
-      for (std::uint32_t k = 0; k < p.size(); ++k) {
-        hub += p.x[k];
-        velocity += p.x[k] - p.x_prev[k];
-      }
-      hub = hub / static_cast<double>(p.size());
-      velocity = velocity / (static_cast<double>(p.size()) * ctx.h);
-      double momentum = 0.0, inertia = 0.0;
-      for (std::uint32_t k = 0; k < p.size(); ++k) {
-        const Vec2 r = p.x[k] - hub;
-        momentum += cross(r, (p.x[k] - p.x_prev[k]) / ctx.h - velocity);
-        inertia += length_squared(r);
-      }
-      omega = inertia > 0.0 ? momentum / inertia : 0.0;
-      centre = hub;
+      motion = t.substep_motion(ctx.h);
     }
-    const Vec2 v = velocity + perp(p.x[i] - centre) * omega - c.surface_velocity;
+    const Vec2 v = motion.velocity + perp(p.x[i] - motion.centroid) * motion.omega - c.surface_velocity;
     sum.slip_speed = std::max(sum.slip_speed, length(v - c.normal * dot(v, c.normal)));
   });
   // Gauss–Seidel's contacts between treads: λ per tread particle, already m·distance.

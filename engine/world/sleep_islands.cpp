@@ -17,32 +17,18 @@ Vec2 spoke_of(const Tire& t, Vec2 hub) {
   return l > 0.0 ? d / l : Vec2{1.0, 0.0};
 }
 
-// The tire's motion over the tick's last substep, from its positions: (x − x_prev)/h. Not its
-// velocities: the velocity pass leaves in them what the next solve takes back (the kinetic friction
-// of a contact that slips while the solve holds the tire in place, the pushes owed to the next
-// prediction), so a tire wedged in a pile can keep 0.3 rad/s of spin in v while it does not move by
-// a micrometre. `deform2`: the mean over the particles of |u − rigid motion's|², u their motion.
+// The tire's motion over the tick's last substep, from its positions (Tire::substep_motion), not
+// its velocities: the velocity pass leaves in them what the next solve takes back (the kinetic
+// friction of a contact that slips while the solve holds the tire in place), so a tire wedged in a
+// pile can keep 0.3 rad/s of spin in v while it does not move by a micrometre. `deform2`: the mean
+// over the particles of |u − the rigid motion's|², u their motion.
 RigidMotion last_motion(const Tire& t, double h, double& deform2) {
+  const RigidMotion m = t.substep_motion(h);
   const Particles& p = t.particles;
-  const double count = static_cast<double>(p.size());
-  RigidMotion m;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    m.centroid += p.x[k];
-    m.velocity += p.x[k] - p.x_prev[k];
-  }
-  m.centroid = m.centroid / count;
-  m.velocity = m.velocity / (count * h);
-  double momentum = 0.0;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const Vec2 r = p.x[k] - m.centroid;
-    momentum += cross(r, (p.x[k] - p.x_prev[k]) / h - m.velocity);
-    m.inertia += length_squared(r);  // per unit particle mass: every particle weighs the same
-  }
-  m.omega = m.inertia > 0.0 ? momentum / m.inertia : 0.0;
   deform2 = 0.0;
   for (std::size_t k = 0; k < p.size(); ++k)
     deform2 += length_squared((p.x[k] - p.x_prev[k]) / h - m.velocity - perp(p.x[k] - m.centroid) * m.omega);
-  deform2 /= count;
+  deform2 /= static_cast<double>(p.size());
   return m;
 }
 

@@ -124,6 +124,9 @@ struct Tire {
   Vec2 velocity() const;  // mass-weighted mean velocity
   double angular_velocity() const { return rigid_motion().omega; }
   RigidMotion rigid_motion() const;
+  // The same, of the tire's motion over its last substep of length h, from positions: (x − x_prev)/h.
+  // Not from its velocities, which the velocity pass has changed since (friction, damping).
+  RigidMotion substep_motion(double h) const;
   double area() const;  // current area of the outer ring (m²)
   double area_ratio() const { return area() / area_constraint.rest_area; }
   bool grounded() const;  // an outer particle touched ground in the last substep
