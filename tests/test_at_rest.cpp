@@ -185,3 +185,26 @@ TEST_CASE("at rest: a crate on a tire on a crate stays put", "[unit][rest]") {
   // that a creep ten times worse fails.
   CHECK(top < 1e-3);
 }
+
+TEST_CASE("at rest: level 08's pile of 301 tires falls asleep within 40 s on the default method",
+          "[unit][rest][sleep]") {
+  // Its tires rain down until 15 s. Before static friction between tires stopped anchoring to the
+  // late pushes in a neighbour's prediction (Tire::predicted_push), two of them turned in place
+  // for ever and none slept.
+  LevelLoad load = load_level_file(source_path("levels/08-three-hundred.json"));
+  REQUIRE(load.level);
+  REQUIRE(load.level->solver.method == SolverMethod::global);
+  const auto session = make_session(*load.level);
+  const World& world = session->world();
+  int ticks = 0;
+  const auto enough = [&] {
+    return ticks > 15 * 60 && world.asleep_count() * 100 >= world.tires().size() * 95;
+  };
+  while (ticks < 40 * 60 && !enough()) {
+    session->step({});
+    ++ticks;
+  }
+  INFO(world.asleep_count() << " of " << world.tires().size() << " asleep after " << ticks / 60.0 << " s");
+  CHECK(world.tires().size() == 301);
+  CHECK(enough());
+}

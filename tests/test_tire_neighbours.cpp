@@ -1,6 +1,7 @@
 // The global method's contacts between tires (tire_neighbours.h): the tires' colours and the
 // pushes handed to a neighbour.
 #include <catch2/catch.hpp>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -29,7 +30,9 @@ TEST_CASE("tires are coloured so that no two neighbours share a colour, each tir
   std::vector<Tire> tires;
   TireNeighbours neighbours;
   neighbours.reserve(tires, pairs.size());
-  neighbours.set_pairs(count, pairs);
+  std::vector<std::uint32_t> all(count);
+  std::iota(all.begin(), all.end(), 0u);
+  neighbours.set_pairs(count, all, pairs);
 
   std::vector<int> colour(count, -1);
   std::size_t most_neighbours = 0;
@@ -62,8 +65,9 @@ struct Pushed {
     tires.emplace_back(0, tire_at({-1.0, 0.0}));
     tires.emplace_back(1, tire_at({0.0, 0.0}));
     neighbours.reserve(tires, 1);
-    neighbours.set_pairs(tires.size(), {{0, 1}});
-    neighbours.capture(tires);
+    const std::uint32_t both[] = {0, 1};
+    neighbours.set_pairs(tires.size(), both, {{0, 1}});
+    neighbours.capture(tires, 1.0 / 120.0);
     std::uint32_t leftmost = 0;
     for (std::uint32_t k = 0; k < tires[1].n; ++k)
       if (tires[1].particles.x[k].x < tires[1].particles.x[leftmost].x) leftmost = k;

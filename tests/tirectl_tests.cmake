@@ -87,6 +87,9 @@ tirectl_test("bench builds crowd-100" 0 ARGS bench --scene crowd-100 --warmup 0 
   STDOUT "\ncrowd-100,100,5600,0,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
 tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS bench --scene crowd-10000 --warmup 0 --steps 1
   STDOUT "\ncrowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
+tirectl_test("bench builds global-crowd-10000: the crowd on the default method" 0
+  ARGS bench --scene global-crowd-100 --scene global-crowd-10000 --warmup 0 --steps 1
+  STDOUT "\nglobal-crowd-100,100,5600,0,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0\nglobal-crowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0\n")
 tirectl_test("bench times a tire rolling on flat ground by either method" 0
   ARGS bench --scene rolling-gauss-seidel-8x1 --scene rolling-global-2x1 --warmup 10 --steps 3
   STDOUT "\nrolling-gauss-seidel-8x1,1,56,[0-9]+,0,[0-9]+,28,8,1,3,[^\n]*\nrolling-global-2x1,1,56,[0-9]+,0,[0-9]+,28,2,1,3,")

@@ -92,6 +92,7 @@ void Tire::reset() {
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
   air_time = std::numeric_limits<double>::infinity();
   late_push = {};
+  predicted_push = {};
   distance.reset_lambda();
   area_lambda = 0.0;
   rim_area_lambda = 0.0;

@@ -11,6 +11,7 @@ namespace tire {
 void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) {
   std::size_t particles = 0;
   for (const Tire& t : tires) particles += t.n;
+  reserve_doubling(members_, tires.size());
   reserve_doubling(adjacency_begin_, tires.size() + 1);
   reserve_doubling(adjacency_, 2 * pairs);
   reserve_doubling(colour_, tires.size());
@@ -37,7 +38,9 @@ void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) 
   for (auto& list : reactions_) list.reserve(largest);
 }
 
-void TireNeighbours::set_pairs(std::size_t tire_count, const std::vector<TirePair>& pairs) {
+void TireNeighbours::set_pairs(std::size_t tire_count, std::span<const std::uint32_t> members,
+                               const std::vector<TirePair>& pairs) {
+  members_.assign(members.begin(), members.end());
   // Counting sort by tire: each pair listed under both of its tires, in pair order.
   adjacency_begin_.assign(tire_count + 1, 0);
   for (const TirePair& p : pairs) {
@@ -58,7 +61,7 @@ void TireNeighbours::set_pairs(std::size_t tire_count, const std::vector<TirePai
   colour_.assign(tire_count, kNone);
   colour_seen_.assign(tire_count + 1, kNone);
   std::uint32_t count = 0;
-  for (std::uint32_t i = 0; i < tire_count; ++i) {
+  for (const std::uint32_t i : members_) {
     for (const std::uint32_t j : neighbours(i))
       if (colour_[j] != kNone) colour_seen_[colour_[j]] = i;
     std::uint32_t c = 0;
@@ -68,16 +71,17 @@ void TireNeighbours::set_pairs(std::size_t tire_count, const std::vector<TirePai
   }
   // Counting sort by colour, keeping tire order within one.
   colour_begin_.assign(count + 1, 0);
-  for (const std::uint32_t c : colour_) ++colour_begin_[c + 1];
+  for (const std::uint32_t i : members_) ++colour_begin_[colour_[i] + 1];
   for (std::uint32_t c = 0; c < count; ++c) colour_begin_[c + 1] += colour_begin_[c];
-  by_colour_.resize(tire_count);
-  for (std::uint32_t i = 0; i < tire_count; ++i) by_colour_[colour_begin_[colour_[i]]++] = i;
+  by_colour_.resize(members_.size());
+  for (const std::uint32_t i : members_) by_colour_[colour_begin_[colour_[i]]++] = i;
   for (std::uint32_t c = count; c > 0; --c) colour_begin_[c] = colour_begin_[c - 1];
   colour_begin_[0] = 0;
 }
 
-void TireNeighbours::capture(const std::vector<Tire>& tires) {
+void TireNeighbours::capture(const std::vector<Tire>& tires, double h) {
   first_ = tires.data();
+  h_ = h;
   offset_.resize(tires.size() + 1);
   offset_[0] = 0;
   for (std::size_t i = 0; i < tires.size(); ++i) offset_[i + 1] = offset_[i] + tires[i].n;
@@ -86,11 +90,15 @@ void TireNeighbours::capture(const std::vector<Tire>& tires) {
   hub_.resize(tires.size());
   reach_.resize(tires.size());
   body_.resize(tires.size());
-  linear_.assign(tires.size(), Vec2{});
-  angular_.assign(tires.size(), 0.0);
+  linear_.resize(tires.size());
+  angular_.resize(tires.size());
   pushed_.clear();
   if (reactions_.size() < tires.size()) reactions_.resize(tires.size());
-  for (std::size_t i = 0; i < tires.size(); ++i) capture_tire(tires[i], i);
+  for (const std::uint32_t i : members_) {
+    linear_[i] = Vec2{};
+    angular_[i] = 0.0;
+    capture_tire(tires[i], i);
+  }
 }
 
 void TireNeighbours::refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved) {
@@ -103,8 +111,12 @@ void TireNeighbours::capture_tire(const Tire& t, std::size_t i) {
   Vec2* x = x_.data() + offset_[i];
   Vec2* motion = motion_.data() + offset_[i];
   Vec2 hub;
+  // Before its first solve of the substep, its motion less the late push its prediction took
+  // (Tire::predicted_push): the pushes of the tires that now anchor to it, coming back.
+  const Tire::LatePush& push = t.predicted_push;
   for (std::uint32_t k = 0; k < t.n; ++k) {
     motion[k] = t.particles.x[k] - t.particles.x_prev[k];
+    if (push.any) motion[k] -= (push.velocity + perp(t.particles.x_prev[k] - push.centre) * push.spin) * h_;
     x[k] = t.particles.x[k];
     hub += x[k];
   }
@@ -137,7 +149,7 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
   // Summed per neighbour first (in tire order, then in each tire's order), then one rigid
   // displacement each, about its centroid as it is now.
   bool any = false;
-  for (std::size_t a = 0; a < tires.size() && a < reactions_.size(); ++a) {
+  for (const std::uint32_t a : members_) {
     for (const TireReaction& r : reactions_[a]) {
       Tire& b = tires[r.tire];
       linear_[r.tire] += r.push;
@@ -148,7 +160,7 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
     reactions_[a].clear();
   }
   if (!any) return;
-  for (std::size_t i = 0; i < tires.size(); ++i) {
+  for (const std::uint32_t i : members_) {
     if (linear_[i] == Vec2{} && angular_[i] == 0.0) continue;
     Tire& t = tires[i];
     const RigidMotion rigid = t.rigid_motion();
@@ -173,7 +185,7 @@ void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_cla
       t.late_push.add(shift * (-1.0 / h), turn * (-1.0 / h), rigid.centroid);
       continue;
     }
-    pushed_.push_back(static_cast<std::uint32_t>(i));
+    pushed_.push_back(i);
     // The push is an impulse: it moves the particles and their velocities alike, so that the
     // inertial target x̃ = xₙ + h v of the tire's own solve (global_solver.h) moves with them and a
     // later solve of this substep does not pull the tire back (which lost a collision's momentum).

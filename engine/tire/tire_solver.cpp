@@ -83,6 +83,7 @@ void clamp_velocities(Tire& t, double v_max) {
 void predict(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   const double h = ctx.h;
+  t.predicted_push = t.late_push;
   if (t.late_push.any) {  // what neighbours pushed after the tire's last solve (tire_neighbours.h)
     const Tire::LatePush& k = t.late_push;
     for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += k.velocity + perp(p.x[i] - k.centre) * k.spin;
@@ -427,6 +428,7 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
     TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");
     const GlobalSolverPool::Lease solver = ctx.global->lend();
     solver->solve(t, ctx);
+    t.predicted_push = {};
   } else {
     if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
     t.distance.solve(p.x.data());

@@ -261,7 +261,7 @@ void World::step(const TickInput& input) {
   // The global method solves the contacts between tires inside each tire's system instead
   // (tire_neighbours.h): each tire's neighbours.
   const bool neighbours = global && !tire_pairs_.empty();
-  if (neighbours) neighbours_.set_pairs(tires_.size(), tire_pairs_);
+  if (neighbours) neighbours_.set_pairs(tires_.size(), sleep_.awake(), tire_pairs_);
 
   SubstepContext ctx{h,        0.0,
                      gravity_, &tick_config_,
@@ -379,7 +379,7 @@ void World::solve_positions(const SubstepContext& ctx, int iteration) {
 // A colour at a time, its tires solved in parallel against their neighbours' treads as the colours
 // before left them; then the pushes they owe the neighbours, in tire order.
 void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
-  neighbours_.capture(tires_);
+  neighbours_.capture(tires_, ctx.h);
   for (std::size_t c = 0; c < neighbours_.colours(); ++c) {
     const std::span<const std::uint32_t> tires = neighbours_.tires_of_colour(c);
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {

@@ -193,9 +193,8 @@ constexpr double kCrowdPitFloor = -12.0;
 constexpr int kCrowdFalling = 100;
 constexpr std::uint64_t kCrowdDropTicks = 240;
 
-std::unique_ptr<Steppable> crowd(int resting) {
-  // Gauss–Seidel 8 × 1, the method for crowds and piles of hundreds (README, "The default method").
-  auto world = std::make_unique<tire::World>(tire::SolverConfig::gauss_seidel_8x1(), tire::Vec2{0.0, -9.81});
+std::unique_ptr<Steppable> crowd(int resting, const tire::SolverConfig& config) {
+  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
   const double shelves_right = kCrowdPitLeft - 1.0;
   // The ground under the shelves is the lowest shelf; the pit's floor and walls.
   world->add_obstacle({{{-1.0, -1.0}, {shelves_right, 0.0}}});
@@ -345,12 +344,20 @@ const Scene kScenes[] = {
      [] { return pile(1000, 0, tire::SolverMethod::global, 2); },
      {}},
     {"crowd-100",
-     "100 tires dropped into a pit again every 4 s, beside empty shelves",
-     [] { return crowd(0); },
+     "100 tires dropped into a pit again every 4 s, beside empty shelves, Gauss-Seidel 8 x 1",
+     [] { return crowd(0, tire::SolverConfig::gauss_seidel_8x1()); },
      {}},
     {"crowd-10000",
      "as crowd-100, beside 9900 tires resting on the shelves",
-     [] { return crowd(kCrowdShelves * kCrowdPerShelf); },
+     [] { return crowd(kCrowdShelves * kCrowdPerShelf, tire::SolverConfig::gauss_seidel_8x1()); },
+     {}},
+    {"global-crowd-100",
+     "as crowd-100, solved by the default method (global 2 x 1)",
+     [] { return crowd(0, {}); },
+     {}},
+    {"global-crowd-10000",
+     "as crowd-10000, solved by the default method (global 2 x 1)",
+     [] { return crowd(kCrowdShelves * kCrowdPerShelf, {}); },
      {}},
 };
 

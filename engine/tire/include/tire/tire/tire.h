@@ -219,6 +219,10 @@ struct Tire {
     }
   };
   LatePush late_push;
+  // The late push this substep's prediction took, until the tire's first solve of the substep:
+  // neighbours anchoring their static friction to its predicted tread (TireNeighbours::capture) leave
+  // it out, as it is their own reactions coming back.
+  LatePush predicted_push;
   Vec2 tread_hub;            // mean of the tread particles, after this iteration's own solve
   double tread_reach = 0.0;  // largest distance of a tread particle from tread_hub
   Vec2 rim_hub;              // the same for the rim, for the tread–rim contact

@@ -84,7 +84,10 @@ class TireNeighbours {
   void reserve(const std::vector<Tire>& tires, std::size_t pairs);
   // This tick's candidate pairs, as a list of neighbours per tire, and the tires' colours: greedy
   // in tire order, each tire the lowest colour none of its neighbours before it took.
-  void set_pairs(std::size_t tire_count, const std::vector<TirePair>& pairs);
+  // Only the `members` (the awake tires, in tire order) are coloured, captured and pushed: a pair's
+  // tires are both among them.
+  void set_pairs(std::size_t tire_count, std::span<const std::uint32_t> members,
+                 const std::vector<TirePair>& pairs);
   std::size_t colours() const { return colour_begin_.empty() ? 0 : colour_begin_.size() - 1; }
   // The tires of colour c, in tire order.
   std::span<const std::uint32_t> tires_of_colour(std::size_t c) const {
@@ -92,8 +95,8 @@ class TireNeighbours {
   }
   // The treads where they are now, as the next colour's tires see them: every tire (at the start
   // of an iteration), or only those that moved since, the colour just `solved` and the tires its
-  // pushes moved (the rest are as captured, bit for bit).
-  void capture(const std::vector<Tire>& tires);
+  // pushes moved (the rest are as captured, bit for bit). `h`: the substep.
+  void capture(const std::vector<Tire>& tires, double h);
   void refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved);
   // The index in the world's tires of `tire`, one of the tires captured.
   std::uint32_t index_of(const Tire& tire) const { return static_cast<std::uint32_t>(&tire - first_); }
@@ -117,6 +120,8 @@ class TireNeighbours {
 
  private:
   const Tire* first_ = nullptr;
+  double h_ = 0.0;                      // the substep captured
+  std::vector<std::uint32_t> members_;  // the tires set_pairs was given, in tire order
   std::vector<std::uint32_t> adjacency_begin_;
   std::vector<std::uint32_t> adjacency_;
   std::vector<std::uint32_t> colour_;        // per tire
