@@ -150,7 +150,14 @@ RigidMotion Tire::substep_motion(double h) const {
 }
 
 RigidMotion Tire::rigid_motion() const {
-  RigidMotion m{centroid(), velocity(), 0.0, 0.0};
+  // centroid() and velocity() in one pass (each sum in the same order: the same bits).
+  Vec2 x_sum, v_sum;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    x_sum += particles.x[i];
+    v_sum += particles.v[i];
+  }
+  const double count = static_cast<double>(particles.size());
+  RigidMotion m{x_sum / count, v_sum / count, 0.0, 0.0};
   double momentum = 0.0;  // L and I per unit particle mass
   double inertia = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {

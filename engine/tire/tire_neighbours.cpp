@@ -8,6 +8,22 @@
 
 namespace tire {
 
+namespace {
+
+// Tire::rigid_motion's centroid and inertia, from the positions alone (the same sums, the same bits).
+struct MassFrame {
+  Vec2 centroid;
+  double inertia = 0.0;
+};
+MassFrame mass_frame(const Tire& t) {
+  MassFrame f{t.centroid(), 0.0};
+  for (const Vec2& x : t.particles.x) f.inertia += length_squared(x - f.centroid);
+  f.inertia *= t.particle_mass();
+  return f;
+}
+
+}  // namespace
+
 void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) {
   std::size_t particles = 0;
   for (const Tire& t : tires) particles += t.n;
@@ -20,6 +36,7 @@ void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) 
   reserve_doubling(by_colour_, tires.size());
   reserve_doubling(offset_, tires.size() + 1);
   reserve_doubling(pushed_, tires.size());
+  reserve_doubling(owed_, tires.size());
   reserve_doubling(x_, particles);
   reserve_doubling(motion_, particles);
   reserve_doubling(hub_, tires.size());
@@ -79,7 +96,7 @@ void TireNeighbours::set_pairs(std::size_t tire_count, std::span<const std::uint
   colour_begin_[0] = 0;
 }
 
-void TireNeighbours::capture(const std::vector<Tire>& tires, double h) {
+void TireNeighbours::begin_capture(const std::vector<Tire>& tires, double h) {
   first_ = tires.data();
   h_ = h;
   offset_.resize(tires.size() + 1);
@@ -94,11 +111,11 @@ void TireNeighbours::capture(const std::vector<Tire>& tires, double h) {
   angular_.resize(tires.size());
   pushed_.clear();
   if (reactions_.size() < tires.size()) reactions_.resize(tires.size());
-  for (const std::uint32_t i : members_) {
-    linear_[i] = Vec2{};
-    angular_[i] = 0.0;
-    capture_tire(tires[i], i);
-  }
+}
+
+void TireNeighbours::capture(const std::vector<Tire>& tires, double h) {
+  begin_capture(tires, h);
+  for (const std::uint32_t i : members_) capture_tire(tires[i], i);
 }
 
 void TireNeighbours::refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved) {
@@ -108,6 +125,8 @@ void TireNeighbours::refresh(const std::vector<Tire>& tires, std::span<const std
 }
 
 void TireNeighbours::capture_tire(const Tire& t, std::size_t i) {
+  linear_[i] = Vec2{};
+  angular_[i] = 0.0;
   Vec2* x = x_.data() + offset_[i];
   Vec2* motion = motion_.data() + offset_[i];
   Vec2 hub;
@@ -125,8 +144,8 @@ void TireNeighbours::capture_tire(const Tire& t, std::size_t i) {
   for (std::uint32_t k = 0; k < t.n; ++k) reach2 = std::max(reach2, length_squared(x[k] - hub));
   hub_[i] = hub;
   reach_[i] = std::sqrt(reach2);
-  const RigidMotion rigid = t.rigid_motion();
-  body_[i] = {rigid.centroid, 1.0 / t.total_mass(), rigid.inertia > 0.0 ? 1.0 / rigid.inertia : 0.0};
+  const MassFrame frame = mass_frame(t);
+  body_[i] = {frame.centroid, 1.0 / t.total_mass(), frame.inertia > 0.0 ? 1.0 / frame.inertia : 0.0};
 }
 
 TreadView TireNeighbours::tread(std::uint32_t tire) const {
@@ -144,58 +163,64 @@ TreadView TireNeighbours::tread(std::uint32_t tire) const {
           static_cast<double>(std::max<std::size_t>(1, neighbours(tire).size()))};
 }
 
-void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h,
-                                     std::size_t colour) const {
-  // Summed per neighbour first (in tire order, then in each tire's order), then one rigid
-  // displacement each, about its centroid as it is now.
-  bool any = false;
+std::span<const std::uint32_t> TireNeighbours::gather_reactions(std::vector<Tire>& tires) const {
+  // Summed per neighbour, in tire order, then in each tire's order.
+  owed_.clear();
   for (const std::uint32_t a : members_) {
     for (const TireReaction& r : reactions_[a]) {
       Tire& b = tires[r.tire];
       linear_[r.tire] += r.push;
       angular_[r.tire] += cross(r.point - body_[r.tire].centroid, r.push);
       if (r.carried) b.on_tire[r.edge] = b.on_tire[(r.edge + 1) % b.n] = 1;
-      any = true;
     }
     reactions_[a].clear();
   }
-  if (!any) return;
-  for (const std::uint32_t i : members_) {
-    if (linear_[i] == Vec2{} && angular_[i] == 0.0) continue;
-    Tire& t = tires[i];
-    const RigidMotion rigid = t.rigid_motion();
-    // The angular push was taken about the captured centroid; moved to the current one.
-    const double angular = angular_[i] + cross(body_[i].centroid - rigid.centroid, linear_[i]);
-    Vec2 shift = linear_[i] * (1.0 / t.total_mass());
-    double turn = rigid.inertia > 0.0 ? angular / rigid.inertia : 0.0;
-    // The anti-tunnelling clamp: the farthest any particle would move, scaled to the limit.
-    double farthest2 = 0.0;
-    for (const Vec2& x : t.particles.x)
-      farthest2 = std::max(farthest2, length_squared(shift + perp(x - rigid.centroid) * turn));
-    const double limit = tunnel_clamp * t.segment_length;
-    if (farthest2 > limit * limit) {
-      const double scale = limit / std::sqrt(farthest2);
-      shift = shift * scale;
-      turn *= scale;
-    }
-    linear_[i] = Vec2{};
-    angular_[i] = 0.0;
-    if (colour_[i] <= colour) {
-      // Solved already: the push waits for its next prediction, as the velocity −Δx/h.
-      t.late_push.add(shift * (-1.0 / h), turn * (-1.0 / h), rigid.centroid);
-      continue;
-    }
-    pushed_.push_back(i);
-    // The push is an impulse: it moves the particles and their velocities alike, so that the
-    // inertial target x̃ = xₙ + h v of the tire's own solve (global_solver.h) moves with them and a
-    // later solve of this substep does not pull the tire back (which lost a collision's momentum).
-    Particles& p = t.particles;
-    for (std::size_t k = 0; k < p.x.size(); ++k) {
-      const Vec2 dx = shift + perp(p.x[k] - rigid.centroid) * turn;
-      p.x[k] -= dx;
-      p.v[k] -= dx * (1.0 / h);
-    }
+  for (const std::uint32_t i : members_)
+    if (linear_[i] != Vec2{} || angular_[i] != 0.0) owed_.push_back(i);
+  return owed_;
+}
+
+bool TireNeighbours::apply_reaction(Tire& t, std::uint32_t i, double tunnel_clamp, double h,
+                                    std::size_t colour) const {
+  // One rigid displacement about the tire's centroid as it is now.
+  const MassFrame rigid = mass_frame(t);
+  // The angular push was taken about the captured centroid; moved to the current one.
+  const double angular = angular_[i] + cross(body_[i].centroid - rigid.centroid, linear_[i]);
+  Vec2 shift = linear_[i] * (1.0 / t.total_mass());
+  double turn = rigid.inertia > 0.0 ? angular / rigid.inertia : 0.0;
+  // The anti-tunnelling clamp: the farthest any particle would move, scaled to the limit.
+  double farthest2 = 0.0;
+  for (const Vec2& x : t.particles.x)
+    farthest2 = std::max(farthest2, length_squared(shift + perp(x - rigid.centroid) * turn));
+  const double limit = tunnel_clamp * t.segment_length;
+  if (farthest2 > limit * limit) {
+    const double scale = limit / std::sqrt(farthest2);
+    shift = shift * scale;
+    turn *= scale;
   }
+  linear_[i] = Vec2{};
+  angular_[i] = 0.0;
+  if (colour_[i] <= colour) {
+    // Solved already: the push waits for its next prediction, as the velocity −Δx/h.
+    t.late_push.add(shift * (-1.0 / h), turn * (-1.0 / h), rigid.centroid);
+    return false;
+  }
+  // The push is an impulse: it moves the particles and their velocities alike, so that the
+  // inertial target x̃ = xₙ + h v of the tire's own solve (global_solver.h) moves with them and a
+  // later solve of this substep does not pull the tire back (which lost a collision's momentum).
+  Particles& p = t.particles;
+  for (std::size_t k = 0; k < p.x.size(); ++k) {
+    const Vec2 dx = shift + perp(p.x[k] - rigid.centroid) * turn;
+    p.x[k] -= dx;
+    p.v[k] -= dx * (1.0 / h);
+  }
+  return true;
+}
+
+void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h,
+                                     std::size_t colour) const {
+  for (const std::uint32_t i : gather_reactions(tires))
+    if (apply_reaction(tires[i], i, tunnel_clamp, h, colour)) pushed_.push_back(i);
 }
 
 }  // namespace tire

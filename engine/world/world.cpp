@@ -378,15 +378,32 @@ void World::solve_positions(const SubstepContext& ctx, int iteration) {
 // The global method with tires in contact: block Gauss–Seidel between tires (tire_neighbours.h).
 // A colour at a time, its tires solved in parallel against their neighbours' treads as the colours
 // before left them; then the pushes they owe the neighbours, in tire order.
+//
+// Only summing the pushes is serial (in tire order); capturing the treads and handing the pushes out
+// run on the threads, tire by tire (TireNeighbours::capture_tire, apply_reaction).
 void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
-  neighbours_.capture(tires_, ctx.h);
+  neighbours_.begin_capture(tires_, ctx.h);
+  const std::span<const std::uint32_t> members = neighbours_.members();
+  for_tires(members.size(), [&](std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k) neighbours_.capture_tire(tires_[members[k]], members[k]);
+  });
   for (std::size_t c = 0; c < neighbours_.colours(); ++c) {
     const std::span<const std::uint32_t> tires = neighbours_.tires_of_colour(c);
+    const bool more = c + 1 < neighbours_.colours();  // a later colour reads the treads
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t k = b; k < e; ++k) solve_iteration(tires_[tires[k]], ctx, last);
+      for (std::size_t k = b; k < e; ++k) {
+        solve_iteration(tires_[tires[k]], ctx, last);
+        if (more) neighbours_.capture_tire(tires_[tires[k]], tires[k]);
+      }
     });
-    neighbours_.apply_reactions(tires_, config_.tunnel_clamp, ctx.h, c);
-    if (c + 1 < neighbours_.colours()) neighbours_.refresh(tires_, tires);
+    const std::span<const std::uint32_t> owed = neighbours_.gather_reactions(tires_);
+    for_tires(owed.size(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t k = b; k < e; ++k) {
+        const std::uint32_t i = owed[k];
+        if (neighbours_.apply_reaction(tires_[i], i, config_.tunnel_clamp, ctx.h, c) && more)
+          neighbours_.capture_tire(tires_[i], i);
+      }
+    });
   }
 }
 

@@ -98,6 +98,14 @@ class TireNeighbours {
   // pushes moved (the rest are as captured, bit for bit). `h`: the substep.
   void capture(const std::vector<Tire>& tires, double h);
   void refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved);
+  // capture() in parts, for a caller that spreads the tires over threads: begin_capture once, then
+  // capture_tire for each member (any order, any thread: each writes only its own tire's slots).
+  // A tire of the colour being solved may be captured as soon as its own solve ends, as no tire of
+  // its colour reads it; a tire moved by apply_reaction, once moved.
+  void begin_capture(const std::vector<Tire>& tires, double h);
+  void capture_tire(const Tire& t, std::size_t i);
+  std::span<const std::uint32_t> members() const { return members_; }
+  std::uint32_t colour_of(std::uint32_t tire) const { return colour_[tire]; }
   // The index in the world's tires of `tire`, one of the tires captured.
   std::uint32_t index_of(const Tire& tire) const { return static_cast<std::uint32_t>(&tire - first_); }
   std::span<const std::uint32_t> neighbours(std::uint32_t tire) const {
@@ -117,6 +125,11 @@ class TireNeighbours {
   // and its solve turn the way out into velocity: the energy that made piles creep (60 tires in a
   // 6 m box never slept at 2 × 1; docs/at-rest.md).
   void apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h, std::size_t colour) const;
+  // apply_reactions in parts: gather_reactions sums what each tire is owed (in tire order, so the
+  // same on any thread count) and lists the tires owed something; apply_reaction then hands tire i
+  // its push (distinct tires on any threads), true when it moved it (a later colour's tire).
+  std::span<const std::uint32_t> gather_reactions(std::vector<Tire>& tires) const;
+  bool apply_reaction(Tire& t, std::uint32_t i, double tunnel_clamp, double h, std::size_t colour) const;
 
  private:
   const Tire* first_ = nullptr;
@@ -139,13 +152,13 @@ class TireNeighbours {
     double inverse_inertia = 0.0;
   };
   std::vector<Body> body_;
-  void capture_tire(const Tire& t, std::size_t i);
   // apply_reactions' sums per tire: the linear and angular push, and whether any came; the tires it
   // moved, for refresh.
   mutable std::vector<Vec2> linear_;
   mutable std::vector<double> angular_;
   mutable std::vector<std::vector<TireReaction>> reactions_;
   mutable std::vector<std::uint32_t> pushed_;
+  mutable std::vector<std::uint32_t> owed_;  // gather_reactions': the tires owed a push
 };
 
 }  // namespace tire
