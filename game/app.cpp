@@ -11,6 +11,7 @@
 #include "hud.h"
 #include "menus.h"
 #include "screenshot.h"
+#include "tire/io/file_io.h"
 #include "tire/math/state_hash.h"
 #include "tuning_panel.h"
 
@@ -199,14 +200,38 @@ void App::editor_frame() {
 bool App::level_over() const { return session_.level_session().status() != tire::ScriptStatus::running; }
 
 // Saves the session so far into replays/ beside the levels folder, under a name with the level and
-// the time, written atomically.
+// the time, written atomically and never over an earlier save (a second save in the same second is
+// <name>-2.json); the message names the file written.
 void App::save_replay() {
   const std::filesystem::path dir = std::filesystem::absolute(options_.levels_dir).parent_path() / "replays";
-  const std::filesystem::path file = recorder_.default_file(dir);
-  if (const std::string err = recorder_.save(session_.level_session(), file); !err.empty())
-    warn("cannot save the replay: " + err);
+  std::string error;
+  if (const auto file = recorder_.save_new(session_.level_session(), recorder_.default_file(dir), error))
+    warn("replay saved: " + file->string() + " (" + std::to_string(recorder_.ticks()) + " ticks)");
   else
-    warn("replay saved: " + file.string() + " (" + std::to_string(recorder_.ticks()) + " ticks)");
+    warn("cannot save the replay: " + error);
+}
+
+std::string App::check_outputs() const {
+  const std::filesystem::path level = options_.edit.empty() ? options_.level : options_.edit;
+  struct Output {
+    const char* option;
+    const std::string& file;
+    bool atomic;  // written by tire::write_file_atomically, which refuses what is not a regular file
+  };
+  // The audio log is a stream (sound/audio_log.h): a FIFO or /dev/stdout may take it.
+  const Output outputs[] = {{"--record", options_.record, true},
+                            {"--screenshot", options_.screenshot, true},
+                            {"--audio-log", options_.sound.log_file, false}};
+  for (const Output& out : outputs) {
+    if (out.file.empty()) continue;
+    if (tire::same_file(out.file, level))
+      return std::string(out.option) + " " + out.file + " is the level being played (" + level.string() +
+             "); refusing to write over it";
+    if (out.atomic)
+      if (const std::string error = tire::check_output_file(out.file); !error.empty())
+        return std::string(out.option) + ": " + error;
+  }
+  return "";
 }
 
 void App::warn(const std::string& text) {
@@ -580,11 +605,21 @@ int App::run() {
 }
 
 std::optional<int> App::start() {
+  if (const std::string err = check_outputs(); !err.empty()) {
+    std::cerr << "tire-game: " << err << "\n";
+    return 2;
+  }
   for (const std::string& w : best_runs_.open(options_.data_dir, options_.levels_dir)) warn(w);
   const bool edit = !options_.edit.empty();
   if (edit ? !open_editor(options_.edit) : !load_level(options_.level)) {
     for (const std::string& e : level_errors_) std::cerr << e << "\n";
     return 2;
+  }
+  if (!options_.sound.log_file.empty()) {
+    if (const std::string err = sound_.open_log(options_.sound.log_file); !err.empty()) {
+      std::cerr << "tire-game: " << err << "\n";
+      return 2;
+    }
   }
   if (!open_window()) return 1;
   // SDL drops a pad's events while no window has the keyboard focus, which an offscreen window
@@ -664,8 +699,10 @@ bool App::frame() {
   double screenshot_seconds = 0.0;
   if (last_frame && !options_.screenshot.empty()) {
     const Uint64 shot_start = SDL_GetPerformanceCounter();
-    if (const std::string err = save_screenshot(renderer_, options_.screenshot); !err.empty())
+    if (const std::string err = save_screenshot(renderer_, options_.screenshot); !err.empty()) {
       std::cerr << "tire-game: cannot save the screenshot " << options_.screenshot << ": " << err << "\n";
+      output_failed_ = true;
+    }
     screenshot_seconds = seconds_since(shot_start);
   }
   const Uint64 present_start = SDL_GetPerformanceCounter();
@@ -690,6 +727,10 @@ bool App::frame() {
 }
 
 int App::finish() {
+  if (const std::string err = sound_.close_log(); !err.empty()) {
+    std::cerr << "tire-game: " << err << "\n";
+    output_failed_ = true;
+  }
   if (!options_.record.empty()) {
     if (const std::string err = recorder_.save(session_.level_session(), options_.record); !err.empty()) {
       std::cerr << "tire-game: cannot save the replay " << options_.record << ": " << err << "\n";
@@ -698,7 +739,7 @@ int App::finish() {
   }
   summary_ = summary_json(frame_);
   std::cout << summary_ << std::endl;
-  return 0;
+  return output_failed_ ? 2 : 0;
 }
 
 std::string App::summary_json(long long frames) const {

@@ -62,7 +62,8 @@ class App {
   App& operator=(const App&) = delete;
 
   // Runs until the window closes (or the frame count is reached). Exit code: 0 done, 1 no window,
-  // 2 the level does not load.
+  // 2 the level does not load, an output is refused (check_outputs) or an output failed (the
+  // screenshot, the audio log, the --record replay).
   int run();
 
   // run()'s parts, for a host that drives the frames itself (the browser's main loop calls frame()
@@ -107,6 +108,9 @@ class App {
   bool level_over() const;
   void warn(const std::string& text);
   void save_replay();
+  // "" when the outputs asked for (--record, --screenshot, --audio-log) may be written, else why
+  // not: one is the level being played, or (written atomically) a directory, FIFO or device.
+  std::string check_outputs() const;
   // Gamepads (gamepad.h), progress and the ghost (best_runs.h).
   void pad_event(const SDL_Event& event);
   void level_finished();
@@ -156,6 +160,7 @@ class App {
   bool next_level_handled_ = false;
   std::optional<double> finished_at_;  // level time when the level was won or lost
   bool quit_ = false;
+  bool output_failed_ = false;  // an output could not be written: the exit code says so
 
   // Timing.
   Uint64 run_start_ = 0;    // performance counter when the loop started

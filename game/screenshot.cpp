@@ -1,6 +1,9 @@
 #include "screenshot.h"
 
-#include <filesystem>
+#include <cstdint>
+#include <vector>
+
+#include "tire/io/file_io.h"
 
 namespace game {
 
@@ -13,17 +16,23 @@ std::string save_screenshot(SDL_Renderer* renderer, const std::string& file) {
   if (SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_BGR24, surface->pixels, surface->pitch) != 0) {
     error = SDL_GetError();
   } else {
-    const std::string temp = file + ".tmp";
-    if (SDL_SaveBMP(surface, temp.c_str()) != 0) {
+    // The BMP is made in memory, then written like every other output (tire::write_file_atomically).
+    // Room for any header SDL writes (at most 138 bytes) and rows of 3 bytes a pixel padded to 4.
+    std::vector<std::uint8_t> bmp(1024 + static_cast<std::size_t>(h) * (static_cast<std::size_t>(w) * 3 + 3));
+    SDL_RWops* out = SDL_RWFromMem(bmp.data(), static_cast<int>(bmp.size()));
+    if (!out || SDL_SaveBMP_RW(surface, out, 0) != 0) {
       error = SDL_GetError();
     } else {
-      std::error_code ec;
-      std::filesystem::rename(temp, file, ec);
-      if (ec) {
-        error = "cannot rename " + temp + " to " + file + ": " + ec.message();
-        std::filesystem::remove(temp, ec);
+      const Sint64 size = SDL_RWtell(out);
+      if (size <= 0 || static_cast<std::size_t>(size) > bmp.size()) {
+        error = "the BMP did not fit in memory";
+      } else {
+        const std::string_view bytes(reinterpret_cast<const char*>(bmp.data()),
+                                     static_cast<std::size_t>(size));
+        tire::write_file_atomically(file, bytes, error);  // sets `error` when it fails
       }
     }
+    if (out) SDL_RWclose(out);
   }
   SDL_FreeSurface(surface);
   return error;

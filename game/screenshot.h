@@ -1,5 +1,6 @@
-// Saves what the renderer has drawn (before it is presented) as a BMP file, atomically: written to
-// a temporary file beside it, then renamed over it.
+// Saves what the renderer has drawn (before it is presented) as a BMP file: made in memory, then
+// written by tire::write_file_atomically (atomic; a symbolic link written through, the mode of an
+// existing file kept; a directory, FIFO or device refused).
 #pragma once
 
 #include <SDL.h>

@@ -143,19 +143,39 @@ void SessionRecorder::on_stepped(const tire::LevelSession& session) {
   if (recorder_) recorder_->after_step(session);
 }
 
-std::string SessionRecorder::save(const tire::LevelSession& session, const std::filesystem::path& file,
-                                  bool last_run_only) const {
-  if (!recorder_) return "nothing recorded yet";
+std::optional<std::string> SessionRecorder::replay_json(const tire::LevelSession& session,
+                                                        const std::filesystem::path& target,
+                                                        bool last_run_only, std::string& error) const {
+  if (!recorder_) {
+    error = "nothing recorded yet";
+    return std::nullopt;
+  }
   tire::Replay replay = recorder_->finish(session);
   if (last_run_only) replay = last_attempt(replay);
-  const std::filesystem::path target = std::filesystem::absolute(file);
   std::error_code ec;
   std::filesystem::create_directories(target.parent_path(), ec);
   replay.level = std::filesystem::relative(level_file_, target.parent_path(), ec).generic_string();
   if (ec || replay.level.empty()) replay.level = level_file_.generic_string();
+  return tire::replay_to_json(replay);
+}
+
+std::string SessionRecorder::save(const tire::LevelSession& session, const std::filesystem::path& file,
+                                  bool last_run_only) const {
+  const std::filesystem::path target = std::filesystem::absolute(file);
   std::string error;
-  if (!tire::write_file_atomically(target, tire::replay_to_json(replay), error)) return error;
+  const std::optional<std::string> json = replay_json(session, target, last_run_only, error);
+  if (!json || !tire::write_file_atomically(target, *json, error)) return error;
   return "";
+}
+
+std::optional<std::filesystem::path> SessionRecorder::save_new(const tire::LevelSession& session,
+                                                               const std::filesystem::path& file,
+                                                               std::string& error) const {
+  // Every name tried is in the same folder, so the level's path inside is right for any of them.
+  const std::filesystem::path target = std::filesystem::absolute(file);
+  const std::optional<std::string> json = replay_json(session, target, false, error);
+  if (!json) return std::nullopt;
+  return tire::write_new_file_atomically(target, *json, error);
 }
 
 std::filesystem::path SessionRecorder::default_file(const std::filesystem::path& dir) const {

@@ -34,13 +34,24 @@ class SessionRecorder final : public SessionObserver {
   // "" when saved.
   std::string save(const tire::LevelSession& session, const std::filesystem::path& file,
                    bool last_run_only = false) const;
-  // A file name the player can find: <dir>/<level name>-<YYYYmmdd-HHMMSS>.json.
+  // As save, but never over an existing file (F5): `file` when free, else the first free one of
+  // <stem>-2.json, <stem>-3.json, ... (tire::write_new_file_atomically). Returns the file written,
+  // or nullopt with `error` set.
+  std::optional<std::filesystem::path> save_new(const tire::LevelSession& session,
+                                                const std::filesystem::path& file, std::string& error) const;
+  // A file name the player can find: <dir>/<level name>-<YYYYmmdd-HHMMSS>.json (save_new numbers
+  // a second save in the same second).
   std::filesystem::path default_file(const std::filesystem::path& dir) const;
 
   std::uint64_t ticks() const { return recorder_ ? recorder_->ticks() : 0; }
 
  private:
   void input(tire::ReplayInput in);
+  // The recording as replay JSON to be written at `target` (absolute; its folder is made), the
+  // level named relative to it.
+  std::optional<std::string> replay_json(const tire::LevelSession& session,
+                                         const std::filesystem::path& target, bool last_run_only,
+                                         std::string& error) const;
 
   std::optional<tire::ReplayRecorder> recorder_;
   std::filesystem::path level_file_;  // absolute

@@ -202,3 +202,22 @@ tirectl_test("tradeoff refuses zero substeps" 2 ARGS tradeoff --substeps 0 --out
   STDERR "--substeps")
 tirectl_test("tradeoff refuses an unknown scenario" 2 ARGS tradeoff --scenarios nowhere --out ${TRADEOFF_OUT}-bad
   STDERR "unknown scenario \"nowhere\"")
+
+# Outputs written safely (README "Hardening"): never over the level being run or the replay read,
+# never onto a FIFO, device or directory, through a symbolic link to its file, the mode kept; a
+# write that fails is exit 2 naming the file. Each case in a folder of its own under the build.
+foreach(check "onto-level/run --record onto the level being run is refused before the run, the level unchanged"
+              "onto-input/run --record onto the --input replay is refused, the replay unchanged"
+              "fifo/run --record onto a FIFO or a directory is refused, the FIFO stays a FIFO"
+              "link-mode/run --record through a symbolic link writes its file and keeps the link and a 0600 mode"
+              "missing-dir/run --record into a missing folder fails with exit 2 naming the file")
+  string(FIND "${check}" "/" slash)
+  string(SUBSTRING "${check}" 0 ${slash} case)
+  math(EXPR slash "${slash} + 1")
+  string(SUBSTRING "${check}" ${slash} -1 what)
+  add_test(NAME "tirectl ${what}"
+    COMMAND ${CMAKE_COMMAND} -DTIRECTL=$<TARGET_FILE:tirectl> -DLEVEL=${LEVELS}/01-first-roll.json
+      -DWORK=${CMAKE_CURRENT_BINARY_DIR}/outputs-${case} -DCASE=${case}
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_outputs.cmake)
+  set_tests_properties("tirectl ${what}" PROPERTIES LABELS unit TIMEOUT 120)
+endforeach()

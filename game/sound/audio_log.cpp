@@ -16,16 +16,39 @@ bool moved(double now, double then) { return std::abs(now - then) > 0.1 * std::a
 }  // namespace
 
 bool AudioLog::open(const std::string& file, std::string& error) {
-  out_.open(file, std::ios::out | std::ios::trunc);
+  close();
+  file_ = file;
+  error_.clear();
+  out_ = std::fopen(file.c_str(), "we");  // e: close on exec
   if (!out_) {
-    error = "cannot write the audio log " + file + ": " + std::strerror(errno);
+    fail(errno);
+    error = error_;
     return false;
   }
   return true;
 }
 
+void AudioLog::fail(int error_number) {
+  if (error_.empty()) error_ = "cannot write the audio log " + file_ + ": " + std::strerror(error_number);
+}
+
+void AudioLog::put(const std::string& line) {
+  if (!out_ || !error_.empty()) return;  // after a failure nothing more is written
+  if (std::fputs(line.c_str(), out_) == EOF || std::fputc('\n', out_) == EOF) fail(errno);
+}
+
+std::string AudioLog::close() {
+  if (out_) {
+    errno = 0;
+    if (std::fflush(out_) != 0 || std::ferror(out_)) fail(errno ? errno : EIO);
+    if (std::fclose(out_) != 0) fail(errno);
+    out_ = nullptr;
+  }
+  return error_;
+}
+
 void AudioLog::write(const SoundEvent& e) {
-  if (!out_.is_open()) return;
+  if (!out_) return;
   if (is_held(e.kind)) {
     const auto key = std::make_pair(e.kind, e.tire);
     const auto it = held_.find(key);
@@ -44,11 +67,11 @@ void AudioLog::write(const SoundEvent& e) {
   line["gain"] = rounded(e.gain);
   line["pitch"] = rounded(e.pitch);
   if (e.tire >= 0) line["pan"] = rounded(e.pan);
-  out_ << line.dump() << '\n';
+  put(line.dump());
 }
 
 void AudioLog::write_mix(std::uint64_t tick, const MixStats& stats) {
-  if (!out_.is_open()) return;
+  if (!out_) return;
   if (mix_written_ && stats.playing == last_mix_.playing && stats.wanted == last_mix_.wanted) return;
   mix_written_ = true;
   last_mix_ = stats;
@@ -57,11 +80,7 @@ void AudioLog::write_mix(std::uint64_t tick, const MixStats& stats) {
   line["kind"] = "mix";
   line["playing"] = stats.playing;
   line["wanted"] = stats.wanted;
-  out_ << line.dump() << '\n';
-}
-
-void AudioLog::close() {
-  if (out_.is_open()) out_.close();
+  put(line.dump());
 }
 
 }  // namespace game::sound

@@ -11,10 +11,16 @@ std::vector<std::string> SoundSystem::open(const SoundOptions& options) {
   std::vector<std::string> problems;
   mixer_->set_volume(options.volume);
   std::string error;
-  if (!options.log_file.empty() && !log_.open(options.log_file, error)) problems.push_back(error);
   if (!output_.open(*mixer_, error)) problems.push_back("no sound: " + error);
   return problems;
 }
+
+std::string SoundSystem::open_log(const std::string& file) {
+  std::string error;
+  return log_.open(file, error) ? "" : error;
+}
+
+std::string SoundSystem::close_log() { return log_.close(); }
 
 void SoundSystem::close() {
   output_.close();

@@ -18,7 +18,7 @@ namespace game::sound {
 
 struct SoundOptions {
   double volume = 0.8;   // [0, 1]
-  std::string log_file;  // --audio-log: empty for none
+  std::string log_file;  // --audio-log: empty for none (opened by open_log)
 };
 
 class SoundSystem {
@@ -28,9 +28,13 @@ class SoundSystem {
   SoundSystem(const SoundSystem&) = delete;
   SoundSystem& operator=(const SoundSystem&) = delete;
 
-  // Synthesises the sounds and opens the device and the log. Returns the problems (for the app to
-  // show as warnings); the game goes on without sound whatever they are.
+  // Synthesises the sounds and opens the device. Returns the problems (for the app to show as
+  // warnings); the game goes on without sound whatever they are.
   std::vector<std::string> open(const SoundOptions& options);
+  // The audio log (--audio-log FILE): "" when opened, else why not. Closed by close_log, which
+  // returns the first write that failed ("" when none), or by close, which drops it.
+  std::string open_log(const std::string& file);
+  std::string close_log();
   void close();
 
   // After each tick of `session`, driven by `input`.

@@ -1,5 +1,7 @@
 // The gamepad's pure parts (the --pad parser, the stick's dead zone), the progress file (parsing,
 // damage, best times, keys) and the ghost (a cut recording, lockstep replay) without a window.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <fstream>
 
@@ -179,5 +181,43 @@ TEST_CASE("the ghost steps in lockstep from its replay and ends where the run en
   CHECK(ghost.load(dir / "none.json", level, sha).empty());
   std::ofstream(dir / "broken.json") << "{\"format\": \"tire-rep";
   CHECK(ghost.load(dir / "broken.json", level, sha).find("cannot read the ghost") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("F5's saves never reuse a name: a second save in the same second is <name>-2.json",
+          "[unit][game][replay]") {
+  const auto level = level_01();
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tire-f5-test-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  const std::filesystem::path level_file = std::filesystem::path(TIRE_LEVELS_DIR) / "01-first-roll.json";
+  SessionRecorder recorder;
+  recorder.begin(level_file, level->gravity);
+  std::unique_ptr<tire::LevelSession> session = tire::make_session(*level);
+  std::vector<std::filesystem::path> saved;
+  for (int save = 0; save < 3; ++save) {
+    for (int t = 0; t < 10; ++t) {
+      recorder.on_step(session->world().tick(), {1.0, false});
+      session->step({1.0, false});
+      recorder.on_stepped(*session);
+    }
+    // The same name each time, as default_file gives within one second.
+    std::string error;
+    const auto file =
+        recorder.save_new(*session, dir / "replays" / "01-first-roll-20240101-120000.json", error);
+    INFO(error);
+    REQUIRE(file);
+    saved.push_back(*file);
+  }
+  CHECK(saved[0].filename() == "01-first-roll-20240101-120000.json");
+  CHECK(saved[1].filename() == "01-first-roll-20240101-120000-2.json");
+  CHECK(saved[2].filename() == "01-first-roll-20240101-120000-3.json");
+  // Each holds its own save, and names the level relative to itself.
+  for (std::size_t i = 0; i < saved.size(); ++i) {
+    const tire::ReplayLoad load = tire::load_replay_file(saved[i]);
+    REQUIRE(load.replay);
+    CHECK(load.replay->ticks == 10 * (i + 1));
+    CHECK(std::filesystem::equivalent(saved[i].parent_path() / load.replay->level, level_file));
+  }
   std::filesystem::remove_all(dir);
 }

@@ -322,7 +322,7 @@ TEST_CASE("the audio log writes one JSON line per event, held sounds when they s
     log.write({10, SoundKind::roll, Surface::ground, 0, 0.3, 1.5});  // pitch moved: a line
     log.write_mix(10, {2, 2});
     log.write_mix(11, {2, 2});  // unchanged: none
-    log.close();
+    CHECK(log.close().empty());
   }
   std::ifstream in(file);
   std::vector<nlohmann::json> lines;
@@ -341,4 +341,23 @@ TEST_CASE("the audio log writes one JSON line per event, held sounds when they s
   CHECK(lines[2]["pitch"] == 1.5);
   CHECK(lines[2]["pan"] == 0.0);
   CHECK(lines[3] == nlohmann::json{{"tick", 10}, {"kind", "mix"}, {"playing", 2}, {"wanted", 2}});
+}
+
+TEST_CASE("a failed audio log write is reported with the file and the reason, never lost in silence",
+          "[sound]") {
+  AudioLog log;
+  std::string error;
+  CHECK_FALSE(log.open("/nonexistent-folder/log.jsonl", error));
+  CHECK(error == "cannot write the audio log /nonexistent-folder/log.jsonl: No such file or directory");
+  if (!std::filesystem::exists("/dev/full")) return;
+  // A full device takes the buffered lines and refuses them at the flush.
+  REQUIRE(log.open("/dev/full", error));
+  log.write({5, SoundKind::impact, Surface::prop, 3, 0.75, 1.1, -0.25});
+  CHECK(log.close() == "cannot write the audio log /dev/full: No space left on device");
+  // More lines than a buffer holds: refused at a write, and nothing more is tried.
+  REQUIRE(log.open("/dev/full", error));
+  for (std::uint64_t tick = 0; tick < 2000; ++tick)
+    log.write({tick, SoundKind::jump, Surface::none, -1, 1.0, 1.0});
+  CHECK(log.error() == "cannot write the audio log /dev/full: No space left on device");
+  CHECK(log.close() == log.error());
 }

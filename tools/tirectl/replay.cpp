@@ -21,6 +21,11 @@ int check_one(const std::string& file, const ReplayOptions& options) {
   }
   tire::Replay replay = *load.replay;
   const std::filesystem::path level_path = std::filesystem::path(file).parent_path() / replay.level;
+  // --update writes the replay: never over its level (a replay naming itself as its level).
+  if (tire::same_file(level_path, file)) {
+    std::cerr << file << ": /level: names the replay file itself (" << level_path.string() << ")\n";
+    return kBadInput;
+  }
   std::string error;
   const auto level_text = tire::read_file(level_path, tire::LevelLimits::max_file_bytes, error);
   if (!level_text) {

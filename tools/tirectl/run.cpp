@@ -104,6 +104,24 @@ void trace(const tire::World& world, const EnergyWatch& energy) {
 }  // namespace
 
 int run(const RunOptions& options) {
+  // An output is never written over an input, nor onto what is not a regular file: refused before
+  // the run, not after it.
+  if (!options.record.empty()) {
+    if (tire::same_file(options.record, options.level)) {
+      std::cerr << "tirectl: --record " << options.record << " is the level being run (" << options.level
+                << "); refusing to write the replay over it\n";
+      return 2;
+    }
+    if (!options.input.empty() && tire::same_file(options.record, options.input)) {
+      std::cerr << "tirectl: --record " << options.record << " is the replay --input " << options.input
+                << " the run reads; refusing to write over it (tirectl replay --update rewrites a replay)\n";
+      return 2;
+    }
+    if (const std::string error = tire::check_output_file(options.record); !error.empty()) {
+      std::cerr << "tirectl: --record: " << error << "\n";
+      return 2;
+    }
+  }
   const tire::LevelLoad load = tire::load_level_file(options.level, options.overrides);
   if (!load.level) {
     for (const std::string& error : load.errors) std::cerr << error << "\n";

@@ -15,8 +15,32 @@ std::optional<std::string> read_file(const std::filesystem::path& file, std::uin
                                      std::string& error);
 
 // Writes `contents` to a temporary file beside `file`, flushes it to disk, then renames it over
-// `file`: a crash or kill at any moment leaves either the old file or the new one, whole.
+// `file`: a crash or kill at any moment leaves either the old file or the new one, whole. False with
+// `error` set (naming the file and what is wrong) when it cannot.
+// - The temporary has a random name and is created with O_EXCL|O_NOFOLLOW: nothing already beside
+//   the file (a symbolic link planted at a guessed name) is opened or followed.
+// - `file` must be a regular file or not exist: a directory, FIFO, device or socket is refused,
+//   never replaced by a regular file.
+// - A symbolic link is written through: the file it leads to gets the contents, the link stays.
+// - An existing file keeps its mode (and its owner, where the writer may set it); a new one gets
+//   0644 less the umask.
 bool write_file_atomically(const std::filesystem::path& file, std::string_view contents, std::string& error);
+
+// As write_file_atomically, but never over an existing file: `file` when nothing has that name
+// (a symbolic link counts), else the first free one of <stem>-2<ext>, <stem>-3<ext>, ... The name
+// is taken with link(2), which fails when it exists, so two writers at once get two files. Returns
+// the file written, or nullopt with `error` set.
+std::optional<std::filesystem::path> write_new_file_atomically(const std::filesystem::path& file,
+                                                               std::string_view contents, std::string& error);
+
+// "" when write_file_atomically(file, ...) would not refuse `file` for what it is (a directory,
+// FIFO, device, socket, a loop of links), else the error it would give: for refusing an output
+// before the work that makes it.
+std::string check_output_file(const std::filesystem::path& file);
+
+// True when `a` and `b` are the same existing file (symbolic and hard links followed); false when
+// either does not exist.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
 // SHA-256 of the bytes, as 64 lowercase hex digits (OpenSSL's; Nettle's where it is built without
 // OpenSSL, as in the browser).
