@@ -67,7 +67,7 @@ void GameSession::apply(const SessionEvent& event) {
           tire::TireSpec spec;
           spec.position = e.position;
           spec.player = false;
-          session_->world().add_tire(spec);
+          session_->world().spawn_tire(spec);  // within the level's budgets
         } else if constexpr (std::is_same_v<T, GrabEvent>) {
           session_->grab(e.point, e.radius);
         } else if constexpr (std::is_same_v<T, MoveGrabEvent>) {

@@ -22,7 +22,7 @@ namespace {
 
 constexpr std::array kObjects{LevelObject::root,       LevelObject::solver,   LevelObject::tire,
                               LevelObject::compliance, LevelObject::obstacle, LevelObject::prop,
-                              LevelObject::path,       LevelObject::region};
+                              LevelObject::path,       LevelObject::region,   LevelObject::budgets};
 
 const char* object_name(LevelObject o) {
   switch (o) {
@@ -34,6 +34,7 @@ const char* object_name(LevelObject o) {
     case LevelObject::prop: return "prop";
     case LevelObject::path: return "path";
     case LevelObject::region: return "region";
+    case LevelObject::budgets: return "budgets";
   }
   return "?";
 }
@@ -88,6 +89,10 @@ Placed place(LevelObject object, std::string_view shape = "box") {
     case LevelObject::region:
       p.doc["regions"] = {{{"name", "r"}, {"min", {0, 0}}, {"max", {1, 1}}}};
       p.pointer = "/regions/0";
+      break;
+    case LevelObject::budgets:
+      p.doc["budgets"] = json::object();
+      p.pointer = "/budgets";
       break;
   }
   return p;
@@ -242,6 +247,7 @@ TEST_CASE("level keys: the table is consistent with itself and the parameter tab
     if (!p.may(by_level)) continue;
     const std::string_view key(p.key);
     const LevelObject object = key.starts_with("solver.")             ? LevelObject::solver
+                               : key.starts_with("budgets.")          ? LevelObject::budgets
                                : key.starts_with("tires.compliance.") ? LevelObject::compliance
                                                                       : LevelObject::tire;
     INFO(p.key);
@@ -374,6 +380,7 @@ TEST_CASE("level keys: the reference pages list each object's keys in the table'
   const std::pair<LevelObject, std::pair<const char*, const char*>> sections[] = {
       {LevelObject::root, {"levels/README.md", "## Root"}},
       {LevelObject::solver, {"levels/README.md", "## `solver`"}},
+      {LevelObject::budgets, {"levels/README.md", "## `budgets`"}},
       {LevelObject::tire, {"levels/README.md", "## Tire"}},
       {LevelObject::compliance, {"levels/README.md", "### `compliance`"}},
       {LevelObject::obstacle, {"levels/README.md", "## Obstacle"}},

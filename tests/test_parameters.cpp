@@ -89,6 +89,9 @@ json level_with(const Parameter& p, const json& value, std::string& path) {
   if (key.starts_with("solver.")) {
     level["solver"][field] = value;
     path = "/solver/" + field;
+  } else if (key.starts_with("budgets.")) {
+    level["budgets"][field] = value;
+    path = "/budgets/" + field;
   } else if (key.starts_with("tires.compliance.")) {
     level["tires"] = json::array({{{"position", {0, 1}}, {"compliance", {{field, value}}}}});
     path = "/tires/0/compliance/" + field;

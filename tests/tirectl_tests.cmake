@@ -221,3 +221,14 @@ foreach(check "onto-level/run --record onto the level being run is refused befor
       -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_outputs.cmake)
   set_tests_properties("tirectl ${what}" PROPERTIES LABELS unit TIMEOUT 120)
 endforeach()
+
+# Run-time budgets (issue 34): a level that spawns a tire every tick for ever is held to its live
+# tires, the budget reported once on stderr and in the output.
+tirectl_test("run holds a spawn flood to budgets.tires and reports it once" 0
+  ARGS run ${BAD}/spawn-flood.json --ticks 600 --set budgets.tires=50
+  STDOUT "\"budgets_reached\": .[ \n]*{[ \n]*\"budget\": \"budgets.tires\",[ \n]*\"limit\": 50,[ \n]*\"first_tick\": 49,[ \n]*\"dropped\": 552"
+  STDERR "^tirectl: warning: budgets.tires \\(50\\) reached at tick 49: what would pass it is dropped\n$")
+add_test(NAME "tire-soak holds a level's spawn flood to the tires it was given"
+  COMMAND tire-soak --level ${BAD}/spawn-flood.json --minutes 0.2 --max-tires 20 --warmup 0)
+set_tests_properties("tire-soak holds a level's spawn flood to the tires it was given" PROPERTIES LABELS unit
+  PASS_REGULAR_EXPRESSION "tire-soak: ok: .*tires at end 21 \\(max 21\\).*ticks past budgets.tires 0")

@@ -132,6 +132,8 @@ std::vector<LevelKey> root_keys() {
           .by_default(level.description),
       gravity_key,
       Key("solver", T::object, "the solver's settings").nested(LevelObject::solver),
+      Key("budgets", T::object, "what the level may add while it runs, lower than the defaults")
+          .nested(LevelObject::budgets),
       Key("tires", T::array, "at most {max}; tires[0] is the player unless one says \"player\": true")
           .range({0, static_cast<double>(LevelLimits::max_tires)})
           .nested(LevelObject::tire),
@@ -350,11 +352,27 @@ std::vector<LevelKey> region_keys() {
   });
 }
 
-const std::array<std::vector<LevelKey>, 8>& all_keys() {
+std::vector<LevelKey> budget_keys() {
+  using P = ParamId;
+  return table({
+      from_row(P::budget_tires,
+               "{range}: tires alive at once, the level's own with those added while it runs"),
+      from_row(P::budget_particles,
+               "{range}: the particles of the tires alive at once (2 x segments a tire)"),
+      from_row(P::budget_props, "{range}: props over the run, the level's own with those its script adds"),
+      from_row(P::budget_spawns_per_tick,
+               "{range}: tires and props added in one tick (script, replay, player)"),
+      from_row(P::budget_messages, "{range}: script messages on screen at once"),
+      from_row(P::budget_message_bytes, "{range}: the text of the messages on screen at once, together"),
+      from_row(P::budget_firings_per_tick, "{range}: trigger firings in one tick"),
+  });
+}
+
+const std::array<std::vector<LevelKey>, static_cast<std::size_t>(LevelObject::budgets) + 1>& all_keys() {
   // Built once, in LevelObject's order.
-  static const std::array<std::vector<LevelKey>, 8> keys{root_keys(),       solver_keys(),   tire_keys(),
-                                                         compliance_keys(), obstacle_keys(), prop_keys(),
-                                                         path_keys(),       region_keys()};
+  static const std::array<std::vector<LevelKey>, static_cast<std::size_t>(LevelObject::budgets) + 1> keys{
+      root_keys(), solver_keys(), tire_keys(),   compliance_keys(), obstacle_keys(),
+      prop_keys(), path_keys(),   region_keys(), budget_keys()};
   return keys;
 }
 

@@ -104,6 +104,7 @@ LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<s
 }
 
 void populate_world(const Level& level, World& world) {
+  world.set_budgets(level.budgets);
   for (const Obstacle& o : level.obstacles) world.add_obstacle(o);
   for (const PropSpec& p : level.props) world.add_prop(p);
   for (const TireSpec& t : level.tires) world.add_tire(t);

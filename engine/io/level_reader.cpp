@@ -49,6 +49,21 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   return s;
 }
 
+RunBudgets read_budgets(JsonReader& r, const json& j, const std::string& path) {
+  using O = LevelObject;
+  RunBudgets b;
+  if (!r.object(j, path, level_key_names(O::budgets))) return b;
+  b.tires = read_integer(r, j, path, level_key(O::budgets, "tires"), b.tires);
+  b.particles = read_integer(r, j, path, level_key(O::budgets, "particles"), b.particles);
+  b.props = read_integer(r, j, path, level_key(O::budgets, "props"), b.props);
+  b.spawns_per_tick = read_integer(r, j, path, level_key(O::budgets, "spawns_per_tick"), b.spawns_per_tick);
+  b.messages = read_integer(r, j, path, level_key(O::budgets, "messages"), b.messages);
+  b.message_bytes = read_integer(r, j, path, level_key(O::budgets, "message_bytes"), b.message_bytes);
+  b.firings_per_tick =
+      read_integer(r, j, path, level_key(O::budgets, "firings_per_tick"), b.firings_per_tick);
+  return b;
+}
+
 TireCompliance read_compliance(JsonReader& r, const json& j, const std::string& path) {
   using O = LevelObject;
   TireCompliance c;
@@ -68,8 +83,9 @@ const LevelKey& level_key(LevelObject object, std::string_view key) {
 }
 
 std::span<const std::string_view> level_key_names(LevelObject object) {
-  static const std::array<std::vector<std::string_view>, 8> names = [] {
-    std::array<std::vector<std::string_view>, 8> out;
+  constexpr std::size_t kObjects = static_cast<std::size_t>(LevelObject::budgets) + 1;
+  static const std::array<std::vector<std::string_view>, kObjects> names = [] {
+    std::array<std::vector<std::string_view>, kObjects> out;
     for (std::size_t o = 0; o < out.size(); ++o)
       for (const LevelKey& k : level_keys(static_cast<LevelObject>(o))) out[o].push_back(k.key);
     return out;
@@ -304,8 +320,8 @@ namespace {
 // Budgets over the whole level, beyond the per-array limits: a file within every one of those can
 // still describe a world too big to build (10 000 tires of 256 segments are 5 million particles,
 // half a kilobyte each). What the script spawns counts too, each spawn action once.
-constexpr std::size_t kMaxParticles = 1'000'000;  // 2 × segments per tire
-constexpr std::size_t kMaxPoints = 200'000;       // chain, polygon and path points over all props
+constexpr auto kMaxParticles = static_cast<std::size_t>(RunBudgets{}.particles);  // 2 × segments per tire
+constexpr std::size_t kMaxPoints = 200'000;  // chain, polygon and path points over all props
 
 struct Totals {
   std::size_t tires = 0, particles = 0, props = 0, points = 0;
@@ -343,6 +359,55 @@ std::size_t spawned_segments(const json& tire) {
   return segments.range.contains(s) ? static_cast<std::size_t>(s) : fallback;
 }
 
+// The level's run budgets (run_budgets.h) against what it holds from the start, and against what one
+// firing of a trigger does: a firing that alone passes a budget of a tick can never do all it says.
+void check_budgets(JsonReader& r, const json& doc, const Level& level) {
+  const RunBudgets& b = level.budgets;
+  const auto named = [&](ParamId id, int limit) {
+    return std::string(parameter(id).key) + " (" + std::to_string(limit) + ")";
+  };
+  std::size_t particles = 0;
+  for (std::size_t i = 0; i < level.tires.size(); ++i) {
+    particles += 2 * static_cast<std::size_t>(level.tires[i].segments);
+    if (i + 1 == static_cast<std::size_t>(b.tires) + 1)
+      r.fail(join_path("/tires", i),
+             "the level's own tires are more than " + named(ParamId::budget_tires, b.tires));
+    if (particles > static_cast<std::size_t>(b.particles)) {
+      r.fail(join_path("/tires", i), "the level's own tires have more particles than " +
+                                         named(ParamId::budget_particles, b.particles));
+      break;
+    }
+  }
+  if (level.props.size() > static_cast<std::size_t>(b.props))
+    r.fail(join_path("/props", static_cast<std::size_t>(b.props)),
+           "the level's own props are more than " + named(ParamId::budget_props, b.props));
+  const auto triggers = doc.find("triggers");
+  if (triggers == doc.end() || !triggers->is_array()) return;
+  for (std::size_t i = 0; i < triggers->size(); ++i) {
+    const json& trigger = (*triggers)[i];
+    if (!trigger.is_object() || !trigger.contains("do") || !trigger["do"].is_array()) continue;
+    std::size_t spawns = 0, messages = 0, message_bytes = 0;
+    for (const json& a : trigger["do"]) {
+      if (!a.is_object() || !a.contains("action") || !a["action"].is_string()) continue;
+      const std::string& action = a["action"].get_ref<const std::string&>();
+      spawns += action == "spawn_tire" || action == "spawn_prop";
+      if (action == "message" && a.contains("text") && a["text"].is_string()) {
+        ++messages;
+        message_bytes += a["text"].get_ref<const std::string&>().size();
+      }
+    }
+    const std::string path = join_path(join_path("/triggers", i), "do");
+    const auto per_firing = [&](std::size_t count, const char* what, ParamId id, int limit) {
+      if (count > static_cast<std::size_t>(limit))
+        r.fail(path, "one firing adds " + std::to_string(count) + " " + what + ", more than " +
+                         named(id, limit) + " allows: the rest would be dropped every time it fires");
+    };
+    per_firing(spawns, "tires and props", ParamId::budget_spawns_per_tick, b.spawns_per_tick);
+    per_firing(messages, "messages", ParamId::budget_messages, b.messages);
+    per_firing(message_bytes, "bytes of message text", ParamId::budget_message_bytes, b.message_bytes);
+  }
+}
+
 void check_totals(JsonReader& r, const json& doc, const Level& level) {
   Totals t;
   for (std::size_t i = 0; i < level.tires.size(); ++i)
@@ -375,6 +440,7 @@ void check_totals(JsonReader& r, const json& doc, const Level& level) {
       }
     }
   }
+  check_budgets(r, doc, level);
   const auto over = [&r](const std::string& path, const std::string& what, std::size_t total,
                          std::size_t limit) {
     r.fail(path, what + " may add up to at most " + std::to_string(limit) + ", got " + std::to_string(total) +
@@ -405,6 +471,7 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
   level.description = read_string(r, doc, "", level_key(LevelObject::root, "description"), level.description);
   level.gravity = read_gravity(r, doc, "", "gravity", level.gravity);
   if (const auto it = doc.find("solver"); it != doc.end()) level.solver = read_solver(r, *it, "/solver");
+  if (const auto it = doc.find("budgets"); it != doc.end()) level.budgets = read_budgets(r, *it, "/budgets");
 
   if (const auto it = doc.find("tires"); it != doc.end() && r.array(*it, "/tires", LevelLimits::max_tires)) {
     std::string first_player;

@@ -64,6 +64,7 @@ ojson property(const Parameter& p) {
 const char* definition_of(const Parameter& p) {
   const std::string_view key(p.key);
   if (key.starts_with("solver.")) return "solver";
+  if (key.starts_with("budgets.")) return "budgets";
   if (key.starts_with("tires.compliance.")) return "compliance";
   if (key.starts_with("tires.")) return "tire";
   return nullptr;

@@ -281,7 +281,7 @@ void apply_input(const ReplayInput& in, LevelSession& session, const Level& leve
   if (in.spawn) {
     TireSpec spec;
     spec.position = *in.spawn;
-    world.add_tire(spec);
+    world.spawn_tire(spec);  // within the level's budgets (run_budgets.h)
   }
   if (in.grab) session.grab(*in.grab, in.grab_radius);
   if (in.drag) session.move_grab(*in.drag);

@@ -156,6 +156,7 @@ void ScriptRunner::sweep_counter_triggers(ScriptHost& host) {
 }
 
 void ScriptRunner::fire(std::size_t i, ScriptHost& host) {
+  if (!host.take_firing()) return;  // past the tick's budget of firings: dropped
   ++triggers_[i].fires;
   for (const Action& action : spec_.triggers[i].actions) run(action, host);
 }

@@ -25,7 +25,11 @@ void LevelSession::set_script(const ScriptSpec& spec) {
 void LevelSession::step(const TickInput& input) {
   world_.step(input);
   const std::uint64_t now = world_.tick();
-  std::erase_if(messages_, [now](const ScriptMessage& m) { return m.until_tick <= now; });
+  std::erase_if(messages_, [&](const ScriptMessage& m) {
+    if (m.until_tick > now) return false;
+    message_bytes_ -= m.text.size();
+    return true;
+  });
   if (script_) {
     SessionScriptHost host(*this);
     script_->update(host);
@@ -33,8 +37,28 @@ void LevelSession::step(const TickInput& input) {
 }
 
 void LevelSession::show_message(std::string_view text, double seconds) {
+  const RunBudgets& budgets = world_.budgets();
+  if (messages_.size() >= static_cast<std::size_t>(budgets.messages)) {
+    world_.budget_reached(ParamId::budget_messages);
+    return;
+  }
+  if (message_bytes_ + text.size() > static_cast<std::size_t>(budgets.message_bytes)) {
+    world_.budget_reached(ParamId::budget_message_bytes);
+    return;
+  }
   const auto ticks = static_cast<std::uint64_t>(std::ceil(seconds / world_.config().dt));
   messages_.push_back({std::string(text), world_.tick() + ticks});
+  message_bytes_ += text.size();
+}
+
+bool LevelSession::take_firing() {
+  if (firing_tick_ != world_.tick()) firing_tick_ = world_.tick(), firings_ = 0;
+  if (firings_ >= world_.budgets().firings_per_tick) {
+    world_.budget_reached(ParamId::budget_firings_per_tick);
+    return false;
+  }
+  ++firings_;
+  return true;
 }
 
 void LevelSession::respawn_player() {

@@ -27,8 +27,9 @@ Vec2 SessionScriptHost::prop_position(std::size_t index) const {
   return world_.rigid().current_pose(static_cast<std::uint32_t>(index)).position;
 }
 
-void SessionScriptHost::spawn_tire(const TireSpec& spec) { world_.add_tire(spec); }
-void SessionScriptHost::spawn_prop(const PropSpec& spec) { world_.add_prop(spec); }
+bool SessionScriptHost::take_firing() { return session_.take_firing(); }
+void SessionScriptHost::spawn_tire(const TireSpec& spec) { world_.spawn_tire(spec); }
+void SessionScriptHost::spawn_prop(const PropSpec& spec) { world_.spawn_prop(spec); }
 void SessionScriptHost::remove_prop(std::string_view name) { world_.rigid().remove_prop(name); }
 void SessionScriptHost::set_gravity(Vec2 gravity) { world_.set_gravity(gravity); }
 

@@ -21,6 +21,7 @@ class SessionScriptHost final : public ScriptHost {
   std::optional<std::size_t> find_prop(std::string_view name) const override;
   Vec2 prop_position(std::size_t index) const override;
 
+  bool take_firing() override;
   void spawn_tire(const TireSpec& spec) override;
   void spawn_prop(const PropSpec& spec) override;
   void remove_prop(std::string_view name) override;

@@ -73,7 +73,14 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::solver_ground_normal_y:
     case ParamId::solver_jump_grace:
     case ParamId::gravity_x:
-    case ParamId::gravity_y: return false;
+    case ParamId::gravity_y:
+    case ParamId::budget_tires:
+    case ParamId::budget_particles:
+    case ParamId::budget_props:
+    case ParamId::budget_spawns_per_tick:
+    case ParamId::budget_messages:
+    case ParamId::budget_message_bytes:
+    case ParamId::budget_firings_per_tick: return false;
   }
   t.set_compliance(c);
   return true;
@@ -141,6 +148,13 @@ std::optional<double> World::parameter(std::string_view key) const {
     case ParamId::solver_jump_grace: return config_.jump_grace;
     case ParamId::gravity_x: return gravity_.x;
     case ParamId::gravity_y: return gravity_.y;
+    case ParamId::budget_tires: return budgets_.tires;
+    case ParamId::budget_particles: return budgets_.particles;
+    case ParamId::budget_props: return budgets_.props;
+    case ParamId::budget_spawns_per_tick: return budgets_.spawns_per_tick;
+    case ParamId::budget_messages: return budgets_.messages;
+    case ParamId::budget_message_bytes: return budgets_.message_bytes;
+    case ParamId::budget_firings_per_tick: return budgets_.firings_per_tick;
     default: break;
   }
   const Tire* t = player();
@@ -187,6 +201,54 @@ TireId World::add_tire(const TireSpec& spec) {
   sleep_.reserve(tires_.capacity(), rigid_.props().size());
   reserve_global_solvers();
   return id;
+}
+
+void World::budget_reached(ParamId budget) {
+  for (BudgetReached& r : budgets_reached_)
+    if (r.budget == budget) {
+      ++r.dropped;
+      return;
+    }
+  budgets_reached_.push_back({budget, tick_, 1});
+  const char* key = tire::parameter(budget).key;
+  warnings_.push_back(std::string(key) + " (" + std::to_string(static_cast<long long>(*parameter(key))) +
+                      ") reached at tick " + std::to_string(tick_) + ": what would pass it is dropped");
+}
+
+// A spawn this tick: false, and the budget reported, when the tick has had its spawns.
+bool World::take_spawn() {
+  if (spawn_tick_ != tick_) spawn_tick_ = tick_, spawns_this_tick_ = 0;
+  if (spawns_this_tick_ >= budgets_.spawns_per_tick) {
+    budget_reached(ParamId::budget_spawns_per_tick);
+    return false;
+  }
+  ++spawns_this_tick_;
+  return true;
+}
+
+std::optional<TireId> World::spawn_tire(const TireSpec& spec) {
+  std::size_t particles = 0;
+  for (const Tire& t : tires_) particles += t.particles.size();
+  if (tires_.size() >= static_cast<std::size_t>(budgets_.tires)) {
+    budget_reached(ParamId::budget_tires);
+    return std::nullopt;
+  }
+  if (particles + 2 * static_cast<std::size_t>(spec.segments) >
+      static_cast<std::size_t>(budgets_.particles)) {
+    budget_reached(ParamId::budget_particles);
+    return std::nullopt;
+  }
+  if (!take_spawn()) return std::nullopt;
+  return add_tire(spec);
+}
+
+std::optional<std::uint32_t> World::spawn_prop(const PropSpec& spec) {
+  if (rigid_.props().size() >= static_cast<std::size_t>(budgets_.props)) {
+    budget_reached(ParamId::budget_props);
+    return std::nullopt;
+  }
+  if (!take_spawn()) return std::nullopt;
+  return add_prop(spec);
 }
 
 std::uint32_t World::add_prop(const PropSpec& spec) {

@@ -76,6 +76,13 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
     const tire::Pose pose = rigid.current_pose(i);
     props.push_back({{"name", p.spec.name}, {"position", vec(pose.position)}, {"angle", pose.angle}});
   }
+  // Each run budget reached (run_budgets.h): when first, and how much it dropped.
+  nlohmann::ordered_json budgets = nlohmann::ordered_json::array();
+  for (const tire::World::BudgetReached& b : world.budgets_reached())
+    budgets.push_back({{"budget", tire::parameter(b.budget).key},
+                       {"limit", static_cast<long long>(*world.parameter(tire::parameter(b.budget).key))},
+                       {"first_tick", b.first_tick},
+                       {"dropped", b.dropped}});
   const nlohmann::ordered_json substeps = {
       {"level", world.config().substeps}, {"most", tally.most}, {"refined_ticks", tally.refined_ticks}};
   return {{"ticks", world.tick()},
@@ -85,6 +92,7 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
           {"props", props},
           {"substeps", substeps},
           {"energy", energy.to_json()},
+          {"budgets_reached", budgets},
           {"hash", tire::to_hex(session.state_hash())}};
 }
 

@@ -27,6 +27,7 @@ struct Level {
   std::string description;
   Vec2 gravity = kDefaultGravity;
   SolverConfig solver;
+  RunBudgets budgets;  // what the level may add while it runs (run_budgets.h)
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
   std::vector<PropSpec> props;

@@ -23,7 +23,7 @@ namespace tire {
 
 // The kinds of object a level file holds, each a section of levels/README.md (regions:
 // levels/SCRIPTING.md).
-enum class LevelObject { root, solver, tire, compliance, obstacle, prop, path, region };
+enum class LevelObject { root, solver, tire, compliance, obstacle, prop, path, region, budgets };
 
 enum class KeyType {
   number,   // a finite number in `range`

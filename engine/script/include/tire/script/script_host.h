@@ -36,6 +36,10 @@ class ScriptHost {
   virtual std::optional<std::size_t> find_prop(std::string_view name) const = 0;
   virtual Vec2 prop_position(std::size_t index) const = 0;  // body origin (m)
 
+  // ---- Budgets (run_budgets.h): asked before each firing of a trigger; false drops the firing.
+  // The level session counts them against its tick's budget; a host with none allows every one.
+  virtual bool take_firing() { return true; }
+
   // ---- Actions. Names were checked at load against the level's props and the spawned ones; a
   // name whose prop is not in the world at that moment is the host's to ignore.
   virtual void spawn_tire(const TireSpec& spec) = 0;

@@ -46,7 +46,12 @@ class LevelSession {
   void step(const TickInput& input);
 
   // What the script (and the game) can do between ticks, beyond the world's own API.
+  // A message past the budgets of messages on screen or of their text is dropped (reported as the
+  // world reports its budgets, World::budgets_reached).
   void show_message(std::string_view text, double seconds);
+  // One trigger firing this tick: false, the budget reported, once the tick has had
+  // budgets.firings_per_tick.
+  bool take_firing();
   const std::vector<ScriptMessage>& messages() const { return messages_; }
   void set_checkpoint(Vec2 position) { checkpoint_ = position; }
   std::optional<Vec2> checkpoint() const { return checkpoint_; }
@@ -71,6 +76,9 @@ class LevelSession {
   std::optional<Vec2> checkpoint_;
   bool next_level_requested_ = false;
   std::optional<TireId> grabbed_;
+  std::size_t message_bytes_ = 0;  // of messages_' texts together
+  std::uint64_t firing_tick_ = 0;  // the tick firings_ counts
+  int firings_ = 0;
 };
 
 }  // namespace tire

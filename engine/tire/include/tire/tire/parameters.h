@@ -17,6 +17,7 @@
 
 #include "tire/math/range.h"
 #include "tire/math/vec2.h"
+#include "tire/tire/run_budgets.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
 
@@ -65,6 +66,13 @@ enum class ParamId : std::uint8_t {
   tire_drive_acceleration,
   tire_jump_speed,
   tire_max_speed,
+  budget_tires,
+  budget_particles,
+  budget_props,
+  budget_spawns_per_tick,
+  budget_messages,
+  budget_message_bytes,
+  budget_firings_per_tick,
 };
 
 struct Parameter {
@@ -87,6 +95,7 @@ struct Parameter {
   constexpr bool may(Setter s) const { return (setters & s) != 0; }
   constexpr bool runtime() const { return (setters & kRuntimeSetters) != 0; }
   constexpr bool is_tire() const { return std::string_view(key).starts_with("tires."); }
+  constexpr bool is_budget() const { return std::string_view(key).starts_with("budgets."); }
   // The key within its level object: "substeps", "outer" (of tires.compliance.outer), "x". The
   // tail of `key`, so it ends where `key` does.
   constexpr const char* field() const { return key + std::string_view(key).rfind('.') + 1; }
@@ -99,6 +108,7 @@ struct Parameter {
 namespace parameter_table {
 inline constexpr TireSpec kTire{};
 inline constexpr SolverConfig kSolver{};
+inline constexpr RunBudgets kBudgets{};
 inline constexpr Range kFriction{0.0, 10.0};
 inline constexpr Range kCompliance{0.0, 1.0};
 inline constexpr Range kGravity{-1000.0, 1000.0};
@@ -115,7 +125,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 28>{{
+  return std::array<Parameter, 35>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -181,6 +191,22 @@ inline constexpr std::array kParameters = [] {
        "Upward speed a jump adds when grounded (m/s), in {range}."},
       {P::tire_max_speed, "tires.max_speed", "m/s", {0, 1000, true}, false, kTire.max_speed, kNotPanel,
        "Cap on the hub's horizontal speed and on the steered tread speed (m/s), in {range}."},
+      // Run-time budgets (run_budgets.h): the default is the most; a level may only lower one.
+      {P::budget_tires, "budgets.tires", "", {1, kBudgets.tires}, true, kBudgets.tires, kLevelOnly,
+       "Tires alive at once, the level's own with those added while it runs, in {range}."},
+      {P::budget_particles, "budgets.particles", "", {12, kBudgets.particles}, true, kBudgets.particles, kLevelOnly,
+       "Particles of the tires alive at once (2 x segments a tire), in {range}."},
+      {P::budget_props, "budgets.props", "", {1, kBudgets.props}, true, kBudgets.props, kLevelOnly,
+       "Props over the run, the level's own with those its script adds, in {range}."},
+      {P::budget_spawns_per_tick, "budgets.spawns_per_tick", "", {0, kBudgets.spawns_per_tick}, true,
+       kBudgets.spawns_per_tick, kLevelOnly,
+       "Tires and props added in one tick, by the script, a replay or the player, in {range}."},
+      {P::budget_messages, "budgets.messages", "", {0, kBudgets.messages}, true, kBudgets.messages, kLevelOnly,
+       "Script messages on screen at once, in {range}."},
+      {P::budget_message_bytes, "budgets.message_bytes", "bytes", {0, kBudgets.message_bytes}, true,
+       kBudgets.message_bytes, kLevelOnly, "Text of the messages on screen at once, together (bytes), in {range}."},
+      {P::budget_firings_per_tick, "budgets.firings_per_tick", "", {1, kBudgets.firings_per_tick}, true,
+       kBudgets.firings_per_tick, kLevelOnly, "Trigger firings in one tick, in {range}."},
   }};
   // clang-format on
 }();

@@ -14,6 +14,8 @@
 #include "tire/math/worker_pool.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
+#include "tire/tire/parameters.h"
+#include "tire/tire/run_budgets.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
@@ -56,6 +58,24 @@ class World {
   bool remove_tire(TireId id);
   void add_obstacle(const Obstacle& obstacle) { rigid_.add_obstacle(obstacle); }
   std::uint32_t add_prop(const PropSpec& spec);
+
+  // The run's budgets (run_budgets.h): what spawn_tire, spawn_prop and the level session may add.
+  void set_budgets(const RunBudgets& budgets) { budgets_ = budgets; }
+  const RunBudgets& budgets() const { return budgets_; }
+  // add_tire and add_prop for what arrives while the world runs (a script, a replay, the player):
+  // nothing, and the budget reported (budget_reached), when it would pass the live tires, their
+  // particles, the props or the spawns of this tick.
+  std::optional<TireId> spawn_tire(const TireSpec& spec);
+  std::optional<std::uint32_t> spawn_prop(const PropSpec& spec);
+  // Counts one thing a budget (a "budgets.*" row) dropped at this tick; the first is reported.
+  void budget_reached(ParamId budget);
+  // Each budget reached so far, in the order first reached: when, and how much it dropped since.
+  struct BudgetReached {
+    ParamId budget;
+    std::uint64_t first_tick;
+    std::uint64_t dropped;
+  };
+  const std::vector<BudgetReached>& budgets_reached() const { return budgets_reached_; }
 
   // What scripts (and the game's tuning panel) can do between ticks.
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
@@ -195,6 +215,11 @@ class World {
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;
   std::vector<std::string> warnings_;
+  RunBudgets budgets_;
+  std::vector<BudgetReached> budgets_reached_;
+  bool take_spawn();
+  std::uint64_t spawn_tick_ = 0;  // the tick spawns_this_tick_ counts
+  int spawns_this_tick_ = 0;
 };
 
 }  // namespace tire
