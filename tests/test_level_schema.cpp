@@ -414,6 +414,8 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"tunnel_clamp", s.tunnel_clamp},
         {"ground_normal_y", s.ground_normal_y},
         {"jump_grace", s.jump_grace},
+        {"divergence_area", s.divergence_area},
+        {"divergence_speed", s.divergence_speed},
         {"method", method_name(s.method)},
         {"sleep", s.sleep}}},
       {"tire",

@@ -81,6 +81,30 @@ TEST_CASE("a NaN never spreads: the tire is reset and a warning raised", "[unit]
   CHECK(world.find_tire(1)->centroid().y < 1.99);                       // the other tire carried on falling
 }
 
+TEST_CASE("a tire blown up by a kinematic box spinning at 1000 rad/s is seen, reported and reset",
+          "[unit][shape]") {
+  // The hostile audit's case (issue 34): the tire reached 1180 times its area while every
+  // coordinate stayed finite and near, and nothing was reported.
+  World world = flat_world(tire_at({0, 2.6}));
+  PropSpec box;
+  box.type = PropType::kinematic_body;
+  box.size = {4, 0.25};
+  box.position = {0, 1.5};
+  box.angular_velocity = 1000;
+  world.add_prop(box);
+  double largest = 0.0;
+  int diverged = 0;
+  for (int i = 0; i < 120; ++i) {
+    world.step({});
+    for (const Tire& t : world.tires()) largest = std::max(largest, std::abs(t.area_ratio()));
+    for (const std::string& w : world.warnings()) diverged += w.find("diverged") != std::string::npos;
+    world.warnings().clear();
+  }
+  INFO("largest area ratio after a tick " << largest << ", " << diverged << " resets");
+  CHECK(diverged > 0);
+  CHECK(largest <= world.config().divergence_area);
+}
+
 TEST_CASE("tires of one shape share one topology and keep their own compliance", "[unit][shape]") {
   // Issue 12: the topology (pairs, compliance groups, SIMD batch cut) is shared by the tires of a
   // shape; what is tuned per tire (compliance) stays per tire.

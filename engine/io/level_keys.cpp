@@ -175,6 +175,12 @@ std::vector<LevelKey> solver_keys() {
       from_row(
           P::solver_jump_grace,
           "{range}: a jump is honoured when the tread touched ground at most this long ago (coyote time)"),
+      from_row(
+          P::solver_divergence_area,
+          "{range}: a tire whose area passes this many times its rest area (or minus it) has diverged and "
+          "is reset"),
+      from_row(P::solver_divergence_speed,
+               "{range}: a tire with a particle faster than this has diverged and is reset"),
       Key("method", T::choice,
           "\"gauss-seidel\": each constraint on its own; \"global\": each tire solved as one system")
           .choices(methods)

@@ -46,6 +46,8 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   s.tunnel_clamp = read_number(r, j, path, level_key(O::solver, "tunnel_clamp"), s.tunnel_clamp);
   s.ground_normal_y = read_number(r, j, path, level_key(O::solver, "ground_normal_y"), s.ground_normal_y);
   s.jump_grace = read_number(r, j, path, level_key(O::solver, "jump_grace"), s.jump_grace);
+  s.divergence_area = read_number(r, j, path, level_key(O::solver, "divergence_area"), s.divergence_area);
+  s.divergence_speed = read_number(r, j, path, level_key(O::solver, "divergence_speed"), s.divergence_speed);
   return s;
 }
 

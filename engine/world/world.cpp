@@ -72,6 +72,8 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::solver_tunnel_clamp:
     case ParamId::solver_ground_normal_y:
     case ParamId::solver_jump_grace:
+    case ParamId::solver_divergence_area:
+    case ParamId::solver_divergence_speed:
     case ParamId::gravity_x:
     case ParamId::gravity_y:
     case ParamId::budget_tires:
@@ -146,6 +148,8 @@ std::optional<double> World::parameter(std::string_view key) const {
     case ParamId::solver_tunnel_clamp: return config_.tunnel_clamp;
     case ParamId::solver_ground_normal_y: return config_.ground_normal_y;
     case ParamId::solver_jump_grace: return config_.jump_grace;
+    case ParamId::solver_divergence_area: return config_.divergence_area;
+    case ParamId::solver_divergence_speed: return config_.divergence_speed;
     case ParamId::gravity_x: return gravity_.x;
     case ParamId::gravity_y: return gravity_.y;
     case ParamId::budget_tires: return budgets_.tires;
@@ -625,10 +629,19 @@ bool World::colors_share_no_tire() {
 }
 
 void World::guard_divergence(Tire& t) {
-  if (t.is_finite() && t.max_abs_coordinate() <= config_.divergence_limit) return;
-  warnings_.push_back("tick " + std::to_string(tick_) + ": tire " + std::to_string(t.id) +
-                      " diverged (NaN, Inf or beyond " + std::to_string(config_.divergence_limit) +
-                      " m); reset to its spawn state");
+  std::string what;
+  if (!t.is_finite() || t.max_abs_coordinate() > config_.divergence_limit) {
+    what = "NaN, Inf or beyond " + std::to_string(config_.divergence_limit) + " m";
+  } else if (const double ratio = t.area_ratio(); std::abs(ratio) > config_.divergence_area) {
+    what = "its area " + std::to_string(ratio) + " times its rest area, past solver.divergence_area";
+  } else {
+    double fastest2 = 0.0;
+    for (const Vec2& v : t.particles.v) fastest2 = std::max(fastest2, length_squared(v));
+    if (!(fastest2 > config_.divergence_speed * config_.divergence_speed)) return;
+    what = "a particle at " + std::to_string(std::sqrt(fastest2)) + " m/s, past solver.divergence_speed";
+  }
+  warnings_.push_back("tick " + std::to_string(tick_) + ": tire " + std::to_string(t.id) + " diverged (" +
+                      what + "); reset to its spawn state");
   t.reset();
 }
 

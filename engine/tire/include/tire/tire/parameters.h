@@ -45,6 +45,8 @@ enum class ParamId : std::uint8_t {
   solver_tunnel_clamp,
   solver_ground_normal_y,
   solver_jump_grace,
+  solver_divergence_area,
+  solver_divergence_speed,
   gravity_x,
   gravity_y,
   tire_angle,
@@ -125,7 +127,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 35>{{
+  return std::array<Parameter, 37>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -140,6 +142,11 @@ inline constexpr std::array kParameters = [] {
        "A contact is ground (for jumping) when its normal's y is at least this, in {range}; 0.5 accepts up to 60°."},
       {P::solver_jump_grace, "solver.jump_grace", "s", {0, 1}, false, kSolver.jump_grace, kLevelOnly,
        "A jump is honoured when the tread touched ground at most this long ago (s), in {range}."},
+      {P::solver_divergence_area, "solver.divergence_area", "(times the rest area)", {2, 1000}, false,
+       kSolver.divergence_area, kLevelOnly,
+       "A tire whose area passes this many times its rest area (or minus it) has diverged and is reset, in {range}."},
+      {P::solver_divergence_speed, "solver.divergence_speed", "m/s", {10, 1e6}, false, kSolver.divergence_speed,
+       kLevelOnly, "A tire with a particle faster than this (m/s) has diverged and is reset, in {range}."},
       // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
       // each component in this range too.
       {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,

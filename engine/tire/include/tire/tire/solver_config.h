@@ -39,8 +39,13 @@ struct SolverConfig {
   // ticks had no ground contact (Gauss–Seidel 8 × 1, soft from its substeps: none), and a jump
   // asked for in those ticks was lost. 0.1 s is six ticks.
   double jump_grace = 0.1;
-  // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state.
+  // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state, and so is
+  // one blown up or turned inside out (its area more than divergence_area times its rest area, or
+  // below minus it) or one with a particle faster than divergence_speed (m/s): no contact or
+  // setting a level can give does that to a tire that is being solved.
   double divergence_limit = 1.0e5;
+  double divergence_area = 50.0;
+  double divergence_speed = 5000.0;
 
   // Sleeping (world/sleep_islands.h): bodies that touch form islands; an island whose bodies have all been
   // still for sleep_time stops being simulated until something wakes it. The level's
