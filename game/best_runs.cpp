@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "tire/io/file_io.h"
+
 namespace game {
 
 std::vector<std::string> BestRuns::open(std::optional<std::filesystem::path> dir,
@@ -9,8 +11,13 @@ std::vector<std::string> BestRuns::open(std::optional<std::filesystem::path> dir
   levels_dir_ = std::move(levels_dir);
   enabled_ = dir.has_value();
   if (!enabled_) return {};
+  // A data folder that cannot be one (XDG_DATA_HOME naming a file) is said now; each finished level
+  // says again that it was not saved.
   std::vector<std::string> warnings = progress_.load(*dir);
   if (!warnings.empty()) ++writes_;  // a damaged file was set aside (renamed)
+  if (const std::string why = unusable_data_dir(*dir); !why.empty())
+    warnings.push_back("progress and best runs cannot be kept in " + tire::printable(dir->string()) + ": " +
+                       why + "; nothing will be saved");
   return warnings;
 }
 
@@ -44,17 +51,30 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
     return r;
   }
   const std::string key = key_;
-  r.new_best = progress_.record(key, won, time, ticks);
+  const LevelRecord* known = progress_.find(key);
+  const std::optional<LevelRecord> before = known ? std::optional<LevelRecord>(*known) : std::nullopt;
+  const bool faster = progress_.record(key, won, time, ticks);
   ++writes_;
-  if (const std::string err = progress_.save(); !err.empty())
-    messages.push_back("cannot save the progress to " + progress_.file().string() + ": " + err);
+  if (const std::string err = progress_.save(); !err.empty()) {
+    // Not saved: the record goes back to what the file holds, and no new best is claimed.
+    progress_.restore(key, before);
+    messages.push_back("cannot save the progress to " + tire::printable(progress_.file().string()) + ": " +
+                       err + (faster ? "; this best time is not kept" : ""));
+    if (won)
+      r.note = faster ? "best time not saved: the progress file cannot be written"
+                      : format_record(progress_.find(key));
+    last_ = r;
+    return r;
+  }
+  r.saved = true;
+  r.new_best = faster;
   if (won) {
     r.note = r.new_best ? "New best time!" : format_record(progress_.find(key));
     // The run is the ghost when it is the best, or when there is no (valid) ghost of this level.
     if (r.new_best || !ghost_.loaded()) {
       const std::filesystem::path file = progress_.ghost_file(key);
       if (const std::string err = recorder.save(session, file, true); !err.empty())
-        messages.push_back("cannot save the ghost " + file.string() + ": " + err);
+        messages.push_back("cannot save the ghost " + tire::printable(file.string()) + ": " + err);
       else
         sha_.clear();  // the next start of this level loads the new ghost
     }
@@ -78,7 +98,9 @@ nlohmann::json BestRuns::summary(const std::string& level_path) const {
   out["won"] = r && r->won;
   out["best_time"] = r && r->won ? nlohmann::json(r->best_time) : nlohmann::json(nullptr);
   out["menu"] = note(level_path);
-  if (last_) out["run"] = {{"won", last_->won}, {"time", last_->time}, {"new_best", last_->new_best}};
+  if (last_)
+    out["run"] = {
+        {"won", last_->won}, {"time", last_->time}, {"new_best", last_->new_best}, {"saved", last_->saved}};
   nlohmann::json g{{"loaded", ghost_.loaded()}, {"visible", ghost_.visible}};
   if (ghost_.loaded()) {
     g["file"] = ghost_.file().string();

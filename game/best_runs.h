@@ -22,8 +22,9 @@ struct RunResult {
   bool won = false;
   double time = 0.0;
   std::uint64_t ticks = 0;
-  bool new_best = false;
-  std::string note;  // "New best time!" or "best 9.85 s"
+  bool new_best = false;  // a win faster than the best so far, and saved as the new best
+  bool saved = false;     // the progress file was written with this run
+  std::string note;       // "New best time!" or "best 9.85 s"
 };
 
 class BestRuns {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <span>
 
+#include "tire/io/file_io.h"
+
 namespace game {
 
 std::string Ghost::load(const std::filesystem::path& file, std::shared_ptr<const tire::Level> level,
@@ -12,12 +14,12 @@ std::string Ghost::load(const std::filesystem::path& file, std::shared_ptr<const
   if (!std::filesystem::exists(file, ec)) return "";
   tire::ReplayLoad load = tire::load_replay_file(file);
   if (!load.replay) {
-    std::string why = "cannot read the ghost " + file.string();
+    std::string why = "cannot read the ghost " + tire::printable(file.string());
     if (!load.errors.empty()) why += ": " + load.errors.front();
     return why;
   }
   if (load.replay->level_sha256 != level_sha256)
-    return "ghost dropped: the level changed since " + file.string() + " was recorded";
+    return "ghost dropped: the level changed since " + tire::printable(file.string()) + " was recorded";
   replay_ = std::move(*load.replay);
   level_ = std::move(level);
   file_ = file;

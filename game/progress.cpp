@@ -24,6 +24,22 @@ std::optional<std::filesystem::path> data_dir_from_env() {
   return std::nullopt;
 }
 
+std::string unusable_data_dir(const std::filesystem::path& dir) {
+  // The nearest part of the path that exists must be a folder (the rest is made when saving).
+  for (std::filesystem::path p = dir; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    const std::filesystem::file_status st = std::filesystem::status(p, ec);
+    if (st.type() == std::filesystem::file_type::not_found) {
+      if (p == p.parent_path()) break;
+      continue;
+    }
+    if (ec) return "cannot look at " + tire::printable(p.string()) + ": " + ec.message();
+    if (!std::filesystem::is_directory(st)) return tire::printable(p.string()) + " is not a folder";
+    return "";
+  }
+  return "";
+}
+
 std::string level_key(const std::filesystem::path& levels_dir, const std::filesystem::path& level_file) {
   std::error_code ec;
   const std::filesystem::path file = std::filesystem::weakly_canonical(level_file, ec);
@@ -114,10 +130,10 @@ std::vector<std::string> Progress::load(const std::filesystem::path& dir) {
   std::filesystem::path aside = f;
   aside += kDamagedSuffix;
   std::filesystem::rename(f, aside, ec);
-  warnings.push_back(
-      "progress file " + f.string() + " is damaged: " + error + "; " +
-      (ec ? "could not set it aside (" + ec.message() + ")" : "set aside as " + aside.string()) +
-      "; starting with no progress");
+  warnings.push_back("progress file " + tire::printable(f.string()) + " is damaged: " + error + "; " +
+                     (ec ? "could not set it aside (" + ec.message() + ")"
+                         : "set aside as " + tire::printable(aside.string())) +
+                     "; starting with no progress");
   return warnings;
 }
 
@@ -151,11 +167,18 @@ bool Progress::record(const std::string& key, bool won, double time, std::uint64
   return best;
 }
 
+void Progress::restore(const std::string& key, const std::optional<LevelRecord>& before) {
+  if (before)
+    levels_[key] = *before;
+  else
+    levels_.erase(key);
+}
+
 std::string Progress::save() const {
   if (dir_.empty()) return "no data folder";
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
-  if (ec) return "cannot make " + dir_.string() + ": " + ec.message();
+  if (ec) return "cannot make " + tire::printable(dir_.string()) + ": " + ec.message();
   std::string error;
   if (!tire::write_file_atomically(file(), to_json(), error)) return error;
   return "";

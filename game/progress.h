@@ -36,6 +36,10 @@ struct LevelRecord {
 // $HOME/.local/share/soft-tire; nullopt when neither is set.
 std::optional<std::filesystem::path> data_dir_from_env();
 
+// "" when `dir` can be the data folder, else why not: a part of it that exists and is not a folder
+// ("XDG_DATA_HOME=/some/file"), named, so that nothing is promised that cannot be saved there.
+std::string unusable_data_dir(const std::filesystem::path& dir);
+
 // The key of `level_file` in the progress file: its path relative to `levels_dir`, or its absolute
 // path when it is not inside it.
 std::string level_key(const std::filesystem::path& levels_dir, const std::filesystem::path& level_file);
@@ -56,6 +60,9 @@ class Progress {
   // A finished run of level `key`; true when it is a win faster than the best so far (or the
   // first win).
   bool record(const std::string& key, bool won, double time, std::uint64_t ticks);
+  // Puts level `key`'s record back as it was before record() (nullopt: none): after a save that
+  // failed, what the game shows stays what the file holds.
+  void restore(const std::string& key, const std::optional<LevelRecord>& before);
   // Writes the file atomically; "" or why not.
   std::string save() const;
 

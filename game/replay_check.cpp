@@ -21,19 +21,15 @@ ReplayCheck check_replay_file(const std::filesystem::path& file) {
   const tire::ReplayLoad load = tire::load_replay_file(file);
   if (!load.replay) return unreadable(load.errors);
   const tire::Replay& replay = *load.replay;
-  const std::filesystem::path level_path = file.parent_path() / replay.level;
-  std::string error;
-  const auto level_text = tire::read_file(level_path, tire::LevelLimits::max_file_bytes, error);
-  if (!level_text)
-    return unreadable({file.string() + ": /level: cannot read " + level_path.string() + ": " + error});
-  const tire::LevelLoad level = tire::load_level_text(*level_text, level_path.string());
+  // Read as a level before its digest is looked at (tirectl replay does the same).
+  const tire::ReplayLevel level = tire::load_replay_level(file, replay);
   if (!level.level) return unreadable(level.errors);
   out["ticks"] = replay.ticks;
   // As `tirectl replay` without --allow-level-change: a replay of another version of its level fails.
-  if (const std::string sha = tire::sha256_hex(*level_text); sha != replay.level_sha256) {
+  if (level.sha256 != replay.level_sha256) {
     out["pass"] = false;
-    out["failures"] = {level_path.string() + " has changed since this replay was recorded (SHA-256 " + sha +
-                       ", recorded on " + replay.level_sha256 + ")"};
+    out["failures"] = {level.path.string() + " has changed since this replay was recorded (SHA-256 " +
+                       level.sha256 + ", recorded on " + replay.level_sha256 + ")"};
     return ReplayCheck{1, out.dump()};
   }
   const auto started = std::chrono::steady_clock::now();

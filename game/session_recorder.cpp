@@ -154,8 +154,11 @@ std::optional<std::string> SessionRecorder::replay_json(const tire::LevelSession
   if (last_run_only) replay = last_attempt(replay);
   std::error_code ec;
   std::filesystem::create_directories(target.parent_path(), ec);
+  // Relative to the replay's folder, as a replay must name its level (tire/replay/replay.h); both
+  // are absolute, so the lexical form always exists when the resolved one cannot be had.
   replay.level = std::filesystem::relative(level_file_, target.parent_path(), ec).generic_string();
-  if (ec || replay.level.empty()) replay.level = level_file_.generic_string();
+  if (ec || replay.level.empty())
+    replay.level = level_file_.lexically_relative(target.parent_path()).generic_string();
   return tire::replay_to_json(replay);
 }
 

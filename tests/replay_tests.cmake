@@ -28,5 +28,17 @@ tirectl_test("replay refuses a level whose content changed" 1 ARGS replay ${BAD_
   STDERR "has changed since this replay was recorded.*--allow-level-change")
 tirectl_test("replay runs a changed level when allowed" 0 ARGS replay --allow-level-change ${BAD_REPLAYS}/level-changed.json
   STDOUT "level-changed.json: ok")
+# Inputs sharing a tick all act in file order: a second steer on one would silently replace the first.
+tirectl_test("replay refuses two steers on one tick" 2 ARGS replay ${BAD_REPLAYS}/same-tick-steer.json
+  STDERR "same-tick-steer.json: /inputs/2/steer: a second steer on tick 50 \\(the first is /inputs/1/steer\\): only the last would act; give one steer per tick")
+# A replay's level is read as a level before anything is said of it: a file that is not one gets the
+# loader's error and neither its digest nor its bytes.
+tirectl_test("replay refuses a level that is not a level, printing no digest" 2
+  ARGS replay ${BAD_REPLAYS}/level-not-a-level.json
+  STDERR "level-not-a-level.json: /level: [^\n]*README.md is not a valid level: invalid JSON: parse error at line 1"
+  REFUSE_STDERR "SHA-256|[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f]|last read|Soft tire")
+tirectl_test("replay refuses an absolute level path" 2 ARGS replay ${BAD_REPLAYS}/level-absolute.json
+  STDERR "level-absolute.json: /level: must be the level file's path relative to the replay file's folder"
+  REFUSE_STDERR "root:")
 tirectl_test("replay names the first divergent tick" 1 ARGS replay ${BAD_REPLAYS}/diverged.json
   STDOUT "FAILED, first divergent tick 30.*state diverged at tick 30")

@@ -251,3 +251,24 @@ TEST_CASE("same_file follows symbolic and hard links", "[unit][files]") {
   CHECK_FALSE(tire::same_file(dir / "a", dir / "missing"));
   CHECK_FALSE(tire::same_file(dir / "missing", dir / "missing"));
 }
+
+TEST_CASE("printable escapes what could end a message's line, and keeps the rest", "[unit][files]") {
+  using tire::printable;
+  CHECK(printable("levels/01-first-roll.json") == "levels/01-first-roll.json");
+  CHECK(printable("x\nlevels/01.json: ok") == "x\\nlevels/01.json: ok");
+  CHECK(printable("a\rb\tc") == "a\\rb\\tc");
+  CHECK(printable(std::string("a\0b", 3)) == "a\\x00b");
+  CHECK(printable("\x1b[2Jclear\x7f") == "\\x1b[2Jclear\\x7f");
+  CHECK(printable("back\\slash") == "back\\\\slash");
+  CHECK(printable("next\xc2\x85line") == "next\\u0085line");  // NEL, a line end to some readers
+  CHECK(printable("caf\xc3\xa9 \xe2\x80\x94 ok") == "caf\xc3\xa9 \xe2\x80\x94 ok");  // UTF-8 kept
+  CHECK(printable("") == "");
+}
+
+TEST_CASE("a failed write names its file with control characters escaped", "[unit][files]") {
+  const Folder dir("printable");
+  std::string error;
+  CHECK_FALSE(write_file_atomically(dir / "missing\nfolder" / "out.json", "x", error));
+  CHECK(error.find("missing\\nfolder") != std::string::npos);
+  CHECK(error.find('\n') == std::string::npos);
+}

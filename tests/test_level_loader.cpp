@@ -122,6 +122,37 @@ TEST_CASE("set overrides numeric keys by dotted path, and validation judges the 
   CHECK(has(errors_of(text, {"nonsense"}), "expected key=value"));
 }
 
+TEST_CASE("a --set key with an empty part is refused, naming the key", "[unit][level]") {
+  const std::string text = R"({"name": "n", "tires": [{"position": [0, 1]}]})";
+  // "solver.dt." was once read as solver.dt: a leading, trailing or doubled dot is a mistake.
+  for (const std::string key : {"solver.dt.", ".solver.dt", "solver..dt", "tires.0.mass.", "."}) {
+    const auto errors = errors_of(text, {key + "=0.01"});
+    INFO(key << "\n" << joined(errors));
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0] == "x.json: --set " + key + "=0.01: the key \"" + key +
+                           "\" has an empty part (a leading, trailing or doubled dot); expected names and "
+                           "indices joined by single dots, e.g. tires.0.mass");
+  }
+  CHECK(errors_of(text, {"solver.dt=0.01"}).empty());
+}
+
+TEST_CASE("a file name or --set with a newline cannot forge a line of the messages", "[unit][level]") {
+  const auto bad = load_level_text(R"({"name": 3})", "x\nlevels/01.json: ok").errors;
+  REQUIRE_FALSE(bad.empty());
+  for (const std::string& e : bad) {
+    CHECK(e.rfind("x\\nlevels/01.json: ok: /", 0) == 0);
+    CHECK(e.find('\n') == std::string::npos);
+  }
+  const auto set = errors_of(R"({"name": "n", "tires": [{"position": [0, 1]}]})", {"solver\n.dt=x"});
+  REQUIRE(set.size() == 1);
+  CHECK(set[0].find('\n') == std::string::npos);
+  CHECK(has(set, "--set solver\\n.dt=x: value must be a number"));
+  // A key of the file's own, unknown, with a newline in it.
+  const auto key = errors_of(R"({"name": "n", "ok\nx.json: ok": 1, "tires": [{"position": [0, 1]}]})");
+  CHECK(has(key, "x.json: /ok\\nx.json: ok: unknown key"));
+  for (const std::string& e : key) CHECK(e.find('\n') == std::string::npos);
+}
+
 TEST_CASE("solver.sleep is read as a boolean, true unless the level says false", "[unit][level]") {
   const auto solver_of = [](const std::string& solver) {
     const std::string text = R"({"name": "n", )" + solver + R"("tires": [{"position": [0, 1]}]})";

@@ -110,3 +110,100 @@ TEST_CASE("a file written atomically survives the writer being killed mid-write"
   }
   std::filesystem::remove_all(dir);
 }
+
+namespace {
+const std::string kHead = R"({"format": "tire-replay/1", "level": "l.json", "level_sha256": ")" +
+                          std::string(64, 'a') + R"(", "ticks": 100, "inputs": )";
+std::vector<std::string> replay_errors(const std::string& inputs) {
+  return load_replay_text(kHead + inputs + "}", "r.json").errors;
+}
+}  // namespace
+
+TEST_CASE("inputs sharing a tick all act, so a tick holds one steer and one jump", "[unit][replay]") {
+  // Different inputs on one tick, each acting in file order, as the game records them (the
+  // friction slider sets two keys at once; a restart, then the steer held through it).
+  CHECK(replay_errors(R"([{"tick": 5, "restart": true}, {"tick": 5, "steer": 1}, {"tick": 5, "jump": true},
+      {"tick": 5, "set": {"key": "tires.friction", "value": 0.5}},
+      {"tick": 5, "set": {"key": "tires.kinetic_friction", "value": 0.5}}, {"tick": 5, "spawn": [0, 3]},
+      {"tick": 5, "spawn": [1, 3]}, {"tick": 6, "steer": 0}, {"tick": 7, "restart": true, "steer": 1}])")
+            .empty());
+  // A second steer on a tick would silently replace the first: refused, naming both.
+  CHECK(replay_errors(R"([{"tick": 3, "steer": 1}, {"tick": 7, "steer": 1}, {"tick": 7, "steer": -1}])") ==
+        std::vector<std::string>{
+            "r.json: /inputs/2/steer: a second steer on tick 7 (the first is /inputs/1/steer): "
+            "only the last would act; give one steer per tick"});
+  CHECK(replay_errors(R"([{"tick": 7, "jump": true, "steer": 1}, {"tick": 7, "jump": true}])") ==
+        std::vector<std::string>{"r.json: /inputs/1/jump: a second jump on tick 7 (the first is "
+                                 "/inputs/0/jump): give one jump per tick"});
+  // A restart drops the steer given before it on its tick (a level starts unsteered).
+  CHECK(replay_errors(R"([{"tick": 9, "steer": 1}, {"tick": 9, "restart": true}])") ==
+        std::vector<std::string>{
+            "r.json: /inputs/1/restart: restarts the level after the steer of /inputs/0 on "
+            "the same tick 9, which the restart drops (a level starts unsteered); give the "
+            "steer after the restart"});
+}
+
+TEST_CASE("a replay names its level by a path relative to its own folder", "[unit][replay]") {
+  const auto with_level = [](const std::string& level) {
+    return load_replay_text(R"({"format": "tire-replay/1", "level": )" + level + R"(, "level_sha256": ")" +
+                                std::string(64, 'a') + R"(", "ticks": 1, "inputs": []})",
+                            "r.json")
+        .errors;
+  };
+  CHECK(with_level(R"("../../levels/01-first-roll.json")").empty());
+  const std::string expected =
+      "r.json: /level: must be the level file's path relative to the replay file's folder (as "
+      "\"../levels/01-first-roll.json\"), got ";
+  CHECK(with_level(R"("/etc/passwd")") == std::vector<std::string>{expected + "\"/etc/passwd\""});
+  CHECK(with_level(R"("")") == std::vector<std::string>{expected + "\"\""});
+  CHECK(with_level(R"("l.json\u0000x")") == std::vector<std::string>{expected + "\"l.json\\u0000x\""});
+}
+
+TEST_CASE("a replay's level is read as a level before its digest is taken", "[unit][replay]") {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("tire-replay-level-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "replays");
+  const auto put = [&](const std::string& name, const std::string& text) {
+    std::string error;
+    REQUIRE(write_file_atomically(dir / name, text, error));
+  };
+  const std::string level_text = R"({"name": "n", "tires": [{"position": [0, 1]}]})";
+  put("level.json", level_text);
+  put("secret.txt", "root:x:0:0:root:/root:/bin/bash\n");
+  put("other.json", R"({"token": "hunter2"})");
+  Replay replay;
+  replay.level = "../level.json";
+  const ReplayLevel good = load_replay_level(dir / "replays" / "r.json", replay);
+  CHECK(good.errors.empty());
+  REQUIRE(good.level);
+  CHECK(good.sha256 == sha256_hex(level_text));
+  CHECK(good.path == dir / "replays" / "../level.json");
+
+  // Not a level: the loader's error under the replay's /level, nothing of the bytes, no digest.
+  replay.level = "../secret.txt";
+  const ReplayLevel secret = load_replay_level(dir / "replays" / "r.json", replay);
+  CHECK_FALSE(secret.level);
+  CHECK(secret.sha256.empty());
+  REQUIRE(secret.errors.size() == 1);
+  const std::string where = (dir / "replays" / "r.json").string() + ": /level: ";
+  const std::string shown = (dir / "replays" / "../secret.txt").string();
+  CHECK(secret.errors[0].rfind(where + shown + " is not a valid level: invalid JSON: parse error at line 1",
+                               0) == 0);
+  CHECK(secret.errors[0].find("last read") == std::string::npos);
+  CHECK(secret.errors[0].find("root:") == std::string::npos);
+  CHECK(secret.errors[0].find(sha256_hex("root:x:0:0:root:/root:/bin/bash\n").substr(0, 12)) ==
+        std::string::npos);
+
+  replay.level = "../other.json";
+  const ReplayLevel other = load_replay_level(dir / "replays" / "r.json", replay);
+  CHECK_FALSE(other.level);
+  REQUIRE_FALSE(other.errors.empty());
+  for (const std::string& e : other.errors)
+    CHECK(e.rfind(where + (dir / "replays" / "../other.json").string() + " is not a valid level: /", 0) == 0);
+
+  replay.level = "../missing.json";
+  CHECK(load_replay_level(dir / "replays" / "r.json", replay).errors ==
+        std::vector<std::string>{where + "cannot read " + (dir / "replays" / "../missing.json").string() +
+                                 ": no such file"});
+  std::filesystem::remove_all(dir);
+}

@@ -4,13 +4,16 @@ set(LEVELS ${PROJECT_SOURCE_DIR}/levels)
 set(BAD ${CMAKE_CURRENT_SOURCE_DIR}/levels)
 
 function(tirectl_test name code)
-  cmake_parse_arguments(T "" "STDOUT;STDERR" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "STDOUT;STDERR;REFUSE_STDERR" "ARGS" ${ARGN})
   set(defs -DEXPECT_CODE=${code})
   if(DEFINED T_STDOUT)
     list(APPEND defs "-DEXPECT_STDOUT=${T_STDOUT}")
   endif()
   if(DEFINED T_STDERR)
     list(APPEND defs "-DEXPECT_STDERR=${T_STDERR}")
+  endif()
+  if(DEFINED T_REFUSE_STDERR)
+    list(APPEND defs "-DREFUSE_STDERR=${T_REFUSE_STDERR}")
   endif()
   string(REPLACE ";" "|" cmd "$<TARGET_FILE:tirectl>;${T_ARGS}")
   add_test(NAME "tirectl ${name}" COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${EXPECT})
@@ -42,6 +45,37 @@ tirectl_test("run refuses an invalid level" 2 ARGS run ${BAD}/bad-segments.json 
 tirectl_test("run applies --set and validates it" 2 ARGS run ${LEVELS}/01-first-roll.json --set solver.substeps=0
   STDERR "/solver/substeps: must be an integer in \\[1, 256\\], got 0")
 tirectl_test("run refuses a steer outside [-1, 1]" 2 ARGS run ${LEVELS}/01-first-roll.json --steer 3)
+# Options that would be silently ignored are refused together: a replay given with --input drives
+# the player (--steer, --jump-at); --steps fixes bench's count, which --seconds would otherwise set;
+# the global method's own sweep needs the global method swept.
+set(GOAL_REPLAY ${CMAKE_CURRENT_SOURCE_DIR}/replays/01-first-roll-goal.json)
+tirectl_test("run refuses --steer with --input" 2 ARGS run ${LEVELS}/01-first-roll.json --input ${GOAL_REPLAY} --steer 1
+  STDERR "--(steer|input) excludes --(input|steer)")
+tirectl_test("run refuses --jump-at with --input" 2 ARGS run ${LEVELS}/01-first-roll.json --jump-at 10 --input ${GOAL_REPLAY}
+  STDERR "--(jump-at|input) excludes --(input|jump-at)")
+tirectl_test("run takes its inputs from --input alone" 0 ARGS run ${LEVELS}/01-first-roll.json --input ${GOAL_REPLAY} --ticks 600
+  STDOUT "\"status\": \"won\"")
+tirectl_test("bench refuses --steps with --seconds" 2 ARGS bench --scene prototype --steps 5 --seconds 1
+  STDERR "--(steps|seconds) excludes --(seconds|steps)")
+tirectl_test("tradeoff refuses --global-substeps without the global method" 2
+  ARGS tradeoff --methods gauss-seidel --global-substeps 2 --out ${CMAKE_CURRENT_BINARY_DIR}/tradeoff-test-bad
+  STDERR "--global-substeps and --global-iterations apply to the global method, which --methods leaves out")
+# A key with an empty part is not the key without it: solver.dt. was once taken as solver.dt.
+tirectl_test("run refuses a --set key with an empty part" 2 ARGS run ${LEVELS}/01-first-roll.json --set solver.dt.=0.01
+  STDERR "01-first-roll.json: --set solver.dt.=0.01: the key \"solver.dt.\" has an empty part \\(a leading, trailing or doubled dot\\)")
+tirectl_test("run refuses a --set key with a doubled dot" 2 ARGS run ${LEVELS}/01-first-roll.json --set solver..dt=0.01
+  STDERR "--set solver..dt=0.01: the key \"solver..dt\" has an empty part")
+# A path with a newline is echoed with it escaped: "x\nlevels/01.json: ok" cannot forge an ok line.
+add_test(NAME "tirectl escapes control characters in the paths it prints"
+  COMMAND ${CMAKE_COMMAND} -DTIRECTL=$<TARGET_FILE:tirectl> -DLEVEL=${LEVELS}/01-first-roll.json
+    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/printable-test -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_printable.cmake)
+set_tests_properties("tirectl escapes control characters in the paths it prints" PROPERTIES LABELS unit)
+# Progress on stderr only on a terminal (a pseudo-terminal from script(1) here), never in a pipe.
+add_test(NAME "tirectl shows progress on a terminal only, and not with --no-progress"
+  COMMAND ${CMAKE_COMMAND} -DTIRECTL=$<TARGET_FILE:tirectl> -DLEVEL=${LEVELS}/01-first-roll.json
+    -DREPLAY=${GOAL_REPLAY} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_progress.cmake)
+set_tests_properties("tirectl shows progress on a terminal only, and not with --no-progress" PROPERTIES
+  LABELS unit SKIP_REGULAR_EXPRESSION "SKIPPED:")
 tirectl_test("unknown subcommand is a usage error" 2 ARGS fly)
 # levels/schema.json is generated from the parameter table (engine/tire/include/tire/tire/parameters.h):
 # regenerated here and compared with the committed file. On a difference tirectl names the first
@@ -154,8 +188,12 @@ tirectl_test("hostile: a replay of 10^8 ticks is refused" 2 ARGS replay ${HOSTIL
   STDERR "ticks-1e8.invalid.json: /ticks: must be an integer in \\[0, 5.184e\\+06\\], got 100000000")
 tirectl_test("hostile: a replay tuning 10^9 substeps is refused" 2 ARGS replay ${HOSTILE}/replay/set-substeps-1e9.invalid.json
   STDERR "/inputs/0/set/value: must be an integer in \\[1, 256\\], got 1000000000.0.*/inputs/1/set/value: must be a number in \\[0.001, 1e\\+06\\] kg, got 0")
-tirectl_test("hostile: a replay whose level is a device is refused" 2 ARGS replay ${HOSTILE}/replay/level-is-dev-zero.invalid.json
-  STDERR "level-is-dev-zero.invalid.json: /level: cannot read /dev/zero: not a regular file")
+tirectl_test("hostile: a replay naming its level by an absolute path is refused" 2
+  ARGS replay ${HOSTILE}/replay/level-is-dev-zero.invalid.json
+  STDERR "level-is-dev-zero.invalid.json: /level: must be the level file's path relative to the replay file's folder \\(as \"../levels/01-first-roll.json\"\\), got \"/dev/zero\"")
+tirectl_test("hostile: a replay whose level is a device is refused" 2
+  ARGS replay ${HOSTILE}/replay/level-is-dev-zero-relative.invalid.json
+  STDERR "level-is-dev-zero-relative.invalid.json: /level: cannot read [^\n]*/dev/zero: not a regular file")
 tirectl_test("hostile: run --input with a hostile replay is refused" 2
   ARGS run ${LEVELS}/01-first-roll.json --ticks 10 --input ${HOSTILE}/replay/spawn-flood.invalid.json
   STDERR "spawn-flood.invalid.json: /inputs/10000/spawn: a replay may spawn at most 10000 tires; this is one more")

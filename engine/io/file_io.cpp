@@ -113,16 +113,16 @@ std::optional<Target> resolve_target(const std::filesystem::path& file, std::str
     if (::lstat(target.path.c_str(), &target.st) != 0) {
       const int e = errno;
       if (e == ENOENT) return target;  // a new file (a missing folder is found on creating it)
-      error = "cannot write " + file.string() + ": " + errno_text(e);
+      error = "cannot write " + printable(file.string()) + ": " + errno_text(e);
       return std::nullopt;
     }
     const std::string through =
-        target.path == file ? "" : " (a symbolic link to " + target.path.string() + ")";
+        target.path == file ? "" : " (a symbolic link to " + printable(target.path.string()) + ")";
     if (S_ISLNK(target.st.st_mode)) {
       std::error_code ec;
       const std::filesystem::path to = std::filesystem::read_symlink(target.path, ec);
       if (ec || links == kMaxLinks) {
-        error = "cannot write " + file.string() + through + ": " +
+        error = "cannot write " + printable(file.string()) + through + ": " +
                 (ec ? ec.message() : std::string("too many levels of symbolic links"));
         return std::nullopt;
       }
@@ -131,7 +131,7 @@ std::optional<Target> resolve_target(const std::filesystem::path& file, std::str
       continue;
     }
     if (!S_ISREG(target.st.st_mode)) {
-      error = "cannot write " + file.string() + through + ": it is " + kind_of(target.st.st_mode) +
+      error = "cannot write " + printable(file.string()) + through + ": it is " + kind_of(target.st.st_mode) +
               ", not a regular file";
       return std::nullopt;
     }
@@ -163,14 +163,14 @@ std::optional<std::filesystem::path> write_temporary(const Target& target, std::
   }
   if (fd < 0) {
     const int e = errno;
-    error = "cannot write " + target.path.string() + ": cannot create the temporary file " + temp.string() +
-            ": " + errno_text(e);
+    error = "cannot write " + printable(target.path.string()) + ": cannot create the temporary file " +
+            printable(temp.string()) + ": " + errno_text(e);
     return std::nullopt;
   }
   const auto fail = [&](const std::string& what) {
     const int e = errno;
-    error = "cannot write " + target.path.string() + ": cannot " + what + " the temporary file " +
-            temp.string() + ": " + errno_text(e);
+    error = "cannot write " + printable(target.path.string()) + ": cannot " + what + " the temporary file " +
+            printable(temp.string()) + ": " + errno_text(e);
     ::close(fd);
     ::unlink(temp.c_str());
     return std::nullopt;
@@ -196,8 +196,8 @@ std::optional<std::filesystem::path> write_temporary(const Target& target, std::
   if (::fsync(fd) != 0) return fail("flush");
   if (::close(fd) != 0) {
     const int e = errno;
-    error = "cannot write " + target.path.string() + ": cannot flush the temporary file " + temp.string() +
-            ": " + errno_text(e);
+    error = "cannot write " + printable(target.path.string()) + ": cannot flush the temporary file " +
+            printable(temp.string()) + ": " + errno_text(e);
     ::unlink(temp.c_str());
     return std::nullopt;
   }
@@ -257,7 +257,7 @@ bool write_file_atomically(const std::filesystem::path& file, std::string_view c
   if (!temp) return false;
   if (::rename(temp->c_str(), target->path.c_str()) != 0) {
     const int e = errno;
-    error = "cannot write " + target->path.string() +
+    error = "cannot write " + printable(target->path.string()) +
             ": cannot rename the temporary file over it: " + errno_text(e);
     ::unlink(temp->c_str());
     return false;
@@ -276,7 +276,7 @@ std::optional<std::filesystem::path> write_new_file_atomically(const std::filesy
     struct stat st {};
     if (::lstat(name.c_str(), &st) == 0) continue;  // taken (a link too: nothing is written through)
     if (const int e = errno; e != ENOENT) {
-      error = "cannot write " + name.string() + ": " + errno_text(e);
+      error = "cannot write " + printable(name.string()) + ": " + errno_text(e);
       return std::nullopt;
     }
     const std::optional<std::filesystem::path> temp = write_temporary(Target{name}, contents, error);
@@ -284,15 +284,43 @@ std::optional<std::filesystem::path> write_new_file_atomically(const std::filesy
     const int result = link_new(*temp, name);
     if (result == EEXIST) continue;  // another writer took the name since lstat
     if (result != 0) {
-      error = "cannot write " + name.string() + ": " + errno_text(result);
+      error = "cannot write " + printable(name.string()) + ": " + errno_text(result);
       return std::nullopt;
     }
     sync_folder(name);
     return name;
   }
-  error = "cannot write " + file.string() + ": it and the next " + std::to_string(kMaxNewNames - 1) +
-          " numbered names (" + stem + "-2" + extension + ", ...) all exist";
+  error = "cannot write " + printable(file.string()) + ": it and the next " +
+          std::to_string(kMaxNewNames - 1) + " numbered names (" + printable(stem + "-2" + extension) +
+          ", ...) all exist";
   return std::nullopt;
+}
+
+std::string printable(std::string_view text) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0u;
+    if (c == '\\') {
+      out += "\\\\";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c == 0x7f) {
+      out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
+    } else if (c == 0xc2 && next >= 0x80 && next <= 0x9f) {  // U+0080..U+009F in UTF-8 (NEL among them)
+      out += {'\\', 'u', '0', '0', hex[next >> 4], hex[next & 15]};
+      ++i;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
 }
 
 std::string sha256_hex(std::string_view bytes) {

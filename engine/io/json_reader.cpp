@@ -6,6 +6,8 @@
 #include <map>
 #include <optional>
 
+#include "tire/io/file_io.h"
+
 namespace tire {
 
 namespace {
@@ -20,10 +22,13 @@ std::string quoted_list(const Names& items) {
   return out;
 }
 
-// An unknown key as it appears in a message: a hostile key of megabytes is cut short.
+// A key from the file as it appears in a message: a hostile key of megabytes is cut short, and a
+// control character in it is escaped (printable), so that it cannot end the message's line.
 std::string shorten_key(const std::string& key) {
   constexpr std::size_t kShown = 80;
-  return key.size() <= kShown ? key : key.substr(0, kShown) + "...(" + std::to_string(key.size()) + " bytes)";
+  return key.size() <= kShown
+             ? printable(key)
+             : printable(key.substr(0, kShown)) + "...(" + std::to_string(key.size()) + " bytes)";
 }
 
 }  // namespace

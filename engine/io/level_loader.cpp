@@ -1,7 +1,7 @@
 // Level files: size and depth limits, parse errors with line and column, --set overrides.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <sstream>
 
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
@@ -22,47 +22,55 @@ using json = nlohmann::json;
 constexpr JsonBudget kLevelBudget{LevelLimits::max_depth, LevelLimits::max_json_values,
                                   LevelLimits::max_string_bytes, "a level"};
 
-// Splits "a.b.0.c" into its parts.
+// Splits "a.b.0.c" into its parts, keeping empty ones: "solver.dt." is "solver", "dt", "".
 std::vector<std::string> split_dotted(const std::string& path) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(path);
-  while (std::getline(in, part, '.')) parts.push_back(part);
+  std::vector<std::string> parts(1);
+  for (const char c : path) {
+    if (c == '.')
+      parts.emplace_back();
+    else
+      parts.back() += c;
+  }
   return parts;
 }
 
 }  // namespace
 
 std::string apply_override(json& doc, const std::string& assignment) {
+  const std::string shown = "--set " + printable(assignment);
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    return "--set " + assignment + ": expected key=value, e.g. solver.substeps=16";
+  if (eq == std::string::npos || eq == 0) return shown + ": expected key=value, e.g. solver.substeps=16";
   const std::string key = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
+  const std::vector<std::string> parts = split_dotted(key);
+  // "solver.dt." is not solver.dt: every part between the dots is a name or an index.
+  if (std::find(parts.begin(), parts.end(), "") != parts.end())
+    return shown + ": the key \"" + printable(key) +
+           "\" has an empty part (a leading, trailing or doubled dot); expected names and indices joined by "
+           "single dots, e.g. tires.0.mass";
   const std::optional<double> parsed = tire::parse_double(text);
-  if (!parsed) return "--set " + assignment + ": value must be a number, got \"" + text + "\"";
+  if (!parsed) return shown + ": value must be a number, got \"" + printable(text) + "\"";
   const double value = *parsed;
   // from_chars reads "nan" and "inf"; JSON has no such numbers, and no key takes one.
-  if (!std::isfinite(value)) return "--set " + assignment + ": value must be a finite number, got " + text;
+  if (!std::isfinite(value)) return shown + ": value must be a finite number, got " + printable(text);
 
   json* node = &doc;
-  for (const std::string& part : split_dotted(key)) {
-    if (part.empty()) return "--set " + assignment + ": empty path component in \"" + key + "\"";
+  for (const std::string& part : parts) {
     if (node->is_array()) {
       std::size_t index = 0;
       const auto [p, e] = std::from_chars(part.data(), part.data() + part.size(), index);
       if (e != std::errc{} || p != part.data() + part.size() || index >= node->size())
-        return "--set " + assignment + ": \"" + part + "\" is not an index of the " +
+        return shown + ": \"" + printable(part) + "\" is not an index of the " +
                std::to_string(node->size()) + "-entry array";
       node = &(*node)[index];
     } else if (node->is_object() || node->is_null()) {
       node = &(*node)[part];
     } else {
-      return "--set " + assignment + ": \"" + part + "\" goes inside a value that is not an object";
+      return shown + ": \"" + printable(part) + "\" goes inside a value that is not an object";
     }
   }
   if (node->is_object() || node->is_array())
-    return "--set " + assignment + ": \"" + key + "\" is an object or array, not a number";
+    return shown + ": \"" + printable(key) + "\" is an object or array, not a number";
   if (std::floor(value) == value && std::abs(value) < 9e15)
     *node = static_cast<std::int64_t>(value);
   else
@@ -76,13 +84,13 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
   JsonParse parse = parse_json_bounded(text, kLevelBudget);
   out.work = parse.work;
   if (!parse.doc) {
-    out.errors.push_back(file + ": " + parse.error);
+    out.errors.push_back(printable(file) + ": " + parse.error);
     return out;
   }
   json& doc = *parse.doc;
   for (const std::string& assignment : overrides) {
     if (std::string err = apply_override(doc, assignment); !err.empty())
-      out.errors.push_back(file + ": " + err);
+      out.errors.push_back(printable(file) + ": " + err);
   }
   if (!out.errors.empty()) return out;
   std::vector<JsonIssue> issues;
@@ -90,14 +98,15 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
   out.level = read_level(doc, issues);
   if (!issues.empty()) out.level.reset();
   for (const JsonIssue& issue : issues)
-    out.errors.push_back(file + ": " + (issue.path.empty() ? "/" : issue.path) + ": " + issue.message);
+    out.errors.push_back(printable(file) + ": " + (issue.path.empty() ? "/" : issue.path) + ": " +
+                         issue.message);
   return out;
 }
 
 LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::string error;
   const auto text = read_file(file, LevelLimits::max_file_bytes, error);
-  if (!text) return {std::nullopt, {file.string() + ": " + error}, {}};
+  if (!text) return {std::nullopt, {printable(file.string()) + ": " + error}, {}};
   LevelLoad out = load_level_text(*text, file.string(), overrides);
   out.work.file_bytes = text->size();
   return out;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "script_reader.h"
+#include "tire/io/file_io.h"
 #include "tire/io/level.h"
 #include "tire/rigid/prop_geometry.h"
 
@@ -293,7 +294,8 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
       if (p.loop && p.points.size() < 3)
         r.fail(join_path(path, "points"), "a closed chain needs at least 3 points");
       if (p.type != PropType::static_body)
-        r.fail(join_path(path, "type"), "a chain can only be static (it has no mass), got \"" + type + "\"");
+        r.fail(join_path(path, "type"),
+               "a chain can only be static (it has no mass), got \"" + printable(type) + "\"");
       break;
   }
   for (std::size_t i = 0; i + 1 < p.points.size() + (p.loop ? 1 : 0) && p.points.size() >= 2; ++i) {
@@ -502,7 +504,7 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
       const auto [first, inserted] = first_with_name.emplace(name, i);
       if (!inserted)
         r.fail(path + "/name", "must be unique, and /props/" + std::to_string(first->second) +
-                                   " is already \"" + name + "\"");
+                                   " is already \"" + printable(name) + "\"");
     }
   }
   std::vector<std::string> prop_names;

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "level_reader.h"
+#include "tire/io/file_io.h"
 #include "tire/io/level.h"
 
 namespace tire {
@@ -62,13 +63,13 @@ std::string quoted_list(const Names& items) {
   std::string out;
   for (const auto& item : items) {
     const std::string_view s(item);
-    if (!s.empty()) out += (out.empty() ? "\"" : ", \"") + std::string(s) + "\"";
+    if (!s.empty()) out += (out.empty() ? "\"" : ", \"") + printable(s) + "\"";
   }
   return out;
 }
 
 std::string as_json_string(std::string_view s) { return JsonReader::describe(json(std::string(s))); }
-std::string in_quotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
+std::string in_quotes(std::string_view s) { return "\"" + printable(s) + "\""; }
 
 bool is_string_at(const json& obj, const char* key) {
   const auto it = obj.find(key);

@@ -93,9 +93,9 @@ ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, st
       const std::string key = r.string(*it, p, "key", "", 100, true);
       const Parameter* param = key.empty() ? nullptr : find_parameter(key);
       if (!key.empty() && !(param && param->may(by_replay)))
-        r.fail(
-            join_path(p, "key"),
-            "must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"" + key + "\"");
+        r.fail(join_path(p, "key"),
+               "must be a tunable key such as \"tires.pressure\" or \"solver.substeps\", got \"" +
+                   printable(key) + "\"");
       else if (!key.empty())
         in.set_key = key;
       // A value the world can take (the parameter table's range): 10^9 substeps would never finish
@@ -136,7 +136,7 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
         r.fail(p + "/tick", "must be after the previous checkpoint's tick " + std::to_string(previous) +
                                 ", got " + std::to_string(cp.tick));
       if (!cp.hash.empty() && !is_hex(cp.hash, 16))
-        r.fail(p + "/hash", "must be 16 lowercase hex digits, got \"" + cp.hash + "\"");
+        r.fail(p + "/hash", "must be 16 lowercase hex digits, got \"" + printable(cp.hash) + "\"");
       previous = cp.tick;
       e.checkpoints.push_back(cp);
     }
@@ -175,8 +175,19 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
     return std::nullopt;
   const std::string format = r.string(doc, "", "format", "", 40, true);
   if (!format.empty() && format != kReplayFormat)
-    r.fail("/format", std::string("must be \"") + kReplayFormat + "\", got \"" + format + "\"");
+    r.fail("/format", std::string("must be \"") + kReplayFormat + "\", got \"" + printable(format) + "\"");
   replay.level = r.string(doc, "", "level", "", 4096, true);
+  // The level is found from the replay file's folder (load_replay_level): a path relative to it, as
+  // the recorders write it. An absolute path would name the same file on every machine, whatever
+  // it is; "" would name the folder.
+  if (const auto it = doc.find("level");
+      it != doc.end() && it->is_string() &&
+      (replay.level.empty() || std::filesystem::path(replay.level).is_absolute() ||
+       replay.level.find('\0') != std::string::npos))
+    r.fail("/level",
+           "must be the level file's path relative to the replay file's folder (as "
+           "\"../levels/01-first-roll.json\"), got " +
+               JsonReader::describe(*it));
   replay.level_sha256 = r.string(doc, "", "level_sha256", "", 64, true);
   if (doc.contains("level_sha256") && !is_hex(replay.level_sha256, 64))
     r.fail("/level_sha256", "must be 64 lowercase hex digits (SHA-256 of the level file), got " +
@@ -185,18 +196,45 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
       static_cast<std::uint64_t>(r.integer(doc, "", "ticks", 0, {0, static_cast<double>(kMaxTicks)}, true));
   if (const auto it = doc.find("inputs"); it != doc.end() && r.array(*it, "/inputs", kMaxInputs)) {
     std::size_t spawns = 0, restarts = 0;
+    // This tick's steer and jump so far (their inputs' indices): inputs sharing a tick all act, in
+    // file order, but a second steer would silently replace the first and a second jump would do
+    // nothing, and a restart drops the steer given before it (a level starts unsteered). Each is
+    // refused rather than left for the last to win.
+    constexpr std::size_t kNone = SIZE_MAX;
+    std::size_t tick_steer = kNone, tick_jump = kNone;
     replay.inputs.reserve(it->size());
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string path = join_path("/inputs", i);
       replay.inputs.push_back(read_input(r, (*it)[i], path, replay.ticks));
-      if (i > 0 && replay.inputs[i].tick < replay.inputs[i - 1].tick)
-        r.fail(path + "/tick", "inputs must be in tick order: " + std::to_string(replay.inputs[i].tick) +
-                                   " comes after " + std::to_string(replay.inputs[i - 1].tick));
+      const ReplayInput& in = replay.inputs[i];
+      if (i > 0 && in.tick < replay.inputs[i - 1].tick)
+        r.fail(path + "/tick", "inputs must be in tick order: " + std::to_string(in.tick) + " comes after " +
+                                   std::to_string(replay.inputs[i - 1].tick));
+      if (i == 0 || in.tick != replay.inputs[i - 1].tick) {
+        tick_steer = kNone;
+        tick_jump = kNone;
+      }
+      if (in.restart && tick_steer != kNone)
+        r.fail(path + "/restart",
+               "restarts the level after the steer of /inputs/" + std::to_string(tick_steer) +
+                   " on the same tick " + std::to_string(in.tick) +
+                   ", which the restart drops (a level starts unsteered); give the steer after the restart");
+      if (in.restart) tick_steer = kNone;
+      if (in.steer && tick_steer != kNone)
+        r.fail(path + "/steer", "a second steer on tick " + std::to_string(in.tick) +
+                                    " (the first is /inputs/" + std::to_string(tick_steer) +
+                                    "/steer): only the last would act; give one steer per tick");
+      if (in.jump && tick_jump != kNone)
+        r.fail(path + "/jump", "a second jump on tick " + std::to_string(in.tick) +
+                                   " (the first is /inputs/" + std::to_string(tick_jump) +
+                                   "/jump): give one jump per tick");
+      if (in.steer) tick_steer = i;
+      if (in.jump) tick_jump = i;
       // Each spawn builds a tire and each restart the whole level: bounded like a level's tires.
-      if (replay.inputs[i].spawn && ++spawns == kMaxSpawns + 1)
+      if (in.spawn && ++spawns == kMaxSpawns + 1)
         r.fail(path + "/spawn",
                "a replay may spawn at most " + std::to_string(kMaxSpawns) + " tires; this is one more");
-      if (replay.inputs[i].restart && ++restarts == kMaxRestarts + 1)
+      if (in.restart && ++restarts == kMaxRestarts + 1)
         r.fail(path + "/restart", "a replay may restart the level at most " + std::to_string(kMaxRestarts) +
                                       " times; this is one more");
     }
@@ -212,7 +250,7 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
   const JsonParse parse = parse_json_bounded(text, kReplayBudget);
   out.work = parse.work;
   if (!parse.doc) {
-    out.errors.push_back(file + ": " + parse.error);
+    out.errors.push_back(printable(file) + ": " + parse.error);
     return out;
   }
   std::vector<JsonIssue> issues;
@@ -220,16 +258,49 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
   out.replay = read_replay(*parse.doc, issues);
   if (!issues.empty()) out.replay.reset();
   for (const JsonIssue& issue : issues)
-    out.errors.push_back(file + ": " + (issue.path.empty() ? "/" : issue.path) + ": " + issue.message);
+    out.errors.push_back(printable(file) + ": " + (issue.path.empty() ? "/" : issue.path) + ": " +
+                         issue.message);
   return out;
 }
 
 ReplayLoad load_replay_file(const std::filesystem::path& file) {
   std::string error;
   const auto text = read_file(file, std::min(kMaxFileBytes, ReplayLimits::max_file_bytes), error);
-  if (!text) return {std::nullopt, {file.string() + ": " + error}, {}};
+  if (!text) return {std::nullopt, {printable(file.string()) + ": " + error}, {}};
   ReplayLoad out = load_replay_text(*text, file.string());
   out.work.file_bytes = text->size();
+  return out;
+}
+
+ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Replay& replay) {
+  ReplayLevel out;
+  out.path = replay_file.parent_path() / replay.level;
+  const std::string where = printable(replay_file.string()) + ": /level: ";
+  const std::string shown = printable(out.path.string());
+  // `replay --update` rewrites the replay: never as its own level.
+  if (same_file(out.path, replay_file)) {
+    out.errors.push_back(where + "names the replay file itself (" + shown + ")");
+    return out;
+  }
+  std::string error;
+  const std::optional<std::string> text = read_file(out.path, LevelLimits::max_file_bytes, error);
+  if (!text) {
+    out.errors.push_back(where + "cannot read " + shown + ": " + error);
+    return out;
+  }
+  LevelLoad load = load_level_text(*text, out.path.string());
+  if (!load.level) {
+    // The loader's messages, under the replay's /level, without the JSON parser's excerpt of the
+    // bytes it stopped at: the file may be anything the replay's author named.
+    for (std::string e : load.errors) {
+      if (e.starts_with(shown + ": ")) e.erase(0, shown.size() + 2);
+      if (const auto cut = e.find("; last read: "); cut != std::string::npos) e.resize(cut);
+      out.errors.push_back(where + shown + " is not a valid level: " + e);
+    }
+    return out;
+  }
+  out.level = std::move(load.level);
+  out.sha256 = sha256_hex(*text);
   return out;
 }
 
@@ -290,7 +361,8 @@ void apply_input(const ReplayInput& in, LevelSession& session, const Level& leve
   if (in.gravity) world.set_gravity(*in.gravity);
 }
 
-ReplayOutcome run_replay(const Replay& replay, const Level& level) {
+ReplayOutcome run_replay(const Replay& replay, const Level& level,
+                         const std::function<void(std::uint64_t)>& after_tick) {
   ReplayOutcome out;
   std::unique_ptr<LevelSession> session = make_session(level);
   double steer = 0.0;
@@ -340,6 +412,7 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level) {
       apply_input(replay.inputs[next_input++], *session, level, steer, jump);
     session->step({steer, jump});
     check(tick + 1);
+    if (after_tick) after_tick(tick + 1);
   }
   out.status = to_string(session->status());
   out.hash = to_hex(session->state_hash());

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
+#include "best_runs.h"
 #include "gamepad.h"
 #include "ghost.h"
 #include "pad_script.h"
@@ -110,6 +111,55 @@ std::shared_ptr<const tire::Level> level_01() {
   return std::make_shared<const tire::Level>(*load.level);
 }
 }  // namespace
+
+TEST_CASE("a win is a new best only once saved, and a data folder that cannot be made is reported",
+          "[unit][game]") {
+  const auto dir = std::filesystem::temp_directory_path() / ("tire-best-runs-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "file") << "a file where the data folder should be\n";
+  const std::string level_path = std::string(TIRE_LEVELS_DIR) + "/01-first-roll.json";
+  const auto level = level_01();
+  SessionRecorder recorder;
+  recorder.begin(level_path, level->gravity);
+  const auto session = tire::make_session(*level);
+  const auto win = [&](const std::filesystem::path& data, std::vector<std::string>& messages) {
+    BestRuns runs;
+    messages = runs.open(data, TIRE_LEVELS_DIR);
+    runs.level_started(level_path, level, messages);
+    const RunResult r = runs.finished(true, 9.5, 570, true, recorder, *session, messages);
+    return std::make_pair(r, runs.summary(level_path));
+  };
+
+  std::vector<std::string> messages;
+  const auto [saved, saved_summary] = win(dir / "data", messages);
+  CHECK(messages.empty());
+  CHECK(saved.new_best);
+  CHECK(saved.saved);
+  CHECK(saved.note == "New best time!");
+  CHECK(saved_summary["run"]["new_best"] == true);
+  CHECK(saved_summary["best_time"] == 9.5);
+
+  // XDG_DATA_HOME naming a file: said when the progress opens, and the win is not claimed as a best.
+  const auto [unsaved, unsaved_summary] = win(dir / "file" / "soft-tire", messages);
+  INFO(messages.size() << " messages: " << (messages.empty() ? "" : messages.front()));
+  REQUIRE(messages.size() == 2);
+  CHECK(messages[0] == "progress and best runs cannot be kept in " + (dir / "file" / "soft-tire").string() +
+                           ": " + (dir / "file").string() + " is not a folder; nothing will be saved");
+  CHECK(messages[1].rfind(
+            "cannot save the progress to " + (dir / "file" / "soft-tire" / "progress.json").string() + ": ",
+            0) == 0);
+  CHECK(messages[1].ends_with("; this best time is not kept"));
+  CHECK(unsaved.won);
+  CHECK_FALSE(unsaved.new_best);
+  CHECK_FALSE(unsaved.saved);
+  CHECK(unsaved.note == "best time not saved: the progress file cannot be written");
+  CHECK(unsaved_summary["run"]["new_best"] == false);
+  CHECK(unsaved_summary["run"]["saved"] == false);
+  CHECK(unsaved_summary["won"] == false);  // what the (missing) file holds
+  CHECK(unsaved_summary["menu"] == "");
+  std::filesystem::remove_all(dir);
+}
 
 TEST_CASE("the last run of a recording replays on its own to the recorded end", "[unit][game][replay]") {
   const auto level = level_01();

@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "process_memory.h"
+#include "tire/io/file_io.h"
 #include "tire/io/level.h"
 #include "tire/tire/global_solver.h"
 #include "tire/tire/tire_solver.h"
@@ -405,7 +406,7 @@ int bench(const BenchOptions& options) {
   for (const std::string& name : options.scenes) {
     if (std::none_of(std::begin(kScenes), std::end(kScenes),
                      [&](const Scene& s) { return name == s.name; })) {
-      std::cerr << "tirectl bench: unknown scene \"" << name << "\"; scenes:";
+      std::cerr << "tirectl bench: unknown scene \"" << tire::printable(name) << "\"; scenes:";
       for (const Scene& s : kScenes) std::cerr << " " << s.name;
       std::cerr << "\n";
       return 2;

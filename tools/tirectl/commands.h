@@ -16,6 +16,7 @@ struct RunOptions {
   long long trace_every = 0;  // > 0: a readable line about the player every this many ticks (stderr)
   std::string input;          // a replay whose inputs drive the run
   std::string record;         // write the run as a replay here
+  bool progress = true;       // a progress line on stderr, when it is a terminal
 };
 int run(const RunOptions& options);
 
@@ -23,6 +24,7 @@ struct ReplayOptions {
   std::vector<std::string> files;
   bool update = false;              // rewrite the expectations from this run
   bool allow_level_change = false;  // run even if the level's content hash changed
+  bool progress = true;             // a progress line on stderr, when it is a terminal
 };
 int replay(const ReplayOptions& options);
 

@@ -18,17 +18,22 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--ticks", run.ticks, "Fixed ticks to step")->transform(integer_in({0, 1e8}));
   run_cmd->add_option("--set", run.overrides,
                       "Override a numeric key by dotted path, e.g. solver.substeps=16");
+  // A replay given with --input drives the player: --steer and --jump-at would be ignored, so they
+  // exclude it (CLI11: "--input excludes --steer", exit 2).
+  CLI::Option* input_opt =
+      run_cmd->add_option("--input", run.input, "Drive the player with the inputs of this replay file");
   run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")
-      ->check(number_in({-1, 1}));
+      ->check(number_in({-1, 1}))
+      ->excludes(input_opt);
   run_cmd->add_option("--jump-at", run.jump_at, "Ask the player to jump at this tick (repeatable)")
-      ->transform(integer_in({0, 1e8}));
+      ->transform(integer_in({0, 1e8}))
+      ->excludes(input_opt);
   run_cmd
       ->add_option("--trace", run.trace_every,
                    "Every N ticks, print a readable line about the player on stderr")
       ->transform(integer_in({1, 1e8}));
-
-  run_cmd->add_option("--input", run.input, "Drive the player with the inputs of this replay file");
   run_cmd->add_option("--record", run.record, "Record the run as a replay file (written atomically)");
+  run_cmd->add_flag("!--no-progress", run.progress, "No progress line on stderr (shown only on a terminal)");
 
   tirectl::ReplayOptions replay;
   CLI::App* replay_cmd = app.add_subcommand(
@@ -38,6 +43,8 @@ int main(int argc, char** argv) {
                        "Rewrite each replay's expectations from this run, saying what changed");
   replay_cmd->add_flag("--allow-level-change", replay.allow_level_change,
                        "Run a replay even if its level's content changed since it was recorded");
+  replay_cmd->add_flag("!--no-progress", replay.progress,
+                       "No progress line on stderr (shown only on a terminal)");
 
   std::vector<std::string> validate_files;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check level files; one line per problem");
@@ -58,12 +65,15 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--scene", bench.scenes, "Only these scenes (repeatable; default all)");
   bench_cmd->add_option("--threads", bench.threads, "Threads to step with (default: the hardware's)")
       ->transform(integer_in({1, 256}));
-  bench_cmd
-      ->add_option("--steps", bench.steps,
-                   "Timed steps per scene (default: as many as --seconds allow, at least 30)")
-      ->transform(integer_in({1, 1e7}));
-  bench_cmd->add_option("--seconds", bench.seconds, "Timing budget per scene when --steps is not given")
-      ->check(number_in({0, 3600}));
+  // --steps fixes the count, --seconds a budget the count follows: given both, one would be ignored.
+  CLI::Option* steps_opt =
+      bench_cmd
+          ->add_option("--steps", bench.steps,
+                       "Timed steps per scene (default: as many as --seconds allow, at least 30)")
+          ->transform(integer_in({1, 1e7}));
+  bench_cmd->add_option("--seconds", bench.seconds, "Timing budget per scene")
+      ->check(number_in({0, 3600}))
+      ->excludes(steps_opt);
   bench_cmd->add_option("--warmup", bench.warmup, "Untimed steps before timing")
       ->transform(integer_in({0, 1e6}));
   bench_cmd

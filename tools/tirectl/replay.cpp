@@ -1,10 +1,10 @@
 // tirectl replay: run each replay headless through World::step and check what it expects.
 #include "tire/replay/replay.h"
 
-#include <filesystem>
 #include <iostream>
 
 #include "commands.h"
+#include "progress.h"
 #include "tire/io/file_io.h"
 
 namespace tirectl {
@@ -20,34 +20,24 @@ int check_one(const std::string& file, const ReplayOptions& options) {
     return kBadInput;
   }
   tire::Replay replay = *load.replay;
-  const std::filesystem::path level_path = std::filesystem::path(file).parent_path() / replay.level;
-  // --update writes the replay: never over its level (a replay naming itself as its level).
-  if (tire::same_file(level_path, file)) {
-    std::cerr << file << ": /level: names the replay file itself (" << level_path.string() << ")\n";
+  const std::string shown = tire::printable(file);
+  // The level is read as a level before its digest is looked at: a replay may name any file.
+  const tire::ReplayLevel level = tire::load_replay_level(file, replay);
+  if (!level.level) {
+    for (const std::string& e : level.errors) std::cerr << e << "\n";
     return kBadInput;
   }
-  std::string error;
-  const auto level_text = tire::read_file(level_path, tire::LevelLimits::max_file_bytes, error);
-  if (!level_text) {
-    std::cerr << file << ": /level: cannot read " << level_path.string() << ": " << error << "\n";
-    return kBadInput;
-  }
-  const std::string sha = tire::sha256_hex(*level_text);
+  const std::string& sha = level.sha256;
   if (sha != replay.level_sha256) {
     if (!options.allow_level_change && !options.update) {
-      std::cerr << file << ": refused: " << level_path.string()
+      std::cerr << shown << ": refused: " << tire::printable(level.path.string())
                 << " has changed since this replay was recorded (SHA-256 " << sha.substr(0, 12)
                 << "…, recorded on " << replay.level_sha256.substr(0, 12)
                 << "…); run with --allow-level-change to run it anyway, or "
                 << "--update to record new expectations\n";
       return kFail;
     }
-    std::cerr << file << ": note: the level changed since recording; running it anyway\n";
-  }
-  const tire::LevelLoad level = tire::load_level_text(*level_text, level_path.string());
-  if (!level.level) {
-    for (const std::string& e : level.errors) std::cerr << e << "\n";
-    return kBadInput;
+    std::cerr << shown << ": note: the level changed since recording; running it anyway\n";
   }
   // With --update, a replay without checkpoints gets one every 30 ticks: placeholders that the run
   // fills with the real hashes.
@@ -55,7 +45,10 @@ int check_one(const std::string& file, const ReplayOptions& options) {
   if (options.update && to_run.expect.checkpoints.empty())
     for (std::uint64_t t = 30; t <= replay.ticks; t += 30)
       to_run.expect.checkpoints.push_back({t, "0000000000000000"});
-  const tire::ReplayOutcome outcome = tire::run_replay(to_run, *level.level);
+  tire_tools::TickProgress progress("replay " + shown, to_run.ticks, options.progress);
+  const tire::ReplayOutcome outcome =
+      tire::run_replay(to_run, *level.level, [&](std::uint64_t done) { progress.update(done); });
+  progress.finish();
 
   if (options.update) {
     tire::Replay updated = replay;
@@ -73,24 +66,25 @@ int check_one(const std::string& file, const ReplayOptions& options) {
                replay.expect.checkpoints[i].hash != updated.expect.checkpoints[i].hash;
     if (moved) changes.push_back(std::to_string(moved) + " checkpoint hash(es)");
     if (changes.empty()) {
-      std::cout << file << ": up to date\n";
+      std::cout << shown << ": up to date\n";
       return kPass;
     }
+    std::string error;
     if (!tire::write_file_atomically(file, tire::replay_to_json(updated), error)) {
-      std::cerr << file << ": " << error << "\n";
+      std::cerr << shown << ": " << error << "\n";
       return kBadInput;
     }
-    std::cout << file << ": updated:";
+    std::cout << shown << ": updated:";
     for (const std::string& c : changes) std::cout << " " << c << ";";
     std::cout << "\n";
     return kPass;
   }
 
   if (outcome.failures.empty()) {
-    std::cout << file << ": ok (" << replay.ticks << " ticks, " << outcome.status << ")\n";
+    std::cout << shown << ": ok (" << replay.ticks << " ticks, " << outcome.status << ")\n";
     return kPass;
   }
-  std::cout << file << ": FAILED";
+  std::cout << shown << ": FAILED";
   if (outcome.first_divergent_tick) std::cout << ", first divergent tick " << *outcome.first_divergent_tick;
   std::cout << "\n";
   for (const std::string& f : outcome.failures) std::cout << "  " << f << "\n";

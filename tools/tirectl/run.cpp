@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "progress.h"
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
 #include "tire/math/state_hash.h"
@@ -115,13 +116,15 @@ int run(const RunOptions& options) {
   // An output is never written over an input, nor onto what is not a regular file: refused before
   // the run, not after it.
   if (!options.record.empty()) {
+    using tire::printable;
     if (tire::same_file(options.record, options.level)) {
-      std::cerr << "tirectl: --record " << options.record << " is the level being run (" << options.level
-                << "); refusing to write the replay over it\n";
+      std::cerr << "tirectl: --record " << printable(options.record) << " is the level being run ("
+                << printable(options.level) << "); refusing to write the replay over it\n";
       return 2;
     }
     if (!options.input.empty() && tire::same_file(options.record, options.input)) {
-      std::cerr << "tirectl: --record " << options.record << " is the replay --input " << options.input
+      std::cerr << "tirectl: --record " << printable(options.record) << " is the replay --input "
+                << printable(options.input)
                 << " the run reads; refusing to write over it (tirectl replay --update rewrites a replay)\n";
       return 2;
     }
@@ -173,6 +176,7 @@ int run(const RunOptions& options) {
   }
 
   std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
+  tire_tools::TickProgress progress("run", static_cast<std::uint64_t>(options.ticks), options.progress);
   double steer = 0.0;
   std::size_t next = 0;
   SubstepTally tally;
@@ -189,10 +193,16 @@ int run(const RunOptions& options) {
     tire::World& world = session->world();
     tally.add(world);
     energy.add(world);
-    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) trace(world, energy);
+    if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) {
+      progress.clear();
+      trace(world, energy);
+    }
+    if (!world.warnings().empty()) progress.clear();
     for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
     world.warnings().clear();
+    progress.update(static_cast<std::uint64_t>(tick + 1));
   }
+  progress.finish();
   if (recorder) {
     std::string error;
     if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*session)),

@@ -27,39 +27,40 @@ std::string first_difference(const std::string& a, const std::string& b) {
 }  // namespace
 
 int schema(const SchemaOptions& options) {
+  const std::string file = tire::printable(options.file);
   std::string error;
   const auto current = tire::read_file(options.file, 16u << 20, error);
   if (!current) {
-    std::cerr << options.file << ": " << error << "\n";
+    std::cerr << file << ": " << error << "\n";
     return 2;
   }
   const tire::SchemaGeneration generated = tire::generate_level_schema(*current);
   if (!generated.text) {
-    std::cerr << options.file << ": not the level schema: " << generated.error << "\n";
+    std::cerr << file << ": not the level schema: " << generated.error << "\n";
     return 2;
   }
   const bool same = *generated.text == *current;
   if (options.check) {
     if (same) {
-      std::cout << options.file << ": up to date with the parameter table\n";
+      std::cout << file << ": up to date with the parameter table\n";
       return 0;
     }
-    std::cerr << options.file
+    std::cerr << file
               << ": differs from what the parameter table (engine/tire/include/tire/tire/parameters.h) "
               << "generates, first at " << first_difference(*current, *generated.text)
-              << "\nRegenerate it with: tirectl schema --write " << options.file << "\n";
+              << "\nRegenerate it with: tirectl schema --write " << file << "\n";
     return 1;
   }
   if (options.write) {
     if (same) {
-      std::cout << options.file << ": already up to date\n";
+      std::cout << file << ": already up to date\n";
       return 0;
     }
     if (!tire::write_file_atomically(options.file, *generated.text, error)) {
-      std::cerr << options.file << ": " << error << "\n";
+      std::cerr << file << ": " << error << "\n";
       return 2;
     }
-    std::cout << options.file << ": rewritten from the parameter table\n";
+    std::cout << file << ": rewritten from the parameter table\n";
     return 0;
   }
   std::cout << *generated.text;

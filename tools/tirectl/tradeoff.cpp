@@ -12,8 +12,6 @@
 // files are made in tradeoff_report.cpp and tradeoff_summary.cpp.
 #include "tradeoff.h"
 
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
@@ -26,6 +24,7 @@
 
 #include "cli_numbers.h"
 #include "commands.h"
+#include "progress.h"
 #include "tire/io/file_io.h"
 #include "tire/tire/solver_config.h"
 #include "tradeoff_report.h"
@@ -48,19 +47,16 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// A progress bar on stderr while it runs (only on a terminal; otherwise a line per tenth done).
-// The bar follows the expected work, the count follows the runs.
+// A progress bar on stderr while it runs (on a terminal, tire_tools::TerminalLine; otherwise a
+// line per tenth done). The bar follows the expected work, the count follows the runs.
 class Progress {
  public:
   Progress(std::size_t total, bool enabled, double total_weight)
-      : total_(total),
-        total_weight_(total_weight),
-        enabled_(enabled),
-        tty_(enabled && isatty(STDERR_FILENO) == 1) {}
+      : total_(total), total_weight_(total_weight), enabled_(enabled), line_(enabled) {}
   void update(std::size_t done, double done_weight, const std::string& what) {
     if (!enabled_) return;
     const double f = total_weight_ > 0.0 ? std::clamp(done_weight / total_weight_, 0.0, 1.0) : 1.0;
-    if (!tty_) {
+    if (!line_.active()) {
       const int tenth = static_cast<int>(f * 10.0);
       if (tenth > last_tenth_) {
         last_tenth_ = tenth;
@@ -71,21 +67,18 @@ class Progress {
     constexpr int kWidth = 30;
     std::string bar(static_cast<std::size_t>(f * kWidth), '#');
     bar.resize(kWidth, '.');
-    std::fprintf(stderr, "\r[%s] %zu/%zu %-36.36s", bar.c_str(), done, total_, what.c_str());
-    std::fflush(stderr);
+    char text[128];
+    std::snprintf(text, sizeof text, "[%s] %zu/%zu %-36.36s", bar.c_str(), done, total_, what.c_str());
+    line_.show(text);
   }
-  void note(const std::string& text) {
-    if (tty_) std::fprintf(stderr, "\r%-80s\n", ("tradeoff: " + text).c_str());
-  }
-  void finish() {
-    if (tty_) std::fprintf(stderr, "\r%-80s\r", "");
-  }
+  void note(const std::string& text) { line_.note("tradeoff: " + text); }
+  void finish() { line_.clear(); }
 
  private:
   std::size_t total_;
   double total_weight_;
   bool enabled_;
-  bool tty_;
+  tire_tools::TerminalLine line_;
   int last_tenth_ = 0;
 };
 
@@ -210,7 +203,7 @@ int tradeoff(const TradeoffOptions& options) {
   for (const std::string& name : o.scenarios) {
     if (std::none_of(tradeoff_scenarios().begin(), tradeoff_scenarios().end(),
                      [&](const TradeoffScenario& sc) { return sc.name == name; })) {
-      std::cerr << "tirectl tradeoff: unknown scenario \"" << name << "\"; scenarios:";
+      std::cerr << "tirectl tradeoff: unknown scenario \"" << tire::printable(name) << "\"; scenarios:";
       for (const TradeoffScenario& sc : tradeoff_scenarios()) std::cerr << " " << sc.name;
       std::cerr << "\n";
       return 2;
@@ -221,6 +214,14 @@ int tradeoff(const TradeoffOptions& options) {
     std::cerr << "tirectl tradeoff: --methods, --substeps, --iterations, --segments and --tunnel-clamp need "
                  "at least "
                  "one value\n";
+    return 2;
+  }
+  // The global method's own substeps and iterations apply only when it is swept.
+  if ((!o.global_substeps.empty() || !o.global_iterations.empty()) &&
+      std::find(o.method_list.begin(), o.method_list.end(), tire::SolverMethod::global) ==
+          o.method_list.end()) {
+    std::cerr << "tirectl tradeoff: --global-substeps and --global-iterations apply to the global method, "
+                 "which --methods leaves out; add it to --methods or leave them out\n";
     return 2;
   }
   // The scenarios to run, in the table's order, with their references.
@@ -269,7 +270,8 @@ int tradeoff(const TradeoffOptions& options) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) {
-    std::cerr << "tirectl tradeoff: cannot create " << dir.string() << ": " << ec.message() << "\n";
+    std::cerr << "tirectl tradeoff: cannot create " << tire::printable(dir.string()) << ": " << ec.message()
+              << "\n";
     return 2;
   }
 
@@ -445,12 +447,12 @@ int tradeoff(const TradeoffOptions& options) {
   for (const auto& [path, text] : files) {
     std::string error;
     if (!tire::write_file_atomically(path, text, error)) {
-      std::cerr << "tirectl tradeoff: " << path.string() << ": " << error << "\n";
+      std::cerr << "tirectl tradeoff: " << tire::printable(path.string()) << ": " << error << "\n";
       return 2;
     }
   }
   std::cerr << summary;
-  for (const auto& [path, text] : files) std::cout << "wrote " << path.string() << "\n";
+  for (const auto& [path, text] : files) std::cout << "wrote " << tire::printable(path.string()) << "\n";
   return 0;
 }
 

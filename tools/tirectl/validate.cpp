@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "tire/io/file_io.h"
 #include "tire/io/level.h"
 
 namespace tirectl {
@@ -11,7 +12,7 @@ int validate(const std::vector<std::string>& files) {
     const tire::LevelLoad load = tire::load_level_file(file);
     for (const std::string& error : load.errors) std::cerr << error << "\n";
     if (load.level)
-      std::cout << file << ": ok\n";
+      std::cout << tire::printable(file) << ": ok\n";
     else
       ++failed;
   }

@@ -42,6 +42,12 @@ std::string check_output_file(const std::filesystem::path& file);
 // either does not exist.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
+// `text` (a path, a key, anything a user or a file chose) as it may appear inside a one-line
+// message: a newline, carriage return or tab is written \n, \r, \t, any other control character
+// (C0, DEL, C1) \xHH or \u00HH, and a backslash \\, so that no name can end a message's line and
+// forge another ("x\nlevels/01.json: ok"). Anything else, UTF-8 included, is kept as it is.
+std::string printable(std::string_view text);
+
 // SHA-256 of the bytes, as 64 lowercase hex digits (OpenSSL's; Nettle's where it is built without
 // OpenSSL, as in the browser).
 std::string sha256_hex(std::string_view bytes);

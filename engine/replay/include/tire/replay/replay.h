@@ -4,11 +4,14 @@
 //
 // Inputs are changes: steer holds until the next steer; jump, spawn, grab, drag, release, set,
 // gravity and restart act once, at their tick, before that tick's step. Several inputs may share
-// a tick; they apply in file order.
+// a tick; they apply in file order, and each acts. So a tick holds at most one steer and one jump
+// (a second steer would replace the first unseen, a second jump would do nothing), and no steer
+// before a restart on the same tick (the restart drops it): the reader refuses those.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +62,7 @@ struct ReplayExpect {
 };
 
 struct Replay {
-  std::string level;         // path, relative to the replay file
+  std::string level;         // path, relative to the replay file's folder (never absolute)
   std::string level_sha256;  // of the level file's bytes when recorded
   std::uint64_t ticks = 0;
   std::vector<ReplayInput> inputs;
@@ -89,6 +92,18 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file);
 
 std::string replay_to_json(const Replay& replay);
 
+// The level a replay names (`replay.level`, from the replay file's folder), read by the level
+// reader. Nothing is said of the file until it has loaded as a level: one that does not (any file
+// a replay may name, /etc/passwd by a relative path) gets the loader's errors, under the replay's
+// /level and without the parser's excerpt of its bytes, and no digest.
+struct ReplayLevel {
+  std::filesystem::path path;       // the replay's folder / replay.level
+  std::optional<Level> level;       // empty when `errors` is not
+  std::string sha256;               // of the level file's bytes, when it loaded
+  std::vector<std::string> errors;  // "REPLAY: /level: ..."
+};
+ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Replay& replay);
+
 // Plays inputs into a level session. `held_steer` carries the steer between ticks. A restart
 // rebuilds the session from `level`.
 void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, double& held_steer,
@@ -105,8 +120,10 @@ struct ReplayOutcome {
   std::size_t box_checks = 0;                         // centroid boxes looked at (once each at most)
 };
 
-// Runs the replay's ticks on `level` and checks every expectation.
-ReplayOutcome run_replay(const Replay& replay, const Level& level);
+// Runs the replay's ticks on `level` and checks every expectation. `after_tick`, when given, is
+// called with the ticks done after each one (for a progress display; it cannot change the run).
+ReplayOutcome run_replay(const Replay& replay, const Level& level,
+                         const std::function<void(std::uint64_t)>& after_tick = {});
 
 // Records a run: call input() for each input as it happens and step() after each World::step;
 // finish() gives the replay with its expectations (status, final hash, a checkpoint every
