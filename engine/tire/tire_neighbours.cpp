@@ -35,7 +35,6 @@ void TireNeighbours::reserve(const std::vector<Tire>& tires, std::size_t pairs) 
   reserve_doubling(colour_begin_, tires.size() + 2);
   reserve_doubling(by_colour_, tires.size());
   reserve_doubling(offset_, tires.size() + 1);
-  reserve_doubling(pushed_, tires.size());
   reserve_doubling(owed_, tires.size());
   reserve_doubling(x_, particles);
   reserve_doubling(motion_, particles);
@@ -109,19 +108,12 @@ void TireNeighbours::begin_capture(const std::vector<Tire>& tires, double h) {
   body_.resize(tires.size());
   linear_.resize(tires.size());
   angular_.resize(tires.size());
-  pushed_.clear();
   if (reactions_.size() < tires.size()) reactions_.resize(tires.size());
 }
 
 void TireNeighbours::capture(const std::vector<Tire>& tires, double h) {
   begin_capture(tires, h);
   for (const std::uint32_t i : members_) capture_tire(tires[i], i);
-}
-
-void TireNeighbours::refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved) {
-  for (const std::uint32_t i : solved) capture_tire(tires[i], i);
-  for (const std::uint32_t i : pushed_) capture_tire(tires[i], i);
-  pushed_.clear();
 }
 
 void TireNeighbours::capture_tire(const Tire& t, std::size_t i) {
@@ -219,8 +211,7 @@ bool TireNeighbours::apply_reaction(Tire& t, std::uint32_t i, double tunnel_clam
 
 void TireNeighbours::apply_reactions(std::vector<Tire>& tires, double tunnel_clamp, double h,
                                      std::size_t colour) const {
-  for (const std::uint32_t i : gather_reactions(tires))
-    if (apply_reaction(tires[i], i, tunnel_clamp, h, colour)) pushed_.push_back(i);
+  for (const std::uint32_t i : gather_reactions(tires)) apply_reaction(tires[i], i, tunnel_clamp, h, colour);
 }
 
 }  // namespace tire

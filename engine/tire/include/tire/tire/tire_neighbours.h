@@ -93,11 +93,9 @@ class TireNeighbours {
   std::span<const std::uint32_t> tires_of_colour(std::size_t c) const {
     return {by_colour_.data() + colour_begin_[c], by_colour_.data() + colour_begin_[c + 1]};
   }
-  // The treads where they are now, as the next colour's tires see them: every tire (at the start
-  // of an iteration), or only those that moved since, the colour just `solved` and the tires its
-  // pushes moved (the rest are as captured, bit for bit). `h`: the substep.
+  // The treads where they are now, as the next colour's tires see them: every member, at the start
+  // of an iteration. `h`: the substep.
   void capture(const std::vector<Tire>& tires, double h);
-  void refresh(const std::vector<Tire>& tires, std::span<const std::uint32_t> solved);
   // capture() in parts, for a caller that spreads the tires over threads: begin_capture once, then
   // capture_tire for each member (any order, any thread: each writes only its own tire's slots).
   // A tire of the colour being solved may be captured as soon as its own solve ends, as no tire of
@@ -152,12 +150,10 @@ class TireNeighbours {
     double inverse_inertia = 0.0;
   };
   std::vector<Body> body_;
-  // apply_reactions' sums per tire: the linear and angular push, and whether any came; the tires it
-  // moved, for refresh.
+  // gather_reactions' sums per tire: the linear and angular push.
   mutable std::vector<Vec2> linear_;
   mutable std::vector<double> angular_;
   mutable std::vector<std::vector<TireReaction>> reactions_;
-  mutable std::vector<std::uint32_t> pushed_;
   mutable std::vector<std::uint32_t> owed_;  // gather_reactions': the tires owed a push
 };
 
