@@ -108,9 +108,10 @@ inline void fuzz_simulate(const std::string& input, const SimulateBudget& budget
   // Inputs from the bytes themselves, so that the fuzzer steers them too.
   std::size_t h = 1469598103934665603ull;
   for (const unsigned char c : input) h = (h ^ c) * 1099511628211ull;
-  double steer = static_cast<double>(h % 5) / 2.0 - 1.0;
+  const double steer = static_cast<double>(h % 5) / 2.0 - 1.0;
+  TickInput held{steer, false, static_cast<double>(h % 3) - 1.0};
   for (int tick = 0; tick < budget.ticks; ++tick) {
-    bool jump = tick == static_cast<int>(h % 17);
+    held.jump = tick == static_cast<int>(h % 17);
     ReplayInput in;
     in.tick = static_cast<std::uint64_t>(tick);
     if (tick == 5) in.spawn = Vec2{static_cast<double>(h % 7) - 3.0, 3.0};
@@ -121,8 +122,8 @@ inline void fuzz_simulate(const std::string& input, const SimulateBudget& budget
     if (tick == 25) in.steer = -steer;
     if (tick == 30 && (h & 1)) in.restart = true;
     if (tick == 31) in.spawn = Vec2{0.0, 6.0};
-    apply_input(in, *session, level, steer, jump);
-    session->step({steer, jump});
+    apply_input(in, *session, level, held);
+    session->step(held);
     for (const Tire& t : world->tires()) require(t.is_finite(), "every tire stays finite", level.name);
     world->warnings().clear();
   }

@@ -411,6 +411,9 @@ tire::TickInput App::tick_input() const {
                       (held(SDL_SCANCODE_LEFT, SDL_SCANCODE_A) ? 1.0 : 0.0);
   in.steer = std::clamp(keys + gamepads_.steer(), -1.0, 1.0);
   in.jump = pending_jump_;
+  const double pump = (held(SDL_SCANCODE_LSHIFT, SDL_SCANCODE_RSHIFT) ? 1.0 : 0.0) -
+                      (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
+  in.inflate = std::clamp(pump + gamepads_.inflate(), -1.0, 1.0);
   return in;
 }
 

@@ -65,8 +65,13 @@ PadAction Gamepads::handle_event(const SDL_Event& e, std::vector<std::string>& m
     }
     case SDL_CONTROLLERAXISMOTION: {
       const auto it = pads_.find(e.caxis.which);
-      if (it != pads_.end() && e.caxis.axis == SDL_CONTROLLER_AXIS_LEFTX)
-        it->second.stick = stick_steer(e.caxis.value);
+      if (it == pads_.end()) return PadAction::none;
+      // A trigger reads 0 … 32767: the stick's dead zone and rescaling on its positive half.
+      if (e.caxis.axis == SDL_CONTROLLER_AXIS_LEFTX) it->second.stick = stick_steer(e.caxis.value);
+      if (e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT)
+        it->second.left_trigger = stick_steer(e.caxis.value);
+      if (e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERRIGHT)
+        it->second.right_trigger = stick_steer(e.caxis.value);
       return PadAction::none;
     }
     case SDL_CONTROLLERBUTTONDOWN:
@@ -95,6 +100,13 @@ PadAction Gamepads::handle_event(const SDL_Event& e, std::vector<std::string>& m
     }
     default: return PadAction::none;
   }
+}
+
+double Gamepads::inflate() const {
+  double sum = 0.0;
+  for (const auto& [id, pad] : pads_)
+    sum += std::max(0.0, pad.right_trigger) - std::max(0.0, pad.left_trigger);
+  return std::clamp(sum, -1.0, 1.0);
 }
 
 double Gamepads::steer() const {

@@ -1,7 +1,8 @@
 // Game controllers through SDL's GameController API, hot-plugged: a pad plugged in mid-game is
 // opened when SDL reports it (SDL_CONTROLLERDEVICEADDED) and closed when it goes away. The left
-// stick steers in proportion (past a dead zone), the d-pad steers fully; buttons become actions the
-// app maps to what the keys do (A jump, Start pause, Back restart, shoulders change level).
+// stick steers in proportion (past a dead zone), the d-pad steers fully; the right trigger inflates
+// and the left deflates, in proportion; buttons become actions the app maps to what the keys do (A
+// jump, Start pause, Back restart, shoulders change level).
 #pragma once
 
 #include <SDL.h>
@@ -38,6 +39,8 @@ class Gamepads {
 
   // The steering the pads ask for now, in [-1, 1] (the d-pad wins over the stick).
   double steer() const;
+  // Inflating (+) or deflating (−) the pads ask for now, in [-1, 1]: right trigger less left.
+  double inflate() const;
   std::size_t connected() const { return pads_.size(); }
   void close_all();
 
@@ -46,6 +49,7 @@ class Gamepads {
     SDL_GameController* controller = nullptr;
     double stick = 0.0;  // left stick x, after the dead zone
     bool left = false, right = false;
+    double left_trigger = 0.0, right_trigger = 0.0;  // [0, 1], after the dead zone
   };
   std::map<SDL_JoystickID, Pad> pads_;
   bool started_ = false;

@@ -39,7 +39,7 @@ void Ghost::restart() {
   session_ = tire::make_session(*level_);
   tick_ = 0;
   next_input_ = 0;
-  steer_ = 0.0;
+  held_ = {};
   previous_.clear();
 }
 
@@ -47,12 +47,12 @@ void Ghost::sync(std::uint64_t tick) {
   if (!session_) return;
   if (tick < tick_) restart();
   while (tick_ < tick && tick_ < replay_.ticks) {
-    bool jump = false;
+    held_.jump = false;
     while (next_input_ < replay_.inputs.size() && replay_.inputs[next_input_].tick == tick_)
-      tire::apply_input(replay_.inputs[next_input_++], *session_, *level_, steer_, jump);
+      tire::apply_input(replay_.inputs[next_input_++], *session_, *level_, held_);
     if (const tire::Tire* p = session_->world().player())
       previous_.assign(p->particles.x.begin(), p->particles.x.end());
-    session_->step({steer_, jump});
+    session_->step(held_);
     ++tick_;
   }
   // Its run is over: it holds still where it finished.

@@ -51,7 +51,7 @@ class Ghost {
   std::filesystem::path file_;
   std::uint64_t tick_ = 0;
   std::size_t next_input_ = 0;
-  double steer_ = 0.0;
+  tire::TickInput held_;              // the replay's steer and inflate, held between its inputs
   std::vector<tire::Vec2> previous_;  // the player tire's particles a tick ago
 };
 

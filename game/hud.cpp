@@ -18,6 +18,8 @@ const char* const kKeys[][2] = {
     {"Left / A", "steer left (hold)"},
     {"Right / D", "steer right (hold)"},
     {"Space / Up / W", "jump (when on the ground)"},
+    {"Shift", "inflate (hold): stiffer, bouncier, rolls faster"},
+    {"Down / S", "deflate (hold): a wider patch that grips, squeezes under low gaps"},
     {"R", "restart the level"},
     {"P", "pause / resume"},
     {". (period)", "one tick forward while paused"},
@@ -38,6 +40,7 @@ const char* const kKeys[][2] = {
 const char* const kPad[][2] = {
     {"Left stick / d-pad", "steer (the stick in proportion)"},
     {"A", "jump; in a menu or after a level: choose"},
+    {"Right / left trigger", "inflate / deflate (in proportion)"},
     {"Start", "pause / resume"},
     {"Back", "restart the level"},
     {"Right / left shoulder", "next / previous level"},

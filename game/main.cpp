@@ -47,10 +47,12 @@ void browser_frame(void* arg) {
 int main(int argc, char** argv) {
   CLI::App cli{
       "Soft tire: roll a deformable XPBD tire through a level.\n"
-      "Keys: arrows/A/D steer, Space/Up/W jump, R restart, P pause, . step, N/B next/previous level,\n"
+      "Keys: arrows/A/D steer, Space/Up/W jump, Shift inflate, Down/S deflate, R restart, P pause,\n"
+      ". step, N/B next/previous level,\n"
       "Esc level menu, F1 help, F2 tuning panel, F3 debug drawing, E the level editor, G the ghost,\n"
       "M mute. Mouse: click spawns a tire, drag grabs one.\n"
-      "Gamepad: left stick/d-pad steer, A jump, Start pause, Back restart, shoulders next/previous level.\n"
+      "Gamepad: left stick/d-pad steer, A jump, triggers inflate/deflate, Start pause, Back restart,\n"
+      "shoulders next/previous level.\n"
       "Progress and ghosts: $XDG_DATA_HOME/soft-tire/ (else ~/.local/share/soft-tire/).",
       "tire-game"};
   std::string level;

@@ -60,7 +60,7 @@ void SessionRecorder::begin(const std::filesystem::path& level_file, tire::Vec2 
   level_sha256_ = level_sha(level_file_);
   // The level path is made relative to the replay file when saved; the recorder holds a placeholder.
   recorder_.emplace(level_file_.string(), level_sha256_);
-  steer_ = 0.0;
+  steer_ = inflate_ = 0.0;
   gravity_ = gravity;
 }
 
@@ -81,7 +81,7 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
             if (recorder_ && file == level_file_ && level_sha(file) == level_sha256_) {
               in.restart = true;  // the same level, restarted: one recording goes on
               input(in);
-              steer_ = 0.0;
+              steer_ = inflate_ = 0.0;
               gravity_ = e.level->gravity;
             } else {
               begin(file, e.level->gravity);  // another level, or the file changed: a new recording
@@ -135,8 +135,12 @@ void SessionRecorder::on_step(std::uint64_t, const tire::TickInput& input_now) {
     in.steer = input_now.steer;
     steer_ = input_now.steer;
   }
+  if (input_now.inflate != inflate_) {
+    in.inflate = input_now.inflate;
+    inflate_ = input_now.inflate;
+  }
   in.jump = input_now.jump;
-  if (in.steer || in.jump) input(in);
+  if (in.steer || in.jump || in.inflate) input(in);
 }
 
 void SessionRecorder::on_stepped(const tire::LevelSession& session) {

@@ -57,6 +57,7 @@ class SessionRecorder final : public SessionObserver {
   std::filesystem::path level_file_;  // absolute
   std::string level_sha256_;
   double steer_ = 0.0;
+  double inflate_ = 0.0;
   tire::Vec2 gravity_;
 };
 

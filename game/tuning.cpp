@@ -29,6 +29,8 @@ constexpr SliderSpec kSliders[] = {
      "static and kinetic friction coefficient"},
     {"tires.material_damping", kTire, "material damping", 1e-5, 1.0, SliderScale::exponent, "",
      "Kelvin-Voigt damping time (s)"},
+    {"tires.restitution", kTire, "restitution", 0.0, 1.0, SliderScale::linear, "%.2f",
+     "a landing tire leaves at this fraction of its landing speed; 0: the material decides"},
     {"gravity.x", kWorld, "gravity x", -30.0, 30.0, SliderScale::linear, "%.2f m/s2", "horizontal gravity"},
     {"gravity.y", kWorld, "gravity y", -30.0, 30.0, SliderScale::linear, "%.2f m/s2",
      "vertical gravity (-9.81 is Earth)"},

@@ -23,20 +23,21 @@ TEST_CASE("a recorded run replays to the same hashes, and a changed input is cau
   const Level level = default_level();
   ReplayRecorder recorder("level.json", std::string(64, '0'), 10);
   auto session = make_session(level);
-  double steer = 0.0;
+  TickInput held;
   for (std::uint64_t tick = 0; tick < 240; ++tick) {
-    bool jump = false;
+    held.jump = false;
     ReplayInput in;
     in.tick = tick;
     if (tick == 0) in.steer = 1.0;
-    if (tick == 90) in.jump = true;
+    if (tick == 30) in.inflate = -1.0;  // deflate for a second, then inflate
+    if (tick == 90) in.jump = true, in.inflate = 1.0;
     if (tick == 150) in.spawn = Vec2{3, 4};
     if (tick == 160) in.set_key = "tires.pressure", in.set_value = 1.3;
-    if (in.steer || in.jump || in.spawn || in.set_key) {
+    if (in.steer || in.jump || in.inflate || in.spawn || in.set_key) {
       recorder.input(in);
-      apply_input(in, *session, level, steer, jump);
+      apply_input(in, *session, level, held);
     }
-    session->step({steer, jump});
+    session->step(held);
     recorder.after_step(*session);
   }
   Replay replay = recorder.finish(*session);
@@ -50,7 +51,7 @@ TEST_CASE("a recorded run replays to the same hashes, and a changed input is cau
   CHECK(ok.hash == *replay.expect.hash);
   // The same replay with the jump one tick later diverges, and the report says where.
   Replay changed = *again.replay;
-  changed.inputs[1].tick = 91;
+  changed.inputs[2].tick = 91;  // the jump (and the inflate with it)
   const ReplayOutcome bad = run_replay(changed, level);
   REQUIRE(bad.first_divergent_tick);
   CHECK(*bad.first_divergent_tick == 100);  // the first checkpoint after tick 91

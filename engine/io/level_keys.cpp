@@ -181,6 +181,8 @@ std::vector<LevelKey> solver_keys() {
           "is reset"),
       from_row(P::solver_divergence_speed,
                "{range}: a tire with a particle faster than this has diverged and is reset"),
+      from_row(P::solver_restitution_threshold,
+               "{range}: a tire bounces by its restitution only off a landing faster than this"),
       Key("method", T::choice,
           "\"gauss-seidel\": each constraint on its own; \"global\": each tire solved as one system")
           .choices(methods)
@@ -195,8 +197,15 @@ std::vector<LevelKey> tire_keys() {
   using P = ParamId;
   const TireSpec tire;
   const std::vector<std::string> spokes{"radial", "cross"};  // SpokePattern's order
+  std::vector<std::string> materials;
+  for (const Material& m : kMaterials) materials.emplace_back(m.name);
   return table({
       Key("position", T::vec2, "where the hub starts; each in {range}").range(kCoordinate, "m").required(),
+      Key("material", T::choice,
+          "a preset of compliance, material_damping, friction, kinetic_friction, rolling_resistance and "
+          "restitution, as a starting point: the tire's own keys override it")
+          .choices(materials)
+          .by_default(materials.front()),
       Key("velocity", T::vec2, "each in {range}").range(kVelocity, "m/s").by_default(vec2(tire.velocity)),
       from_row(P::tire_angle, "{range}: rotation from the pose with a tread segment flat at the bottom"),
       from_row(P::tire_angular_velocity, "{range}, counter-clockwise positive"),
@@ -220,6 +229,13 @@ std::vector<LevelKey> tire_keys() {
       from_row(P::tire_jump_speed, "{range}: upward speed a jump adds (only when grounded)"),
       from_row(P::tire_max_speed,
                "{range}: cap on the hub's horizontal speed and on the speed steering drives the tread to"),
+      from_row(P::tire_restitution,
+               "{range}: a landing tire leaves the surface at this fraction of its landing speed; 0 leaves "
+               "the bounce to its compliances and material_damping"),
+      from_row(P::tire_inflate_rate,
+               "{range}: how fast inflating or deflating moves the pressure, per second"),
+      from_row(P::tire_min_pressure, "{range}: deflating stops here"),
+      from_row(P::tire_max_pressure, "{range}: inflating stops here"),
   });
 }
 

@@ -49,6 +49,8 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   s.jump_grace = read_number(r, j, path, level_key(O::solver, "jump_grace"), s.jump_grace);
   s.divergence_area = read_number(r, j, path, level_key(O::solver, "divergence_area"), s.divergence_area);
   s.divergence_speed = read_number(r, j, path, level_key(O::solver, "divergence_speed"), s.divergence_speed);
+  s.restitution_threshold =
+      read_number(r, j, path, level_key(O::solver, "restitution_threshold"), s.restitution_threshold);
   return s;
 }
 
@@ -67,9 +69,9 @@ RunBudgets read_budgets(JsonReader& r, const json& j, const std::string& path) {
   return b;
 }
 
-TireCompliance read_compliance(JsonReader& r, const json& j, const std::string& path) {
+// Each compliance the object leaves out keeps `c`'s (the tire's material's).
+TireCompliance read_compliance(JsonReader& r, const json& j, const std::string& path, TireCompliance c) {
   using O = LevelObject;
-  TireCompliance c;
   if (!r.object(j, path, level_key_names(O::compliance))) return c;
   c.outer = read_number(r, j, path, level_key(O::compliance, "outer"), c.outer);
   c.inner = read_number(r, j, path, level_key(O::compliance, "inner"), c.inner);
@@ -152,6 +154,7 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   };
   TireSpec t;
   if (!r.object(j, path, level_key_names(LevelObject::tire))) return t;
+  kMaterials[read_choice_index(r, j, path, key("material"), 0)].apply_to(t);
   t.position = read_vec2(r, j, path, key("position"), t.position);
   t.velocity = read_vec2(r, j, path, key("velocity"), t.velocity);
   t.angle = read_number(r, j, path, key("angle"), t.angle);
@@ -167,11 +170,13 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   t.segments = read_integer(r, j, path, key("segments"), t.segments);
   t.mass = read_number(r, j, path, key("mass"), t.mass);
   t.friction = read_number(r, j, path, key("friction"), t.friction);
-  // Kinetic friction defaults to the static coefficient (the row's default_follows).
-  t.kinetic_friction = read_number(r, j, path, key("kinetic_friction"), t.friction);
+  // Kinetic friction defaults to the static coefficient (the row's default_follows) when the tire
+  // gives one, else to its material's.
+  t.kinetic_friction = read_number(r, j, path, key("kinetic_friction"),
+                                   j.contains("friction") ? t.friction : t.kinetic_friction);
   t.pressure = read_number(r, j, path, key("pressure"), t.pressure);
   if (const auto it = j.find("compliance"); it != j.end())
-    t.compliance = read_compliance(r, *it, join_path(path, "compliance"));
+    t.compliance = read_compliance(r, *it, join_path(path, "compliance"), t.compliance);
   t.spokes = read_enum(r, j, path, key("spokes"), t.spokes);
   t.material_damping = read_number(r, j, path, key("material_damping"), t.material_damping);
   t.rolling_resistance = read_number(r, j, path, key("rolling_resistance"), t.rolling_resistance);
@@ -179,6 +184,14 @@ TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
   t.drive_acceleration = read_number(r, j, path, key("drive_acceleration"), t.drive_acceleration);
   t.jump_speed = read_number(r, j, path, key("jump_speed"), t.jump_speed);
   t.max_speed = read_number(r, j, path, key("max_speed"), t.max_speed);
+  t.restitution = read_number(r, j, path, key("restitution"), t.restitution);
+  t.inflate_rate = read_number(r, j, path, key("inflate_rate"), t.inflate_rate);
+  t.min_pressure = read_number(r, j, path, key("min_pressure"), t.min_pressure);
+  t.max_pressure = read_number(r, j, path, key("max_pressure"), t.max_pressure);
+  if (t.min_pressure > t.max_pressure)
+    r.fail(join_path(path, "max_pressure"), "must be at least min_pressure (" +
+                                                JsonReader::describe(t.min_pressure) + "), got " +
+                                                JsonReader::describe(t.max_pressure));
   return t;
 }
 

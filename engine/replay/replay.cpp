@@ -69,13 +69,14 @@ bool read_flag(JsonReader& r, const json& j, const std::string& path, const char
 ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, std::uint64_t ticks) {
   ReplayInput in;
   if (!r.object(j, path,
-                {"tick", "steer", "jump", "spawn", "grab", "grab_radius", "drag", "release", "set", "gravity",
-                 "restart"}))
+                {"tick", "steer", "jump", "inflate", "spawn", "grab", "grab_radius", "drag", "release", "set",
+                 "gravity", "restart"}))
     return in;
   bool ok = true;
   // Inputs act before the step of their tick, so the last one that can act is ticks − 1.
   in.tick = read_tick(r, j, path, ticks == 0 ? 0 : ticks - 1, ok);
   if (j.contains("steer")) in.steer = r.number(j, path, "steer", 0.0, {-1.0, 1.0}, "");
+  if (j.contains("inflate")) in.inflate = r.number(j, path, "inflate", 0.0, {-1.0, 1.0}, "");
   in.jump = read_flag(r, j, path, "jump");
   if (j.contains("spawn")) in.spawn = r.vec2(j, path, "spawn", {}, kCoordinate, "m");
   if (j.contains("grab")) in.grab = r.vec2(j, path, "grab", {}, kCoordinate, "m");
@@ -201,7 +202,7 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
     // nothing, and a restart drops the steer given before it (a level starts unsteered). Each is
     // refused rather than left for the last to win.
     constexpr std::size_t kNone = SIZE_MAX;
-    std::size_t tick_steer = kNone, tick_jump = kNone;
+    std::size_t tick_steer = kNone, tick_jump = kNone, tick_inflate = kNone;
     replay.inputs.reserve(it->size());
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string path = join_path("/inputs", i);
@@ -213,6 +214,7 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
       if (i == 0 || in.tick != replay.inputs[i - 1].tick) {
         tick_steer = kNone;
         tick_jump = kNone;
+        tick_inflate = kNone;
       }
       if (in.restart && tick_steer != kNone)
         r.fail(path + "/restart",
@@ -228,8 +230,13 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
         r.fail(path + "/jump", "a second jump on tick " + std::to_string(in.tick) +
                                    " (the first is /inputs/" + std::to_string(tick_jump) +
                                    "/jump): give one jump per tick");
+      if (in.inflate && tick_inflate != kNone)
+        r.fail(path + "/inflate", "a second inflate on tick " + std::to_string(in.tick) +
+                                      " (the first is /inputs/" + std::to_string(tick_inflate) +
+                                      "/inflate): only the last would act; give one inflate per tick");
       if (in.steer) tick_steer = i;
       if (in.jump) tick_jump = i;
+      if (in.inflate) tick_inflate = i;
       // Each spawn builds a tire and each restart the whole level: bounded like a level's tires.
       if (in.spawn && ++spawns == kMaxSpawns + 1)
         r.fail(path + "/spawn",
@@ -311,6 +318,7 @@ std::string replay_to_json(const Replay& replay) {
   for (const ReplayInput& in : replay.inputs) {
     ojson o{{"tick", in.tick}};
     if (in.steer) o["steer"] = *in.steer;
+    if (in.inflate) o["inflate"] = *in.inflate;
     if (in.jump) o["jump"] = true;
     if (in.spawn) o["spawn"] = vec(*in.spawn);
     if (in.grab) o["grab"] = vec(*in.grab);
@@ -340,15 +348,15 @@ std::string replay_to_json(const Replay& replay) {
   return doc.dump(1) + "\n";
 }
 
-void apply_input(const ReplayInput& in, LevelSession& session, const Level& level, double& held_steer,
-                 bool& jump) {
+void apply_input(const ReplayInput& in, LevelSession& session, const Level& level, TickInput& held) {
   if (in.restart) {
     session = std::move(*make_session(level));
-    held_steer = 0.0;
+    held.steer = held.inflate = 0.0;
   }
   World& world = session.world();
-  if (in.steer) held_steer = *in.steer;
-  if (in.jump) jump = true;
+  if (in.steer) held.steer = *in.steer;
+  if (in.inflate) held.inflate = *in.inflate;
+  if (in.jump) held.jump = true;
   if (in.spawn) {
     TireSpec spec;
     spec.position = *in.spawn;
@@ -365,7 +373,7 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
                          const std::function<void(std::uint64_t)>& after_tick) {
   ReplayOutcome out;
   std::unique_ptr<LevelSession> session = make_session(level);
-  double steer = 0.0;
+  TickInput held;
   std::size_t next_input = 0, next_checkpoint = 0, next_box = 0;
   // The boxes in tick order (file order within a tick): each tick looks only at its own, so that
   // 100 000 boxes cost nothing on the ticks they do not name.
@@ -407,10 +415,10 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
   };
   check(0);
   for (std::uint64_t tick = 0; tick < replay.ticks; ++tick) {
-    bool jump = false;
+    held.jump = false;
     while (next_input < replay.inputs.size() && replay.inputs[next_input].tick == tick)
-      apply_input(replay.inputs[next_input++], *session, level, steer, jump);
-    session->step({steer, jump});
+      apply_input(replay.inputs[next_input++], *session, level, held);
+    session->step(held);
     check(tick + 1);
     if (after_tick) after_tick(tick + 1);
   }

@@ -29,6 +29,7 @@ std::size_t dof_of(std::uint32_t particle, std::uint32_t n) {
 struct Outer {
   double xx, xy, yy;
   Outer operator-() const { return {-xx, -xy, -yy}; }
+  Outer operator+(const Outer& o) const { return {xx + o.xx, xy + o.xy, yy + o.yy}; }
 };
 Outer outer(Vec2 n, double s) { return {s * n.x * n.x, s * n.x * n.y, s * n.y * n.y}; }
 
@@ -133,6 +134,13 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
       const double rate = len - length(p.x_prev[c.b] - p.x_prev[c.a]);
       l.force = (len - c.rest_length + gamma * rate) * inv_alpha_tilde;
       l.stiffness = (1.0 + gamma) * inv_alpha_tilde;
+      // The Hessian's other term, force · ∇²C = (force/len)(I − nnᵀ): a stretched link resists
+      // turning as a string under tension does. Gauss–Newton leaves it out, which treats that
+      // stiffness explicitly: a soft tire under a few times its weight, whose spokes hang the hub
+      // under tension, then gained energy every substep at 2 substeps and rang for ever. Kept where
+      // it is positive (tension), dropped under compression, so K stays positive definite
+      // (projected Newton; Teran et al. 2005, "Robust quasistatic finite elements", Sec. 4).
+      l.transverse = std::max(0.0, l.force) / len;
     }
     links_.push_back(l);
   }
@@ -146,7 +154,7 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     const double s = l.stiffness;
     const std::uint32_t ba = block_of(l.a, n), bb = block_of(l.b, n);
     const std::size_t oa = l.dof_a - B * ba, ob = l.dof_b - B * bb;
-    const Outer o = outer(nrm, s);
+    const Outer o = outer(nrm, s) + outer(perp(nrm), l.transverse);
     add_outer(base_diagonal_[ba], oa, oa, o);
     add_outer(base_diagonal_[bb], ob, ob, o);
     if (ba == bb) {

@@ -302,6 +302,53 @@ void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
   for (std::uint32_t i = 0; i < p.size(); ++i) p.v[i] += dv + perp(p.x[i] - m.centroid) * dw;
 }
 
+// The hub's velocity: the mean of the particles' (they all weigh the same).
+Vec2 hub_velocity(const Particles& p) {
+  Vec2 sum;
+  for (const Vec2& v : p.v) sum += v;
+  return sum / static_cast<double>(p.size());
+}
+
+// Restitution (TireSpec::restitution), once the solve has made the substep's velocities: the
+// coefficient of restitution of an impact, e = v_out/v_in along its normal (Newton's experimental
+// law; Müller et al. 2020, "Detailed Rigid Body Simulation with Extended Position Based Dynamics",
+// eq. 34, applies it per contact on the velocity before the solve). A tire's bounce comes from its
+// whole body, not one particle, so it is applied to the hub's motion over the whole landing: v_in is
+// the hub's speed into the surface before the substep it first touched, the normal is that of the
+// landing's summed contact impulses, and in the substep the tire lets go, its hub's speed away along
+// that normal is set to e·v_in (the spin and the shape are left as the impact made them). Only
+// surfaces that take no momentum back count (ground, obstacles, static and kinematic props): a
+// dynamic prop or a tire gets its share through the contacts. `before` is the hub's velocity the
+// substep was predicted with.
+void apply_restitution(Tire& t, const SubstepContext& ctx, Vec2 before) {
+  Landing& l = t.landing;
+  const auto& props = ctx.rigid->props();
+  Vec2 impulse;
+  t.for_each_contact([&](std::uint32_t i) {
+    const ContactRecord& c = t.contacts[i];
+    if (c.active && c.tire < 0 && (c.prop < 0 || !props[static_cast<std::size_t>(c.prop)].is_dynamic()))
+      impulse += c.normal * c.lambda_n;
+  });
+  if (impulse != Vec2{}) {
+    if (!l.touching) {
+      const double approach = -dot(before, impulse / length(impulse));
+      l = Landing{true, approach > ctx.config->restitution_threshold ? approach : 0.0, 0.0, {}};
+    }
+    l.impulse += impulse;
+    l.time += ctx.h;
+    return;
+  }
+  if (!l.touching) return;
+  const Landing landing = l;
+  l = Landing{};
+  if (landing.approach <= 0.0 || landing.time > ctx.config->restitution_time) return;
+  const Vec2 n = landing.impulse / length(landing.impulse);
+  const double away = dot(hub_velocity(t.particles), n);
+  if (away < 0.0) return;  // not leaving it: let go without a push
+  const Vec2 change = n * (t.spec.restitution * landing.approach - away);
+  for (Vec2& v : t.particles.v) v += change;
+}
+
 // Adds this substep's contact impulses and slides to the tick's figures (TickContacts): read only,
 // before the velocity pass (which derives the velocities from the positions and applies friction),
 // while the records still hold what the positions solve found.
@@ -340,6 +387,8 @@ void record_tick_contacts(Tire& t, const SubstepContext& ctx) {
 
 void update_velocities(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
+  const bool bounces = t.spec.restitution > 0.0;
+  const Vec2 before = bounces ? hub_velocity(p) : Vec2{};
   derive_velocities(p, ctx.h);
   std::copy(t.on_tire.begin(), t.on_tire.end(), t.grounded_flags.begin());
   const bool global = ctx.config->method == SolverMethod::global;
@@ -355,6 +404,7 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
                                  ctx.time + ctx.h, ctx.time + ctx.h});
     if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
   });
+  if (bounces) apply_restitution(t, ctx, before);
   t.air_time = t.grounded() ? 0.0 : t.air_time + ctx.h;
   // The global method damps inside its solve (XPBD eq. 26); Gauss–Seidel damps here.
   const bool dashpots = ctx.config->method == SolverMethod::gauss_seidel;
@@ -386,6 +436,13 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
     t.air_time = std::numeric_limits<double>::infinity();  // one jump until the tread lands again
   }
   t.control.jump = false;
+  if (t.control.inflate != 0.0) {  // the target area moves at inflate_rate towards its bounds
+    const TireSpec& s = t.spec;
+    const double pressure = s.pressure + t.control.inflate * s.inflate_rate * config.dt;
+    // A pressure already outside the bounds (a level's or a script's) is not pulled into them.
+    const double low = std::min(s.min_pressure, s.pressure), high = std::max(s.max_pressure, s.pressure);
+    t.spec.pressure = t.area_constraint.pressure = std::clamp(pressure, low, high);
+  }
   t.tick_contacts = TickContacts{};
   t.newton_turn = 0.0;
   t.global_work = {};

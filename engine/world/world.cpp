@@ -54,6 +54,10 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::tire_drive_acceleration: s.drive_acceleration = value; return true;
     case ParamId::tire_jump_speed: s.jump_speed = value; return true;
     case ParamId::tire_max_speed: s.max_speed = value; return true;
+    case ParamId::tire_restitution: s.restitution = value; return true;
+    case ParamId::tire_inflate_rate: s.inflate_rate = value; return true;
+    case ParamId::tire_min_pressure: s.min_pressure = value; return true;
+    case ParamId::tire_max_pressure: s.max_pressure = value; return true;
     case ParamId::tire_mass: t.set_mass(value); return true;
     case ParamId::tire_mass_scale: t.set_mass(t.spawn_mass * value); return true;
     case ParamId::tire_compliance_outer: c.outer = value; break;
@@ -74,6 +78,7 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::solver_jump_grace:
     case ParamId::solver_divergence_area:
     case ParamId::solver_divergence_speed:
+    case ParamId::solver_restitution_threshold:
     case ParamId::gravity_x:
     case ParamId::gravity_y:
     case ParamId::budget_tires:
@@ -110,6 +115,10 @@ std::optional<double> tire_parameter(const Tire& t, ParamId id) {
     case ParamId::tire_drive_acceleration: return s.drive_acceleration;
     case ParamId::tire_jump_speed: return s.jump_speed;
     case ParamId::tire_max_speed: return s.max_speed;
+    case ParamId::tire_restitution: return s.restitution;
+    case ParamId::tire_inflate_rate: return s.inflate_rate;
+    case ParamId::tire_min_pressure: return s.min_pressure;
+    case ParamId::tire_max_pressure: return s.max_pressure;
     default: return std::nullopt;
   }
 }
@@ -150,6 +159,7 @@ std::optional<double> World::parameter(std::string_view key) const {
     case ParamId::solver_jump_grace: return config_.jump_grace;
     case ParamId::solver_divergence_area: return config_.divergence_area;
     case ParamId::solver_divergence_speed: return config_.divergence_speed;
+    case ParamId::solver_restitution_threshold: return config_.restitution_threshold;
     case ParamId::gravity_x: return gravity_.x;
     case ParamId::gravity_y: return gravity_.y;
     case ParamId::budget_tires: return budgets_.tires;
@@ -296,7 +306,8 @@ void World::step(const TickInput& input) {
     if (Tire* p = find_tire(*player_)) {
       p->control.steer = input.steer;
       p->control.jump = input.jump;
-      if (input.steer != 0.0 || input.jump) {
+      p->control.inflate = input.inflate;
+      if (input.steer != 0.0 || input.jump || input.inflate != 0.0) {
         held = index_of(*p);
         sleep_.wake(tires_, *held, rigid_);
       }

@@ -165,16 +165,15 @@ TEST_CASE("the last run of a recording replays on its own to the recorded end", 
   const auto level = level_01();
   tire::ReplayRecorder recorder("01-first-roll.json", "sha");
   std::unique_ptr<tire::LevelSession> session = tire::make_session(*level);
-  double steer = 0.0;
-  bool jump = false;
+  tire::TickInput held;
   const auto play = [&](const tire::ReplayInput& in) {
     recorder.input(in);
-    tire::apply_input(in, *session, *level, steer, jump);
+    tire::apply_input(in, *session, *level, held);
   };
   tire::ReplayInput left;
   left.steer = -1.0;
   play(left);
-  for (int i = 0; i < 50; ++i) session->step({steer, false}), recorder.after_step(*session);
+  for (int i = 0; i < 50; ++i) session->step(held), recorder.after_step(*session);
   tire::ReplayInput restart;
   restart.tick = 50;
   restart.restart = true;
@@ -183,7 +182,7 @@ TEST_CASE("the last run of a recording replays on its own to the recorded end", 
   right.tick = 50;
   right.steer = 1.0;
   play(right);
-  for (int i = 0; i < 100; ++i) session->step({steer, false}), recorder.after_step(*session);
+  for (int i = 0; i < 100; ++i) session->step(held), recorder.after_step(*session);
   const tire::Replay whole = recorder.finish(*session);
   const tire::Replay run = last_attempt(whole);
   CHECK(run.ticks == 100);

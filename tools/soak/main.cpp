@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
   std::uint64_t spawns = 0, removals = 0, lost = 0, grabs = 0, jumps = 0, steers = 0;
   std::uint64_t nonfinite = 0, warnings = 0, budget_notes = 0, over_budget = 0;
   std::size_t max_tires_seen = 0;
-  double held_steer = 0.0;
+  tire::TickInput held;
   int grab_ticks_left = 0;
   tire::Vec2 drag_target;
 
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
-    bool jump = false;
+    held.jump = false;
     // Random inputs, through the same apply_input the game and replays use.
     tire::ReplayInput in;
     in.tick = tick;
@@ -148,6 +148,7 @@ int main(int argc, char** argv) {
     if (unit(rng) < 1.0 / 90.0)
       in.steer = std::round(unit(rng) * 4.0 - 2.0) / 2.0, any = true, ++steers;  // -1..1 in halves
     if (unit(rng) < 1.0 / 150.0) in.jump = true, any = true, ++jumps;
+    if (unit(rng) < 1.0 / 120.0) in.inflate = std::round(unit(rng) * 2.0 - 1.0), any = true;  // -1, 0 or 1
     if (unit(rng) < 1.0 / 30.0) in.spawn = random_point(), any = true;
     if (grab_ticks_left == 0 && unit(rng) < 1.0 / 240.0 && !world->tires().empty()) {
       // Press on a random tire's tread, then drag it about for up to two seconds.
@@ -176,13 +177,13 @@ int main(int argc, char** argv) {
         spawned.pop_front();
       }
       const std::size_t before = world->tires().size();
-      tire::apply_input(in, *session, level, held_steer, jump);
+      tire::apply_input(in, *session, level, held);
       if (world->tires().size() > before) {
         ++spawns;
         spawned.push_back(world->tires().back().id);
       }
     }
-    session->step({held_steer, jump});
+    session->step(held);
     // Tires thrown over the level's walls fall for ever: like the game, remove spawned ones once
     // they are well below the level (they count as lost).
     for (auto it = spawned.begin(); it != spawned.end();) {

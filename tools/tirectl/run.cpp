@@ -177,18 +177,18 @@ int run(const RunOptions& options) {
 
   std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
   tire_tools::TickProgress progress("run", static_cast<std::uint64_t>(options.ticks), options.progress);
-  double steer = 0.0;
+  tire::TickInput held;
   std::size_t next = 0;
   SubstepTally tally;
   EnergyWatch energy;
   energy.start(session->world());
   for (long long tick = 0; tick < options.ticks; ++tick) {
-    bool jump = false;
+    held.jump = false;
     while (next < inputs.size() && inputs[next].tick == static_cast<std::uint64_t>(tick)) {
       if (recorder) recorder->input(inputs[next]);
-      tire::apply_input(inputs[next++], *session, *load.level, steer, jump);
+      tire::apply_input(inputs[next++], *session, *load.level, held);
     }
-    session->step({steer, jump});
+    session->step(held);
     if (recorder) recorder->after_step(*session);
     tire::World& world = session->world();
     tally.add(world);

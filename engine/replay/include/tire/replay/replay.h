@@ -29,6 +29,7 @@ struct ReplayInput {
   std::uint64_t tick = 0;
   std::optional<double> steer;  // [-1, 1], holds
   bool jump = false;
+  std::optional<double> inflate;       // [-1, 1], holds: +1 inflates the player, −1 deflates it
   std::optional<Vec2> spawn;           // a default tire at this point (a mouse click)
   std::optional<Vec2> grab;            // grab the tire at this point (mouse press)
   double grab_radius = kGrabRadius;    // how near a tread particle the press must be (m)
@@ -104,10 +105,10 @@ struct ReplayLevel {
 };
 ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Replay& replay);
 
-// Plays inputs into a level session. `held_steer` carries the steer between ticks. A restart
-// rebuilds the session from `level`.
-void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, double& held_steer,
-                 bool& jump);
+// Plays inputs into a level session. `held` is the tick's player input: its steer and inflate
+// carry over between ticks, its jump is for this tick only (the caller clears it after the step).
+// A restart rebuilds the session from `level`.
+void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, TickInput& held);
 
 // What a replay run came to.
 struct ReplayOutcome {

@@ -198,6 +198,7 @@ class GlobalSolver {
     Vec2 normal;
     double force = 0.0;
     double stiffness = 0.0;
+    double transverse = 0.0;  // geometric stiffness across the link, max(0, force)/length
   };
   static constexpr std::size_t kMaxLinksPerSegment = 8;  // a tire has 3 (radial spokes) or 5 (cross)
   std::vector<Link> links_;

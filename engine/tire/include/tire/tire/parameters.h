@@ -47,6 +47,7 @@ enum class ParamId : std::uint8_t {
   solver_jump_grace,
   solver_divergence_area,
   solver_divergence_speed,
+  solver_restitution_threshold,
   gravity_x,
   gravity_y,
   tire_angle,
@@ -68,6 +69,10 @@ enum class ParamId : std::uint8_t {
   tire_drive_acceleration,
   tire_jump_speed,
   tire_max_speed,
+  tire_restitution,
+  tire_inflate_rate,
+  tire_min_pressure,
+  tire_max_pressure,
   budget_tires,
   budget_particles,
   budget_props,
@@ -127,7 +132,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 37>{{
+  return std::array<Parameter, 42>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -147,6 +152,9 @@ inline constexpr std::array kParameters = [] {
        "A tire whose area passes this many times its rest area (or minus it) has diverged and is reset, in {range}."},
       {P::solver_divergence_speed, "solver.divergence_speed", "m/s", {10, 1e6}, false, kSolver.divergence_speed,
        kLevelOnly, "A tire with a particle faster than this (m/s) has diverged and is reset, in {range}."},
+      {P::solver_restitution_threshold, "solver.restitution_threshold", "m/s", {0, 100}, false,
+       kSolver.restitution_threshold, kLevelOnly,
+       "A tire bounces by its restitution only off a landing faster than this (m/s), in {range}."},
       // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
       // each component in this range too.
       {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,
@@ -198,6 +206,14 @@ inline constexpr std::array kParameters = [] {
        "Upward speed a jump adds when grounded (m/s), in {range}."},
       {P::tire_max_speed, "tires.max_speed", "m/s", {0, 1000, true}, false, kTire.max_speed, kNotPanel,
        "Cap on the hub's horizontal speed and on the steered tread speed (m/s), in {range}."},
+      {P::tire_restitution, "tires.restitution", "", {0, 1}, false, kTire.restitution, kEverywhere,
+       "A landing tire leaves the surface at this fraction of its landing speed, in {range}; 0 leaves it to the material."},
+      {P::tire_inflate_rate, "tires.inflate_rate", "(of the rest area per second)", {0, 10}, false,
+       kTire.inflate_rate, kNotPanel, "How fast inflating or deflating moves the pressure (per second), in {range}."},
+      {P::tire_min_pressure, "tires.min_pressure", "(fraction of the rest area)", {0.1, 4}, false,
+       kTire.min_pressure, kNotPanel, "Deflating stops at this pressure, in {range}."},
+      {P::tire_max_pressure, "tires.max_pressure", "(fraction of the rest area)", {0.1, 4}, false,
+       kTire.max_pressure, kNotPanel, "Inflating stops at this pressure, in {range}."},
       // Run-time budgets (run_budgets.h): the default is the most; a level may only lower one.
       {P::budget_tires, "budgets.tires", "", {1, kBudgets.tires}, true, kBudgets.tires, kLevelOnly,
        "Tires alive at once, the level's own with those added while it runs, in {range}."},
@@ -217,6 +233,61 @@ inline constexpr std::array kParameters = [] {
   }};
   // clang-format on
 }();
+
+// Material presets: named starting points for a tire's material. A level's tire names one
+// ("material": "balloon"), as do the tuning panel and the editor; any key the tire also gives
+// overrides the preset's. "standard" is TireSpec{}'s own. docs/soft-tire.md has what each measures.
+// Each is stable loaded to five times its weight at 1 and 2 substeps (tests/test_materials.cpp).
+struct Material {
+  const char* name;
+  const char* description;
+  TireCompliance compliance;
+  double material_damping;
+  double friction;
+  double kinetic_friction;
+  double rolling_resistance;
+  double restitution;
+
+  constexpr void apply_to(TireSpec& t) const {
+    t.compliance = compliance;
+    t.material_damping = material_damping;
+    t.friction = friction;
+    t.kinetic_friction = kinetic_friction;
+    t.rolling_resistance = rolling_resistance;
+    t.restitution = restitution;
+  }
+};
+
+inline constexpr std::array kMaterials = [] {
+  using parameter_table::kTire;
+  // One preset a line or two, as a table reads.
+  // clang-format off
+  return std::array<Material, 7>{{
+      {"standard", "the default: a stiff tire that hardly deforms (it sags 0.1 mm)",
+       kTire.compliance, kTire.material_damping, kTire.friction, kTire.kinetic_friction, kTire.rolling_resistance,
+       kTire.restitution},
+      {"soft", "a soft road tire: sags 4 % of its radius on a flat patch, squashes a fifth landing",
+       {1e-5, 1e-6, 3e-4, 3e-3}, 5e-3, 0.9, 0.9, 0.01, 0.0},
+      {"slick", "a racing slick: a stiffer sidewall than soft, more grip, rolls easily",
+       {1e-5, 1e-6, 1e-4, 1e-3}, 5e-3, 1.2, 1.0, 0.006, 0.0},
+      {"balloon", "a balloon tire: very soft, squashes flat on landing and under low gaps",
+       {1e-5, 1e-6, 1e-3, 1e-2}, 1e-2, 0.8, 0.7, 0.02, 0.0},
+      {"offroad", "a knobbly off-road tire: soft, grips hard, rolls heavily",
+       {1e-5, 1e-6, 3e-4, 3e-3}, 8e-3, 1.4, 1.1, 0.03, 0.0},
+      {"rubber_ball", "a rubber ball: firm and bouncy, rebounds to 70 % of its drop",
+       {1e-5, 1e-6, 1e-4, 1e-3}, 1e-3, 0.8, 0.7, 0.005, 0.84},
+      {"cart_wheel", "a hard cart wheel: hardly deforms, rolls as a polygon, slides easily",
+       {1e-6, 1e-7, 1e-6, 1e-5}, 5e-3, 0.6, 0.5, 0.02, 0.0},
+  }};
+  // clang-format on
+}();
+
+// The preset a name names, or nullptr.
+constexpr const Material* find_material(std::string_view name) {
+  for (const Material& m : kMaterials)
+    if (name == m.name) return &m;
+  return nullptr;
+}
 
 // The whole table, in order.
 constexpr std::span<const Parameter> parameters() { return kParameters; }

@@ -39,6 +39,12 @@ struct SolverConfig {
   // ticks had no ground contact (Gauss–Seidel 8 × 1, soft from its substeps: none), and a jump
   // asked for in those ticks was lost. 0.1 s is six ticks.
   double jump_grace = 0.1;
+  // Restitution (TireSpec::restitution) is owed for a landing faster than this (m/s), as Box2D
+  // treats slower impacts as inelastic (b2_velocityThreshold), and only to a tire that leaves the
+  // surface within restitution_time (s) of touching it: one that rolls on and later drives off an
+  // edge is not bounced by a landing long past.
+  double restitution_threshold = 1.0;
+  double restitution_time = 0.5;
   // A tire with a coordinate beyond this (m) or any NaN/Inf is reset to its spawn state, and so is
   // one blown up or turned inside out (its area more than divergence_area times its rest area, or
   // below minus it) or one with a particle faster than divergence_speed (m/s): no contact or

@@ -34,8 +34,18 @@ using TireId = std::uint32_t;
 
 // What drives a tire during one tick.
 struct TireControl {
-  double steer = 0.0;  // [-1, 1]; +1 drives towards +x
-  bool jump = false;   // a jump request; consumed at the start of the tick
+  double steer = 0.0;    // [-1, 1]; +1 drives towards +x
+  bool jump = false;     // a jump request; consumed at the start of the tick
+  double inflate = 0.0;  // [-1, 1]; moves the pressure at the start of each tick (TireSpec::inflate_rate)
+};
+
+// A landing, for restitution (TireSpec::restitution; tire_solver.cpp): from the first substep
+// touching a surface to the first that touches none.
+struct Landing {
+  bool touching = false;
+  double approach = 0.0;  // the hub's speed into the surface when it touched (m/s); 0: no bounce owed
+  double time = 0.0;      // how long it has touched (s)
+  Vec2 impulse;           // Σ of its contacts' normal impulses (its direction is the bounce's)
 };
 
 // A particle that may touch an obstacle or a prop during this substep (narrow-phase candidate),
@@ -229,6 +239,7 @@ struct Tire {
   double rim_reach = 0.0;
   ArrayView<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
   TireControl control;
+  Landing landing;
   TickContacts tick_contacts;  // the last tick's, for listeners (sound); reset by begin_tick
   // The global method: the most one of its solves turned one of its constraints this tick (rad), for
   // the refinement (SolverConfig::refine_turn); reset by begin_tick.

@@ -10,11 +10,13 @@ namespace tire {
 // inner i – outer i±1, which gives the sidewall shear stiffness.
 enum class SpokePattern { radial, cross };
 
+// The default is a stiff tire (it sags 0.1 mm); the "soft" material preset (parameters.h) is the
+// soft tire of docs/soft-tire.md.
 struct TireCompliance {
   double outer = 1e-6;     // outer ring (tread) distance constraints (m/N)
   double inner = 1e-7;     // inner ring (rim) distance constraints (m/N)
-  double spoke = 1e-6;     // spokes (m/N)
-  double pressure = 1e-5;  // area constraint (m⁴/J in 2D)
+  double spoke = 1e-6;     // spokes, the sidewall (m/N)
+  double pressure = 1e-5;  // area constraint, the air (m⁴/J in 2D)
 };
 
 struct TireSpec {
@@ -38,10 +40,20 @@ struct TireSpec {
   // Rolling resistance coefficient C_rr: a grounded tire feels a moment C_rr·N·R against its spin
   // (N the contact normal force), as in vehicle dynamics (SAE J2452); car tires are near 0.01.
   double rolling_resistance = 0.01;
+  // Restitution e: a tire that lands at a normal speed v (over restitution_threshold) leaves that
+  // surface at e·v, whatever its elasticity and the substeps made of the impact (the global step
+  // damps a stiff tire's ringing as backward Euler does, more at fewer substeps). 0 leaves the
+  // rebound to the tire's elasticity and material_damping.
+  double restitution = 0.0;
   bool player = false;
   double drive_acceleration = 12.0;  // tangential acceleration of the tread at full steer (m/s²)
   double jump_speed = 5.0;           // upward speed a jump adds (m/s)
   double max_speed = 15.0;           // cap on the hub's horizontal speed and the tread's drive speed (m/s)
+  // Inflating and deflating (TickInput::inflate): the pressure moves at inflate_rate (per second)
+  // between min_pressure and max_pressure.
+  double inflate_rate = 0.6;
+  double min_pressure = 0.6;
+  double max_pressure = 1.3;
 };
 
 }  // namespace tire

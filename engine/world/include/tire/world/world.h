@@ -31,6 +31,7 @@ struct SubstepContext;  // tire/tire/tire_solver.h
 struct TickInput {
   double steer = 0.0;  // [-1, 1]
   bool jump = false;
+  double inflate = 0.0;  // [-1, 1]: +1 inflates the player at its inflate_rate, −1 deflates it
 };
 
 // How World::step orders the phases of a substep over the tires. Both run the same per-tire
