@@ -118,9 +118,7 @@ int main(int argc, char** argv) {
   std::printf(
       "tire_fuzz_session: %zu files and %ld mutations (seed %llu): %llu levels, %llu skipped as too costly, "
       "%llu played for %llu ticks in all (%llu restarts, %llu tires and props spawned, %llu ticks with a "
-      "message "
-      "on screen, %llu won, %llu lost); "
-      "peak RSS %ld MB; %.1f s\n",
+      "message on screen, %llu won, %llu lost); peak RSS %ld MB; %.1f s\n",
       corpus.size(), mutations, static_cast<unsigned long long>(seed),
       static_cast<unsigned long long>(s.levels), static_cast<unsigned long long>(s.skipped),
       static_cast<unsigned long long>(s.runs), static_cast<unsigned long long>(s.ticks),
