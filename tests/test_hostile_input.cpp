@@ -12,6 +12,7 @@
 #include <string>
 
 #include "../fuzz/fuzz_common.h"
+#include "../fuzz/fuzz_session.h"
 #include "error_messages.h"
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
@@ -394,7 +395,7 @@ TEST_CASE("hostile replay: 100 000 centroid boxes cost nothing on the ticks they
 TEST_CASE("fuzz regressions: every input that once broke a fuzz target now passes it",
           "[unit][hostile][fuzz]") {
   std::size_t files = 0;
-  for (const std::string target : {"level", "replay", "simulate"}) {
+  for (const std::string target : {"level", "replay", "simulate", "session"}) {
     const std::filesystem::path dir = source_path("tests/fuzz-regressions/" + target);
     if (!std::filesystem::is_directory(dir)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -408,8 +409,10 @@ TEST_CASE("fuzz regressions: every input that once broke a fuzz target now passe
         fuzz::fuzz_level(*text);
       else if (target == "replay")
         fuzz::fuzz_replay(*text);
-      else
+      else if (target == "simulate")
         fuzz::fuzz_simulate(*text);
+      else
+        fuzz::fuzz_session(*text);
       // ".invalid.json" files are refused by tirectl; a level's by the loader, a replay's by the
       // loader or, when its own JSON is fine, because of the level it names.
       const bool invalid = entry.path().string().find(".invalid.json") != std::string::npos;

@@ -197,19 +197,26 @@ tirectl_test("hostile: a replay whose level is a device is refused" 2
 tirectl_test("hostile: run --input with a hostile replay is refused" 2
   ARGS run ${LEVELS}/01-first-roll.json --ticks 10 --input ${HOSTILE}/replay/spawn-flood.invalid.json
   STDERR "spawn-flood.invalid.json: /inputs/10000/spawn: a replay may spawn at most 10000 tires; this is one more")
-file(GLOB fuzz_regression_files ${HOSTILE}/level/*.json ${HOSTILE}/simulate/*.json ${HOSTILE}/replay/*.json)
+file(GLOB fuzz_regression_files ${HOSTILE}/level/*.json ${HOSTILE}/simulate/*.json ${HOSTILE}/replay/*.json
+  ${HOSTILE}/session/*.json)
 foreach(file ${fuzz_regression_files})
   get_filename_component(name ${file} NAME)
   get_filename_component(dir ${file} DIRECTORY)
   get_filename_component(target ${dir} NAME)
   set(command validate)
+  set(options)
   if(target STREQUAL "replay")
     set(command replay)
+  elseif(target STREQUAL "session")
+    # Played as fuzz_session plays it, for 600 ticks within the budgets it lowers (fuzz_session.h).
+    set(command run)
+    set(options --ticks 600 --steer 1 --set budgets.tires=6 --set budgets.particles=336 --set budgets.props=48
+      --set budgets.spawns_per_tick=4)
   endif()
   if(name MATCHES "\\.invalid\\.json$")
-    tirectl_test("fuzz regression ${target}/${name}" 2 ARGS ${command} ${file} STDERR "${name}: ")
+    tirectl_test("fuzz regression ${target}/${name}" 2 ARGS ${command} ${file} ${options} STDERR "${name}: ")
   else()
-    tirectl_test("fuzz regression ${target}/${name}" 0 ARGS ${command} ${file})
+    tirectl_test("fuzz regression ${target}/${name}" 0 ARGS ${command} ${file} ${options})
   endif()
 endforeach()
 
