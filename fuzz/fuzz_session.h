@@ -152,13 +152,14 @@ inline RunBudgets lowered(const RunBudgets& level, const RunBudgets& most) {
           .firings_per_tick = std::min(level.firings_per_tick, most.firings_per_tick)};
 }
 
-// The player's input for one tick, as a replay would give it: steer changes, jumps, and now and
+// The player's input for one tick, as a replay would give it: steer changes, jumps, inflating, and now and
 // then a click that spawns a tire, a grab and drag, a live tuning, a gravity change or a restart.
 inline ReplayInput input_for(std::uint64_t tick, Stream& s, const World& world, bool& dragging) {
   ReplayInput in;
   in.tick = tick;
   if (s.one_in(40)) in.steer = static_cast<double>(s.next() % 5) * 0.5 - 1.0;
   if (s.one_in(45)) in.jump = true;
+  if (s.one_in(60)) in.inflate = static_cast<double>(s.next() % 3) - 1.0;
   if (s.one_in(90)) in.spawn = Vec2{s.uniform(-12.0, 12.0), s.uniform(0.5, 8.0)};
   if (dragging) {
     in.drag = Vec2{s.uniform(-12.0, 12.0), s.uniform(0.0, 8.0)};
@@ -272,12 +273,12 @@ inline void fuzz_session(const std::string& input, const SessionBudget& budget =
   d::Added since = d::own(level);
   std::array<bool, kBudgetCount> reached{};
   std::array<int, kBudgetCount> reports{};  // warnings naming each budget, in this world
-  double steer = 0.0;
+  TickInput held;
   bool dragging = false;
   for (int tick = 0; tick < budget.ticks; ++tick) {
     const ReplayInput in = d::input_for(static_cast<std::uint64_t>(tick), stream, *world, dragging);
-    bool jump = false;
-    apply_input(in, *session, level, steer, jump);
+    held.jump = false;
+    apply_input(in, *session, level, held);
     if (in.restart) {
       require(session->state_hash() == start, "a restart gives back the state the level started in",
               level.name);
@@ -294,7 +295,7 @@ inline void fuzz_session(const std::string& input, const SessionBudget& budget =
             "no tick adds more tires and props than budgets.spawns_per_tick", level.name);
     stats.spawned += added;
 
-    session->step({steer, jump});
+    session->step(held);
     d::check_tick(*session, level.name);
     (void)session->state_hash();
     for (const std::string& w : world->warnings())
