@@ -272,7 +272,7 @@ TEST_CASE("global: a tire rolling, jumping and landing keeps the level's substep
 
 TEST_CASE("global: a solve that turns a constraint past refine_turn doubles the next tick's substeps",
           "[unit][global][refine]") {
-  // A free tire (no gravity, nothing to touch) with one tread particle pulled 0.3 m towards the hub:
+  // A free tire (no gravity, nothing to touch) with one tread particle pulled 0.4 m towards the hub:
   // the solve that pulls it back turns the tread edges next to it by about a radian. The next ticks
   // take 4, then 8 substeps (max_refine 4: up to 8), and once it is round again and only rings, 2.
   const int max_refine = GENERATE(1, 4);
@@ -281,7 +281,7 @@ TEST_CASE("global: a solve that turns a constraint past refine_turn doubles the 
   World world(config, {0.0, 0.0});
   const TireId id = world.add_tire(tire_at({0.0, 0.0}));
   Tire& t = *world.find_tire(id);
-  t.particles.x[0] = t.particles.x[0] * ((0.5 - 0.3) / 0.5);
+  t.particles.x[0] = t.particles.x[0] * ((0.5 - 0.4) / 0.5);
   t.particles.x_prev[0] = t.particles.x[0];
   std::vector<int> substeps;
   for (int tick = 0; tick < 120; ++tick) {

@@ -418,5 +418,5 @@ TEST_CASE("level keys: choice keys take exactly the table's choices", "[unit][le
       ++checked;
     }
   }
-  CHECK(checked == 5);  // method, spokes, shape, type, mode
+  CHECK(checked == 6);  // method, material, spokes, shape, type, mode
 }

@@ -149,9 +149,11 @@ TEST_CASE("every script problem is reported in one pass with its exact path", "[
       "must be one of \"solver.substeps\", \"solver.iterations\", \"solver.damping\", \"player.friction\", "
       "\"player.kinetic_friction\", \"player.pressure\", \"player.material_damping\", "
       "\"player.rolling_resistance\", \"player.drive_acceleration\", \"player.jump_speed\", "
-      "\"player.max_speed\", \"tires.friction\", \"tires.kinetic_friction\", \"tires.pressure\", "
+      "\"player.max_speed\", \"player.restitution\", \"player.inflate_rate\", \"player.min_pressure\", "
+      "\"player.max_pressure\", \"tires.friction\", \"tires.kinetic_friction\", \"tires.pressure\", "
       "\"tires.material_damping\", \"tires.rolling_resistance\", \"tires.drive_acceleration\", "
-      "\"tires.jump_speed\", \"tires.max_speed\", got \"solver.dt\""));
+      "\"tires.jump_speed\", \"tires.max_speed\", \"tires.restitution\", \"tires.inflate_rate\", "
+      "\"tires.min_pressure\", \"tires.max_pressure\", got \"solver.dt\""));
   CHECK(has(r.issues, "/triggers/3/do/1/value",
             "must be a number in [0.1, 4] (fraction of the rest area), got 9"));
   CHECK(has(r.issues, "/triggers/4/when/counter",
@@ -203,9 +205,11 @@ TEST_CASE("a script's shape errors are reported, not crashed on", "[unit][script
       "must be one of \"solver.substeps\", \"solver.iterations\", \"solver.damping\", "
       "\"player.friction\", \"player.kinetic_friction\", \"player.pressure\", \"player.material_damping\", "
       "\"player.rolling_resistance\", \"player.drive_acceleration\", \"player.jump_speed\", "
-      "\"player.max_speed\", \"tires.friction\", \"tires.kinetic_friction\", \"tires.pressure\", "
+      "\"player.max_speed\", \"player.restitution\", \"player.inflate_rate\", \"player.min_pressure\", "
+      "\"player.max_pressure\", \"tires.friction\", \"tires.kinetic_friction\", \"tires.pressure\", "
       "\"tires.material_damping\", \"tires.rolling_resistance\", \"tires.drive_acceleration\", "
-      "\"tires.jump_speed\", \"tires.max_speed\", got \"player.fricton\"; did you mean "
+      "\"tires.jump_speed\", \"tires.max_speed\", \"tires.restitution\", \"tires.inflate_rate\", "
+      "\"tires.min_pressure\", \"tires.max_pressure\", got \"player.fricton\"; did you mean "
       "\"player.friction\"?"));
   CHECK(has(read(R"({"triggers": [{"when": {"type": "start"},
                                    "do": [{"action": "set", "key": "solver.substeps", "value": 2.5}]}]})")

@@ -194,7 +194,7 @@ TEST_CASE("sleep: what wakes a sleeping tire", "[unit][sleep]") {
 }
 
 TEST_CASE("sleep: the same state hash for any thread count", "[unit][sleep]") {
-  // The default method: the pile of 35 rests and sleeps within the 10 s (docs/at-rest.md).
+  // The default method: the pile of 35 rests and sleeps within the 15 s (docs/at-rest.md).
   const auto pile = [](unsigned threads) {
     World world(SolverConfig{}, {0, -9.81});
     world.set_threads(threads);
@@ -204,7 +204,7 @@ TEST_CASE("sleep: the same state hash for any thread count", "[unit][sleep]") {
     // 35 tires (parallel from 32), five rows of seven, each row shifted by a quarter.
     for (int k = 0; k < 35; ++k)
       world.add_tire(tire_at({-3.3 + 1.1 * (k % 7) + 0.25 * (k / 7 % 2), 0.5 + 1.2 * (k / 7)}));
-    run(world, 600);
+    run(world, 900);
     return world;
   };
   const World one = pile(1), two = pile(2);

@@ -84,8 +84,12 @@ TEST_CASE("a NaN never spreads: the tire is reset and a warning raised", "[unit]
 TEST_CASE("a tire blown up by a kinematic box spinning at 1000 rad/s is seen, reported and reset",
           "[unit][shape]") {
   // The hostile audit's case (issue 34): the tire reached 1180 times its area while every
-  // coordinate stayed finite and near, and nothing was reported.
-  World world = flat_world(tire_at({0, 2.6}));
+  // coordinate stayed finite and near, and nothing was reported. Since the global solve keeps a
+  // stretched link's transverse stiffness the tire reaches about 10 times its area, so the guard is
+  // set at 5 here.
+  SolverConfig config;
+  config.divergence_area = 5.0;
+  World world = flat_world(tire_at({0, 2.6}), config);
   PropSpec box;
   box.type = PropType::kinematic_body;
   box.size = {4, 0.25};

@@ -202,8 +202,9 @@ std::vector<LevelKey> tire_keys() {
   return table({
       Key("position", T::vec2, "where the hub starts; each in {range}").range(kCoordinate, "m").required(),
       Key("material", T::choice,
-          "a preset of compliance, material_damping, friction, kinetic_friction, rolling_resistance and "
-          "restitution, as a starting point: the tire's own keys override it")
+          "a preset of compliance, pressure, material_damping, friction, kinetic_friction, "
+          "rolling_resistance "
+          "and restitution, as a starting point: the tire's own keys override it")
           .choices(materials)
           .by_default(materials.front()),
       Key("velocity", T::vec2, "each in {range}").range(kVelocity, "m/s").by_default(vec2(tire.velocity)),

@@ -221,6 +221,17 @@ SchemaGeneration generate_level_schema(const std::string& current) {
        "/$defs/action_set_gravity/properties")["description"] =
         described("New gravity [x, y] (m/s²), each in {range}.", g.range);
     generate_set_action(at(defs, "action_set", "/$defs"));
+    // A tire's material: the presets, in the table's order, the first the default.
+    ojson materials = ojson::array();
+    for (const Material& m : kMaterials) materials.push_back(m.name);
+    at(at(defs, "tire", "/$defs"), "properties", "/$defs/tire")["material"] =
+        ojson{{"type", "string"},
+              {"enum", materials},
+              {"default", kMaterials.front().name},
+              {"description",
+               "A preset of compliance, pressure, material_damping, friction, kinetic_friction, "
+               "rolling_resistance and "
+               "restitution (levels/README.md, Materials): a starting point the tire's own keys override."}};
     out.text = format_json(doc);
   } catch (const std::exception& e) {
     out.error = e.what();

@@ -247,6 +247,7 @@ struct Material {
   double kinetic_friction;
   double rolling_resistance;
   double restitution;
+  double pressure;  // the air's target area ratio at rest: above 1 it carries load (tire_spec.h)
 
   constexpr void apply_to(TireSpec& t) const {
     t.compliance = compliance;
@@ -255,6 +256,7 @@ struct Material {
     t.kinetic_friction = kinetic_friction;
     t.rolling_resistance = rolling_resistance;
     t.restitution = restitution;
+    t.pressure = pressure;
   }
 };
 
@@ -265,19 +267,19 @@ inline constexpr std::array kMaterials = [] {
   return std::array<Material, 7>{{
       {"standard", "the default: a stiff tire that hardly deforms (it sags 0.1 mm)",
        kTire.compliance, kTire.material_damping, kTire.friction, kTire.kinetic_friction, kTire.rolling_resistance,
-       kTire.restitution},
-      {"soft", "a soft road tire: sags 4 % of its radius on a flat patch, squashes a fifth landing",
-       {1e-5, 1e-6, 3e-4, 3e-3}, 5e-3, 0.9, 0.9, 0.01, 0.0},
-      {"slick", "a racing slick: a stiffer sidewall than soft, more grip, rolls easily",
-       {1e-5, 1e-6, 1e-4, 1e-3}, 5e-3, 1.2, 1.0, 0.006, 0.0},
-      {"balloon", "a balloon tire: very soft, squashes flat on landing and under low gaps",
-       {1e-5, 1e-6, 1e-3, 1e-2}, 1e-2, 0.8, 0.7, 0.02, 0.0},
+       kTire.restitution, kTire.pressure},
+      {"soft", "a soft road tire on its air: sags 6 % of its radius, 8 % deflated, 3 % inflated",
+       {1e-5, 1e-6, 1e-3, 3e-4}, 5e-3, 0.9, 0.9, 0.01, 0.0, 1.1},
+      {"slick", "a racing slick: a stiffer sidewall and more air than soft, more grip, rolls easily",
+       {1e-5, 1e-6, 3e-4, 3e-4}, 5e-3, 1.2, 1.0, 0.006, 0.0, 1.15},
+      {"balloon", "a balloon tire: a soft sidewall on soft air, sags 7 % and squashes a third landing",
+       {1e-5, 1e-6, 1e-3, 1e-3}, 1e-2, 0.8, 0.7, 0.02, 0.0, 1.05},
       {"offroad", "a knobbly off-road tire: soft, grips hard, rolls heavily",
-       {1e-5, 1e-6, 3e-4, 3e-3}, 8e-3, 1.4, 1.1, 0.03, 0.0},
+       {1e-5, 1e-6, 1e-3, 3e-4}, 8e-3, 1.4, 1.1, 0.03, 0.0, 1.1},
       {"rubber_ball", "a rubber ball: firm and bouncy, rebounds to 70 % of its drop",
-       {1e-5, 1e-6, 1e-4, 1e-3}, 1e-3, 0.8, 0.7, 0.005, 0.84},
+       {1e-5, 1e-6, 1e-4, 1e-3}, 1e-3, 0.8, 0.7, 0.005, 0.84, 1.0},
       {"cart_wheel", "a hard cart wheel: hardly deforms, rolls as a polygon, slides easily",
-       {1e-6, 1e-7, 1e-6, 1e-5}, 5e-3, 0.6, 0.5, 0.02, 0.0},
+       {1e-6, 1e-7, 1e-6, 1e-5}, 5e-3, 0.6, 0.5, 0.02, 0.0, 1.0},
   }};
   // clang-format on
 }();

@@ -30,7 +30,10 @@ struct TireSpec {
   double mass = 10.0;             // whole tire (kg), shared equally by the 2N particles
   double friction = 0.9;          // static friction coefficient μ_s
   double kinetic_friction = 0.9;  // kinetic friction coefficient μ_k
-  double pressure = 1.0;          // target area = pressure · rest area
+  // The air: the area constraint's target is pressure · rest area, so above 1 the air pushes out
+  // with (pressure · A₀ − A)/α per metre of tread and carries load as a real tire's does; below 1
+  // it would pull the tread in.
+  double pressure = 1.0;
   TireCompliance compliance;
   SpokePattern spokes = SpokePattern::cross;
   // Material damping time τ (s): a dashpot beside every constraint's spring (Kelvin–Voigt rubber),
@@ -51,8 +54,8 @@ struct TireSpec {
   double max_speed = 15.0;           // cap on the hub's horizontal speed and the tread's drive speed (m/s)
   // Inflating and deflating (TickInput::inflate): the pressure moves at inflate_rate (per second)
   // between min_pressure and max_pressure.
-  double inflate_rate = 0.6;
-  double min_pressure = 0.6;
+  double inflate_rate = 0.3;
+  double min_pressure = 1.0;  // deflated: the air carries nothing
   double max_pressure = 1.3;
 };
 
