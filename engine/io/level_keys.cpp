@@ -181,6 +181,10 @@ std::vector<LevelKey> solver_keys() {
           "is reset"),
       from_row(P::solver_divergence_speed,
                "{range}: a tire with a particle faster than this has diverged and is reset"),
+      from_row(
+          P::solver_tire_neighbours,
+          "{range}: the most tires one tire is in contact with in a tick; one with more candidates keeps "
+          "its nearest"),
       Key("method", T::choice,
           "\"gauss-seidel\": each constraint on its own; \"global\": each tire solved as one system")
           .choices(methods)

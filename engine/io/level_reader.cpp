@@ -49,6 +49,7 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   s.jump_grace = read_number(r, j, path, level_key(O::solver, "jump_grace"), s.jump_grace);
   s.divergence_area = read_number(r, j, path, level_key(O::solver, "divergence_area"), s.divergence_area);
   s.divergence_speed = read_number(r, j, path, level_key(O::solver, "divergence_speed"), s.divergence_speed);
+  s.tire_neighbours = read_integer(r, j, path, level_key(O::solver, "tire_neighbours"), s.tire_neighbours);
   return s;
 }
 

@@ -47,6 +47,7 @@ enum class ParamId : std::uint8_t {
   solver_jump_grace,
   solver_divergence_area,
   solver_divergence_speed,
+  solver_tire_neighbours,
   gravity_x,
   gravity_y,
   tire_angle,
@@ -127,7 +128,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 37>{{
+  return std::array<Parameter, 38>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -147,6 +148,11 @@ inline constexpr std::array kParameters = [] {
        "A tire whose area passes this many times its rest area (or minus it) has diverged and is reset, in {range}."},
       {P::solver_divergence_speed, "solver.divergence_speed", "m/s", {10, 1e6}, false, kSolver.divergence_speed,
        kLevelOnly, "A tire with a particle faster than this (m/s) has diverged and is reset, in {range}."},
+      // At most the Gauss–Seidel contacts' parallel colours (world.cpp): a tire with more pairs
+      // than colours has its extra pairs solved on one thread.
+      {P::solver_tire_neighbours, "solver.tire_neighbours", "tires", {1, 64}, true, kSolver.tire_neighbours,
+       kLevelOnly,
+       "The most tires one tire is in contact with in a tick, in {range}: one with more candidates keeps its nearest."},
       // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
       // each component in this range too.
       {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,
