@@ -64,8 +64,10 @@ TirePairFinder::Near TirePairFinder::nearness(std::uint32_t i, std::uint32_t j) 
   const Aabb &a = bounds_[i], &b = bounds_[j];
   const Vec2 half_a = (a.max - a.min) * 0.5, half_b = (b.max - b.min) * 0.5;
   const double reach = std::max(half_a.x, half_a.y) + std::max(half_b.x, half_b.y);
-  return {length((a.min + half_a) - (b.min + half_b)) / reach, i > j ? i - j : j - i, std::min(i, j),
-          std::max(i, j)};
+  const double apart = length((a.min + half_a) - (b.min + half_b)) / reach;
+  // Not a number (bounds out at infinity) sorts last, so that the order stays an order.
+  return {std::isnan(apart) ? std::numeric_limits<double>::infinity() : apart, i > j ? i - j : j - i,
+          std::min(i, j), std::max(i, j)};
 }
 
 // Some tire has more candidates than it may keep: it is crowded. A pair of tires that are not is
