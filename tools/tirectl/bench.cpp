@@ -231,8 +231,11 @@ std::unique_ptr<Steppable> crowd(int resting, const tire::SolverConfig& config) 
 // A chain of `points` points 0.2 m apart along x from `first_x`, on a gentle wave (2 cm high, 10 m
 // long, of x alone, so that every chain has the same ground under the same x), solid below: one
 // default tire driven flat out along it from x = -90, by the default method. A chain of 1000 points
-// reaches from -100 to 100 m, one of 100 000 (the most a level may give) from -10 000 to 10 000 m:
-// the tire meets the same ground on both, and only the edges far from it differ.
+// reaches from -100 to 100 m, one of 100 000 (the most a level may give) from -10 000 to 10 000 m.
+// Every 600 ticks (10 s, at most 150 m at the tire's top speed) the tire is put back where it
+// started, at rest (World::reset_tire, between ticks and outside the timing): on both chains it
+// drives over the same ground, and only the edges far from it differ.
+constexpr std::uint64_t kChainDriveTicks = 600;
 std::unique_ptr<Steppable> chain_world(int points) {
   auto world = std::make_unique<tire::World>(tire::SolverConfig{}, tire::Vec2{0.0, -9.81});
   tire::PropSpec chain;
@@ -246,8 +249,10 @@ std::unique_ptr<Steppable> chain_world(int points) {
   tire::TireSpec spec;
   spec.position = {-90.0, 0.6};
   spec.player = true;
-  world->add_tire(spec);
-  return std::make_unique<WorldScene>(std::move(world));
+  const tire::TireId id = world->add_tire(spec);
+  return std::make_unique<WorldScene>(std::move(world), [id](tire::World& w) {
+    if (w.tick() > 0 && w.tick() % kChainDriveTicks == 0) w.reset_tire(id);
+  });
 }
 
 // Tires of 256 segments, 1953 of them (1953 x 512 = 999 936 particles, just under the default
