@@ -416,6 +416,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"jump_grace", s.jump_grace},
         {"divergence_area", s.divergence_area},
         {"divergence_speed", s.divergence_speed},
+        {"tire_neighbours", s.tire_neighbours},
         {"method", method_name(s.method)},
         {"sleep", s.sleep},
         {"restitution_threshold", s.restitution_threshold}}},

@@ -21,6 +21,7 @@
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
@@ -329,6 +330,28 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
   for (int i = 0; i < 120; ++i) world.step({0.0, false});
   const HeapActivity before = HeapActivity::now();
   for (int i = 0; i < 300; ++i) world.step({1.0, i % 60 == 0});
+  check_untouched(before);
+}
+
+TEST_CASE("a tire along a long chain and a heap of tires past solver.tire_neighbours do not allocate",
+          "[unit][performance]") {
+  // A chain's contacts ask its edge tree (a stack of its own, no list); the broad phase between
+  // tires, past the limit, keeps each crowded tire's nearest in scratch that reaches its size on
+  // the first tick, when the heap is tightest.
+  SolverConfig config;
+  config.method = GENERATE(SolverMethod::gauss_seidel, SolverMethod::global);
+  CAPTURE(method_name(config.method));
+  config.tire_neighbours = 6;
+  World world(config, {0, -9.81});
+  PropSpec chain;
+  chain.shape = PropShape::chain;
+  for (int k = 0; k < 5000; ++k) chain.points.push_back({-500.0 + 0.2 * k, 0.02 * std::sin(0.2 * k)});
+  world.add_prop(chain);
+  world.add_tire(tire_at({-50.0, 0.6}, true));
+  for (int i = 0; i < 40; ++i) world.add_tire(tire_at({20.0 + 0.01 * (i % 5), 0.6 + 0.01 * (i / 5)}));
+  for (int i = 0; i < 3; ++i) world.step({1.0, false});
+  const HeapActivity before = HeapActivity::now();
+  for (int i = 0; i < 120; ++i) world.step({1.0, false});
   check_untouched(before);
 }
 

@@ -1,9 +1,12 @@
 // Contacts between tires: no gap, no passing through, momentum kept, piles that settle.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <span>
 #include <tuple>
+#include <vector>
 
 #include "tire/tire/soft_contact.h"
 #include "tire_fixtures.h"
@@ -41,8 +44,8 @@ TEST_CASE("the tire broad phase finds exactly the overlapping pairs, in a fixed 
   std::vector<TirePair> pairs, again;
   std::vector<std::uint32_t> all(tires.size());
   std::iota(all.begin(), all.end(), 0u);
-  finder.find(tires, all, 1.0 / 60.0, 0.0, pairs);  // at rest: bounds grow by the skin only
-  finder.find(tires, all, 1.0 / 60.0, 0.0, again);
+  finder.find(tires, all, 1.0 / 60.0, 0.0, 32, pairs);  // at rest: bounds grow by the skin only
+  finder.find(tires, all, 1.0 / 60.0, 0.0, 32, again);
   REQUIRE(pairs.size() == again.size());
   for (std::size_t k = 0; k < pairs.size(); ++k)
     CHECK((pairs[k].a == again[k].a && pairs[k].b == again[k].b));
@@ -59,6 +62,95 @@ TEST_CASE("the tire broad phase finds exactly the overlapping pairs, in a fixed 
       brute += listed;
     }
   CHECK(brute == pairs.size());
+}
+
+namespace {
+// Each tire's count of pairs.
+std::vector<std::uint32_t> pairs_per_tire(std::size_t tires, std::span<const TirePair> pairs) {
+  std::vector<std::uint32_t> count(tires, 0);
+  for (const TirePair& p : pairs) {
+    ++count[p.a];
+    ++count[p.b];
+  }
+  return count;
+}
+}  // namespace
+
+TEST_CASE("the tire broad phase keeps at most max_neighbours pairs a tire, the same ones every time",
+          "[unit][soft]") {
+  // 200 tires on one spot (each inside every other: 19 900 candidate pairs), and beside them,
+  // far off, 60 spread over a field as in the test above.
+  std::vector<Tire> tires;
+  for (TireId i = 0; i < 200; ++i) tires.emplace_back(i, tire_at({0, 0}));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> pos(-20, 20);
+  for (TireId i = 200; i < 260; ++i) tires.emplace_back(i, tire_at({100 + pos(rng), pos(rng)}));
+  std::vector<std::uint32_t> all(tires.size());
+  std::iota(all.begin(), all.end(), 0u);
+  constexpr std::uint32_t kMax = 16;
+  TirePairFinder finder;
+  std::vector<TirePair> pairs, again, uncapped;
+  finder.find(tires, all, 1.0 / 60.0, 0.0, kMax, pairs);
+  CHECK(finder.capped());
+  finder.find(tires, all, 1.0 / 60.0, 0.0, kMax, again);
+  REQUIRE(pairs.size() == again.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    CHECK((pairs[k].a == again[k].a && pairs[k].b == again[k].b));
+  finder.find(tires, all, 1.0 / 60.0, 0.0, 1000, uncapped);
+  CHECK_FALSE(finder.capped());
+  CHECK(uncapped.size() > 19900);
+  const std::vector<std::uint32_t> count = pairs_per_tire(tires.size(), pairs);
+  for (std::uint32_t i = 0; i < 200; ++i) {
+    INFO("tire " << i);
+    CHECK(count[i] <= kMax);
+    // Every tire of the heap keeps neighbours (ties of distance go to the nearest index): the
+    // first and last have half as many, being at the ends.
+    CHECK(count[i] >= kMax / 2);
+  }
+  // Kept pairs are candidates, each once, lowest index first; the spread tires, none of which has
+  // kMax candidates, keep every pair they had.
+  std::size_t spread_pairs = 0;
+  for (const TirePair& p : uncapped) spread_pairs += p.a >= 200;
+  std::size_t kept_spread = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const TirePair p = pairs[k];
+    CHECK(p.a < p.b);
+    CHECK(std::any_of(uncapped.begin(), uncapped.end(),
+                      [&](const TirePair& u) { return u.a == p.a && u.b == p.b; }));
+    if (k > 0) CHECK_FALSE((pairs[k - 1].a == p.a && pairs[k - 1].b == p.b));
+    kept_spread += p.a >= 200;
+  }
+  CHECK(spread_pairs > 0);
+  CHECK(kept_spread == spread_pairs);
+}
+
+TEST_CASE("tires heaped on one spot: each tread particle meets at most solver.tire_neighbours treads",
+          "[unit][soft][physics]") {
+  // 150 default tires all on one spot, over the ground: every tire inside every other. The work of
+  // their contacts is bounded by counts: the pairs each tire keeps, and (global method) the tests
+  // of a tread particle against a neighbour's tread in each search for contacts.
+  SolverConfig config;
+  config.method = GENERATE(SolverMethod::gauss_seidel, SolverMethod::global);
+  config.sleep = false;
+  config.tire_neighbours = 12;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-50, -1}, {50, 0}}});
+  constexpr std::uint32_t kTires = 150;
+  for (std::uint32_t i = 0; i < kTires; ++i) world.add_tire(tire_at({0, 0.5}));
+  for (int tick = 0; tick < 3; ++tick) {
+    world.step({});
+    const std::vector<std::uint32_t> count = pairs_per_tire(kTires, world.tire_pairs());
+    CHECK(*std::max_element(count.begin(), count.end()) <= 12u);
+    CHECK(*std::min_element(count.begin(), count.end()) >= 1u);
+    if (config.method != SolverMethod::global) continue;
+    for (const Tire& t : world.tires()) {
+      const Tire::GlobalWork& w = t.global_work;
+      REQUIRE(w.searches > 0);
+      CHECK(w.tread_tests <= std::uint64_t{12} * t.n * w.searches);
+      CHECK(w.tread_tests > 0);
+    }
+  }
+  for (const Tire& t : world.tires()) CHECK(t.is_finite());
 }
 
 TEST_CASE("two tires colliding keep momentum and never pass into each other", "[unit][soft][physics]") {

@@ -124,6 +124,16 @@ tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS be
 tirectl_test("bench builds global-crowd-10000: the crowd on the default method" 0
   ARGS bench --scene global-crowd-100 --scene global-crowd-10000 --warmup 0 --steps 1
   STDOUT "\nglobal-crowd-100,100,5600,0,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0\nglobal-crowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0\n")
+# The scenes of costs bounded by what is near (docs/bounded-and-safe.md), each built and stepped once:
+# the tire on either chain; the 1953 tires of 256 segments on a grid (no pairs), on one spot and
+# heaped, where each tire keeps at most 32 pairs (solver.tire_neighbours): at most 31 248 of the
+# 1 906 128 candidates, so the count has at most five digits.
+tirectl_test("bench drives a tire along chains of 1000 and 100 000 points" 0
+  ARGS bench --scene chain-1000 --scene chain-100000 --warmup 0 --steps 1
+  STDOUT "\nchain-1000,1,56,[0-9]+,0,1,28,2,1,1,[^\n]*\nchain-100000,1,56,[0-9]+,0,1,28,2,1,1,")
+tirectl_test("bench steps 1953 tires of 256 segments on a grid, on one spot and heaped" 0
+  ARGS bench --scene spot-grid-1953 --scene spot-pile-1953 --scene spot-heap-1953 --warmup 0 --steps 1
+  STDOUT "\nspot-grid-1953,1953,999936,[0-9]+,0,[0-9]+,256,2,1,1,[^\n]*\nspot-pile-1953,1953,999936,[0-9]+,[1-9][0-9]?[0-9]?[0-9]?[0-9]?,[0-9]+,256,2,1,1,[^\n]*\nspot-heap-1953,1953,999936,[0-9]+,[1-9][0-9]?[0-9]?[0-9]?[0-9]?,[0-9]+,256,2,1,1,")
 tirectl_test("bench times a tire rolling on flat ground by either method" 0
   ARGS bench --scene rolling-gauss-seidel-8x1 --scene rolling-global-2x1 --warmup 10 --steps 3
   STDOUT "\nrolling-gauss-seidel-8x1,1,56,[0-9]+,0,[0-9]+,28,8,1,3,[^\n]*\nrolling-global-2x1,1,56,[0-9]+,0,[0-9]+,28,2,1,3,")

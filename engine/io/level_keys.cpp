@@ -183,6 +183,10 @@ std::vector<LevelKey> solver_keys() {
                "{range}: a tire with a particle faster than this has diverged and is reset"),
       from_row(P::solver_restitution_threshold,
                "{range}: a tire bounces by its restitution only off a landing faster than this"),
+      from_row(
+          P::solver_tire_neighbours,
+          "{range}: the most tires one tire is in contact with in a tick; one with more candidates keeps "
+          "its nearest"),
       Key("method", T::choice,
           "\"gauss-seidel\": each constraint on its own; \"global\": each tire solved as one system")
           .choices(methods)

@@ -51,6 +51,7 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   s.divergence_speed = read_number(r, j, path, level_key(O::solver, "divergence_speed"), s.divergence_speed);
   s.restitution_threshold =
       read_number(r, j, path, level_key(O::solver, "restitution_threshold"), s.restitution_threshold);
+  s.tire_neighbours = read_integer(r, j, path, level_key(O::solver, "tire_neighbours"), s.tire_neighbours);
   return s;
 }
 

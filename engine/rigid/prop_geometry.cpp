@@ -1,6 +1,7 @@
 #include "tire/rigid/prop_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -24,7 +25,10 @@ PropGeometry PropGeometry::from_spec(const PropSpec& spec) {
       break;
     }
     case PropShape::polygon: g.vertices = spec.points; break;
-    case PropShape::circle: g.radius = spec.radius; return g;
+    case PropShape::circle:
+      g.radius = spec.radius;
+      g.bounds = {{-g.radius, -g.radius}, {g.radius, g.radius}};
+      return g;
     case PropShape::chain:
       g.vertices = spec.points;
       g.loop = spec.loop;
@@ -45,17 +49,16 @@ PropGeometry PropGeometry::from_spec(const PropSpec& spec) {
     const Vec2 normal = g.shape == PropShape::chain ? -right : right;
     g.normals.push_back(normal * (1.0 / length(normal)));
   }
-  return g;
-}
-
-Aabb PropGeometry::local_bounds() const {
-  if (shape == PropShape::circle) return {{-radius, -radius}, {radius, radius}};
-  Aabb b{vertices.front(), vertices.front()};
-  for (const Vec2& v : vertices) {
-    b.min = {std::min(b.min.x, v.x), std::min(b.min.y, v.y)};
-    b.max = {std::max(b.max.x, v.x), std::max(b.max.y, v.y)};
+  const Aabb box = bounds_of(g.vertices);
+  g.bounds = g.shape == PropShape::chain ? box.expanded(g.thickness) : box;
+  if (g.shape == PropShape::chain) {
+    // Each edge's box widened by the thickness, and by a hair more than rounding could take a
+    // point's distance from its line past it (a few ulps of the largest coordinate).
+    const double scale =
+        std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y), 1.0});
+    g.edges.build(g.vertices, edges, g.thickness + 1e-9 * scale);
   }
-  return shape == PropShape::chain ? b.expanded(thickness) : b;
+  return g;
 }
 
 namespace {
@@ -126,17 +129,19 @@ std::optional<SurfaceContact> polygon_contact(const PropGeometry& g, Vec2 from, 
 }
 
 // Whether `p` is inside the chain's solid: behind an edge's line by less than `thickness`, within
-// the edge's extent.
+// the edge's extent. Only the edges near p are asked (EdgeTree).
 bool inside_chain(const PropGeometry& g, Vec2 p) {
   const std::size_t n = g.vertices.size();
-  for (std::size_t i = 0; i < g.normals.size(); ++i) {
+  bool inside = false;
+  g.edges.visit({p, p}, [&](std::size_t i) {
     const Vec2 a = g.vertices[i], edge = g.vertices[(i + 1) % n] - a;
     const double s = dot(g.normals[i], p - a);
-    if (s >= 0.0 || s <= -g.thickness) continue;
+    if (s >= 0.0 || s <= -g.thickness) return true;
     const double t = dot(p - a, edge) / length_squared(edge);
-    if (t >= 0.0 && t <= 1.0) return true;
-  }
-  return false;
+    inside = t >= 0.0 && t <= 1.0;
+    return !inside;
+  });
+  return inside;
 }
 
 // One-sided thick chain: inside an edge means behind its line by less than `thickness`, within
@@ -150,14 +155,16 @@ std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Ve
   const std::size_t n = g.vertices.size();
   std::optional<SurfaceContact> best;
   const bool from_inside = held && inside_chain(g, from);
-  for (std::size_t i = 0; i < g.normals.size(); ++i) {
+  // Only the edges whose thick box meets the path's box can hold `to` or be crossed by the path
+  // (EdgeTree), and they come in ascending order, as a loop over every edge would meet them.
+  g.edges.visit(bounds_of(std::array{from, to}), [&](std::size_t i) {
     const Vec2 a = g.vertices[i], b = g.vertices[(i + 1) % n];
     const Vec2 normal = g.normals[i];
     const double s_to = dot(normal, to - a);
-    if (s_to >= 0.0 || s_to <= -g.thickness) continue;
+    if (s_to >= 0.0 || s_to <= -g.thickness) return true;
     const Vec2 edge = b - a;
     const double s_from = dot(normal, from - a);
-    if (s_from < 0.0 && !from_inside) continue;  // came from behind the solid
+    if (s_from < 0.0 && !from_inside) return true;  // came from behind the solid
     double t;
     if (s_from >= 0.0) {
       // Crossed the line this substep: where along the edge?
@@ -166,12 +173,12 @@ std::optional<SurfaceContact> chain_contact(const PropGeometry& g, Vec2 from, Ve
     } else {
       t = dot(to - a, edge) / length_squared(edge);
     }
-    if (t < 0.0 || t > 1.0) continue;
+    if (t < 0.0 || t > 1.0) return true;
     const SurfaceContact c{normal, -s_to};
-    // Prefer the edge it crossed; otherwise the least deep.
+    // Prefer the edge it crossed (the first such); otherwise the least deep.
     if (!best || (s_from >= 0.0) || c.depth < best->depth) best = c;
-    if (s_from >= 0.0) break;
-  }
+    return s_from < 0.0;
+  });
   return best;
 }
 

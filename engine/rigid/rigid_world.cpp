@@ -305,7 +305,9 @@ void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles
   CollectFixtures collect(obstacles, props);
   world_->QueryAABB(&collect, aabb);
   std::sort(obstacles.begin(), obstacles.end());
+  // Box2D gives a chain one proxy per edge, and answers each edge's: once per prop.
   std::sort(props.begin(), props.end());
+  props.erase(std::unique(props.begin(), props.end()), props.end());
 }
 
 void RigidWorld::steer_along_path(std::uint32_t i, double dt) {

@@ -268,6 +268,7 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
   const Particles& p = t.particles;
   const RigidWorld& rigid = *ctx.rigid;
   const std::size_t first_new = contacts_.size();
+  ++work_.searches;
   for (const ContactPair& pair : t.pairs) {
     const std::uint32_t i = pair.particle;
     const std::int32_t existing = contact_of_[i];
@@ -326,6 +327,7 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
     const TreadView tread = neighbours->tread(other);
     const double reach2 = tread.reach * tread.reach;
     const double mu = mix_friction(t.spec.friction, tread.tire->spec.friction);
+    work_.tread_tests += t.n;
     for (std::uint32_t i = 0; i < t.n; ++i) {
       const std::int32_t existing = contact_of_[i];
       if (existing >= 0 && static_cast<std::size_t>(existing) < first_new) continue;

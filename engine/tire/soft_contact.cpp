@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "tire/math/trig.h"
@@ -9,8 +10,20 @@
 
 namespace tire {
 
+template <typename F>
+void TirePairFinder::sweep(F&& fn) const {
+  const auto n = static_cast<std::uint32_t>(order_.size());
+  for (std::uint32_t s = 0; s < n; ++s) {
+    const Aabb& a = bounds_[order_[s].index];
+    for (std::uint32_t k = s + 1; k < n && order_[k].min_x <= a.max.x; ++k) {
+      const std::uint32_t i = order_[s].index, j = order_[k].index;
+      if (a.overlaps(bounds_[j])) fn(i, j);
+    }
+  }
+}
+
 void TirePairFinder::find(const std::vector<Tire>& tires, std::span<const std::uint32_t> which, double dt,
-                          double gravity, std::vector<TirePair>& out) {
+                          double gravity, std::uint32_t max_neighbours, std::vector<TirePair>& out) {
   out.clear();
   const auto n = static_cast<std::uint32_t>(which.size());
   bounds_.resize(tires.size());
@@ -33,12 +46,154 @@ void TirePairFinder::find(const std::vector<Tire>& tires, std::span<const std::u
   std::sort(order_.begin(), order_.end(), [](const Entry& l, const Entry& r) {
     return l.min_x < r.min_x || (l.min_x == r.min_x && l.index < r.index);
   });
-  for (std::uint32_t s = 0; s < n; ++s) {
-    const Aabb& a = bounds_[order_[s].index];
-    for (std::uint32_t k = s + 1; k < n && order_[k].min_x <= a.max.x; ++k) {
-      const std::uint32_t i = order_[s].index, j = order_[k].index;
-      if (a.overlaps(bounds_[j])) out.push_back({std::min(i, j), std::max(i, j)});
+  // Every candidate a pair, while no tire has more than max_neighbours of them (a pile, a crowd):
+  // one sweep.
+  count_.assign(tires.size(), 0);
+  capped_ = false;
+  sweep([&](std::uint32_t i, std::uint32_t j) {
+    ++count_[i];
+    ++count_[j];
+    if (count_[i] > max_neighbours || count_[j] > max_neighbours) capped_ = true;
+    if (!capped_) out.push_back({std::min(i, j), std::max(i, j)});
+  });
+  if (!capped_) return;
+  keep_nearest_pairs(which, max_neighbours, out);
+}
+
+TirePairFinder::Near TirePairFinder::nearness(std::uint32_t i, std::uint32_t j) const {
+  const Aabb &a = bounds_[i], &b = bounds_[j];
+  const Vec2 half_a = (a.max - a.min) * 0.5, half_b = (b.max - b.min) * 0.5;
+  const double reach = std::max(half_a.x, half_a.y) + std::max(half_b.x, half_b.y);
+  const double apart = length((a.min + half_a) - (b.min + half_b)) / reach;
+  // Not a number (bounds out at infinity) sorts last, so that the order stays an order.
+  return {std::isnan(apart) ? std::numeric_limits<double>::infinity() : apart, i > j ? i - j : j - i,
+          std::min(i, j), std::max(i, j)};
+}
+
+// Some tire has more candidates than it may keep: it is crowded. A pair of tires that are not is
+// kept as it is. The others are chosen greedily, nearest first, each taken while neither of its
+// crowded tires has max_neighbours yet, among a bounded set: a crowded tire's pairs with tires that
+// are not (those have at most max_neighbours candidates each), and between two crowded tires, those
+// where one is among the other's max_neighbours nearest. A tire that choice leaves with none then
+// takes its nearest candidate; if that one has max_neighbours, it gives up its farthest partner
+// that keeps another. Then a last sweep lists the pairs kept in the sweep's order.
+void TirePairFinder::keep_nearest_pairs(std::span<const std::uint32_t> which, std::uint32_t max_neighbours,
+                                        std::vector<TirePair>& out) {
+  out.clear();
+  const std::size_t k = max_neighbours;
+  constexpr Near kFar{std::numeric_limits<double>::infinity(), 0, 0, 0};
+  std::uint32_t crowded = 0;
+  slot_.resize(bounds_.size());
+  degree_.resize(bounds_.size());
+  best_.resize(bounds_.size());
+  for (const std::uint32_t i : which) {
+    slot_[i] = count_[i] > max_neighbours ? crowded++ : kNotCrowded;
+    degree_[i] = 0;
+    best_[i] = kFar;
+  }
+  nearest_.resize(crowded * k);
+  nearest_size_.assign(crowded, 0);
+  candidates_.clear();
+  sweep([&](std::uint32_t i, std::uint32_t j) {
+    if (slot_[i] == kNotCrowded && slot_[j] == kNotCrowded) {
+      ++degree_[i];
+      ++degree_[j];
+      return;
     }
+    const Near near = nearness(i, j);
+    best_[i] = std::min(best_[i], near);
+    best_[j] = std::min(best_[j], near);
+    if (slot_[i] == kNotCrowded || slot_[j] == kNotCrowded) {
+      candidates_.push_back(near);
+      return;
+    }
+    offer(slot_[i], near, k);
+    offer(slot_[j], near, k);
+  });
+  // Between two crowded tires: each pair in either's nearest, once.
+  const auto nearest_of = [&](std::uint32_t slot) {
+    return std::span<Near>(&nearest_[slot * k], nearest_size_[slot]);
+  };
+  const auto by_other = [](std::uint32_t self) {
+    return [self](const Near& l, const Near& r) { return l.other(self) < r.other(self); };
+  };
+  for (const std::uint32_t i : which)
+    if (slot_[i] != kNotCrowded) std::ranges::sort(nearest_of(slot_[i]), by_other(i));
+  for (const std::uint32_t i : which) {
+    if (slot_[i] == kNotCrowded) continue;
+    for (const Near& near : nearest_of(slot_[i])) {
+      const std::uint32_t j = near.other(i);
+      if (i < j || !std::ranges::binary_search(nearest_of(slot_[j]), near, by_other(j)))
+        candidates_.push_back(near);
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+  kept_.resize(crowded * k);
+  kept_size_.assign(crowded, 0);
+  const auto full = [&](std::uint32_t i) { return slot_[i] != kNotCrowded && kept_size_[slot_[i]] == k; };
+  const auto keep = [&](std::uint32_t i, std::uint32_t j) {
+    ++degree_[i];
+    ++degree_[j];
+    if (slot_[i] != kNotCrowded) kept_[slot_[i] * k + kept_size_[slot_[i]]++] = j;
+    if (slot_[j] != kNotCrowded) kept_[slot_[j] * k + kept_size_[slot_[j]]++] = i;
+  };
+  for (const Near& c : candidates_)
+    if (!full(c.a) && !full(c.b)) keep(c.a, c.b);
+  for (const std::uint32_t i : which) {
+    if (degree_[i] > 0 || best_[i].apart == kFar.apart) continue;
+    const std::uint32_t j = best_[i].other(i);
+    if (full(j) && !give_up_farthest(j, k)) continue;
+    keep(i, j);
+  }
+  for (const std::uint32_t i : which)
+    if (slot_[i] != kNotCrowded) std::sort(&kept_[slot_[i] * k], &kept_[slot_[i] * k] + kept_size_[slot_[i]]);
+  const auto kept = [&](std::uint32_t i, std::uint32_t j) {
+    const std::uint32_t* first = &kept_[slot_[i] * k];
+    return std::binary_search(first, first + kept_size_[slot_[i]], j);
+  };
+  sweep([&](std::uint32_t i, std::uint32_t j) {
+    const bool keep_pair = slot_[i] != kNotCrowded ? kept(i, j) : slot_[j] == kNotCrowded || kept(j, i);
+    if (keep_pair) out.push_back({std::min(i, j), std::max(i, j)});
+  });
+}
+
+// Crowded tire j, full, drops its farthest partner that keeps another pair; false when each of its
+// partners has j alone.
+bool TirePairFinder::give_up_farthest(std::uint32_t j, std::size_t k) {
+  std::uint32_t* partners = &kept_[slot_[j] * k];
+  std::uint32_t& size = kept_size_[slot_[j]];
+  std::size_t farthest = size;
+  for (std::size_t p = 0; p < size; ++p)
+    if (degree_[partners[p]] >= 2 &&
+        (farthest == size || nearness(j, partners[farthest]) < nearness(j, partners[p])))
+      farthest = p;
+  if (farthest == size) return false;
+  const std::uint32_t m = partners[farthest];
+  --size;
+  partners[farthest] = partners[size];
+  if (slot_[m] != kNotCrowded) {
+    std::uint32_t* theirs = &kept_[slot_[m] * k];
+    std::uint32_t& their_size = kept_size_[slot_[m]];
+    std::uint32_t* mine = std::find(theirs, theirs + their_size, j);
+    --their_size;
+    *mine = theirs[their_size];
+  }
+  --degree_[j];
+  --degree_[m];
+  return true;
+}
+
+// A crowded tire's nearest so far: a max-heap of at most k, the farthest on top.
+void TirePairFinder::offer(std::uint32_t slot, const Near& near, std::size_t k) {
+  Near* heap = nearest_.data() + slot * k;
+  std::uint32_t& size = nearest_size_[slot];
+  if (size < k) {
+    heap[size++] = near;
+    std::push_heap(heap, heap + size);
+  } else if (near < heap[0]) {
+    std::pop_heap(heap, heap + size);
+    heap[size - 1] = near;
+    std::push_heap(heap, heap + size);
   }
 }
 

@@ -79,6 +79,7 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::solver_divergence_area:
     case ParamId::solver_divergence_speed:
     case ParamId::solver_restitution_threshold:
+    case ParamId::solver_tire_neighbours:
     case ParamId::gravity_x:
     case ParamId::gravity_y:
     case ParamId::budget_tires:
@@ -160,6 +161,7 @@ std::optional<double> World::parameter(std::string_view key) const {
     case ParamId::solver_divergence_area: return config_.divergence_area;
     case ParamId::solver_divergence_speed: return config_.divergence_speed;
     case ParamId::solver_restitution_threshold: return config_.restitution_threshold;
+    case ParamId::solver_tire_neighbours: return config_.tire_neighbours;
     case ParamId::gravity_x: return gravity_.x;
     case ParamId::gravity_y: return gravity_.y;
     case ParamId::budget_tires: return budgets_.tires;
@@ -393,7 +395,8 @@ void World::find_tire_pairs() {
   tire_pairs_.clear();
   if (tires_.size() < 2) return;  // a lone tire has no pairs
   for (;;) {
-    pair_finder_.find(tires_, sleep_.awake(), config_.dt, length(gravity_), tire_pairs_);
+    pair_finder_.find(tires_, sleep_.awake(), config_.dt, length(gravity_),
+                      static_cast<std::uint32_t>(std::max(1, config_.tire_neighbours)), tire_pairs_);
     if (sleep_.asleep_count() == 0) return;
     // An awake tire that may reach a sleeping one this tick wakes its island, whose tires then
     // begin their tick and join the broad phase (and may reach another island: again).

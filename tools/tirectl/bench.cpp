@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 #include <string_view>
+#include <vector>
 
 #include "commands.h"
 #include "process_memory.h"
@@ -227,6 +228,76 @@ std::unique_ptr<Steppable> crowd(int resting, const tire::SolverConfig& config) 
   });
 }
 
+// A chain of `points` points 0.2 m apart along x from `first_x`, on a gentle wave (2 cm high, 10 m
+// long, of x alone, so that every chain has the same ground under the same x), solid below: one
+// default tire driven flat out along it from x = -90, by the default method. A chain of 1000 points
+// reaches from -100 to 100 m, one of 100 000 (the most a level may give) from -10 000 to 10 000 m.
+// Every 600 ticks (10 s, at most 150 m at the tire's top speed) the tire is put back where it
+// started, at rest (World::reset_tire, between ticks and outside the timing): on both chains it
+// drives over the same ground, and only the edges far from it differ.
+constexpr std::uint64_t kChainDriveTicks = 600;
+std::unique_ptr<Steppable> chain_world(int points) {
+  auto world = std::make_unique<tire::World>(tire::SolverConfig{}, tire::Vec2{0.0, -9.81});
+  tire::PropSpec chain;
+  chain.shape = tire::PropShape::chain;
+  const double first_x = -0.1 * points;
+  for (int k = 0; k < points; ++k) {
+    const double x = first_x + 0.2 * k;
+    chain.points.push_back({x, 0.02 * std::sin(2.0 * std::numbers::pi * x / 10.0)});
+  }
+  world->add_prop(chain);
+  tire::TireSpec spec;
+  spec.position = {-90.0, 0.6};
+  spec.player = true;
+  const tire::TireId id = world->add_tire(spec);
+  return std::make_unique<WorldScene>(std::move(world), [id](tire::World& w) {
+    if (w.tick() > 0 && w.tick() % kChainDriveTicks == 0) w.reset_tire(id);
+  });
+}
+
+// Tires of 256 segments, 1953 of them (1953 x 512 = 999 936 particles, just under the default
+// particle budget), by the default method with sleeping off, over a ground whose top is y = 0:
+// - on a grid 1.2 m apart (45 to a row, the lowest row resting on the ground, the rest in the air,
+//   none touching another): what the tires cost;
+// - all on one spot, resting on the ground (what a level may place, or a spawn flood make): every
+//   tire inside every other, each exactly on the others, so that no tread particle is inside
+//   another tread by more than rounding;
+// - heaped within 5 cm of one spot (tire i at 5 cm · sqrt(i/1953) from it, turned by the golden
+//   angle from the one before), just above the ground: every tire inside every other, by up to
+//   10 cm, and pushed by them.
+// Before every tick (outside the timing) every tire is put back where it started, at rest
+// (World::reset_tire), so each timed tick is the first tick of the scene: the pile never gets to
+// spread, nor the grid to fall.
+constexpr int kSpotTires = 1953;
+constexpr int kSpotSegments = 256;
+enum class Placement { grid, one_spot, heap };
+std::unique_ptr<Steppable> spot_world(Placement placement) {
+  tire::SolverConfig config;
+  config.sleep = false;
+  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
+  world->add_obstacle({{{-10.0, -1.0}, {60.0, 0.0}}});
+  std::vector<tire::TireId> ids;
+  for (int i = 0; i < kSpotTires; ++i) {
+    tire::TireSpec spec;
+    spec.segments = kSpotSegments;
+    switch (placement) {
+      case Placement::grid: spec.position = {1.2 * (i % 45), 0.5 + 1.2 * (i / 45)}; break;
+      case Placement::one_spot: spec.position = {0.0, 0.5}; break;
+      case Placement::heap: {
+        const double r = 0.05 * std::sqrt(static_cast<double>(i) / kSpotTires);
+        const double angle = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
+        spec.position = {r * std::cos(angle), 0.55 + r * std::sin(angle)};
+        break;
+      }
+    }
+    ids.push_back(world->add_tire(spec));
+  }
+  return std::make_unique<WorldScene>(std::move(world), [ids](tire::World& w) {
+    if (w.tick() == 0) return;
+    for (const tire::TireId id : ids) w.reset_tire(id);
+  });
+}
+
 struct Scene {
   const char* name;
   const char* what;
@@ -363,6 +434,28 @@ const Scene kScenes[] = {
     {"global-crowd-10000",
      "as crowd-10000, solved by the default method (global 2 x 1)",
      [] { return crowd(kCrowdShelves * kCrowdPerShelf, {}); },
+     {}},
+    {"chain-1000",
+     "1 default tire driven flat out along a chain of 1000 points 0.2 m apart, default method (global 2 x 1)",
+     [] { return chain_world(1000); },
+     {1.0, false}},
+    {"chain-100000",
+     "as chain-1000 on a chain of 100000 points (the most a level may give): the same ground near the tire",
+     [] { return chain_world(100000); },
+     {1.0, false}},
+    {"spot-grid-1953",
+     "1953 tires of 256 segments on a grid 1.2 m apart, none touching another, put back before every tick; "
+     "default method, sleeping off",
+     [] { return spot_world(Placement::grid); },
+     {}},
+    {"spot-pile-1953",
+     "the same 1953 tires all on one spot (each inside every other), put back before every tick",
+     [] { return spot_world(Placement::one_spot); },
+     {}},
+    {"spot-heap-1953",
+     "the same 1953 tires heaped within 5 cm of one spot (each pushed by every other), put back before "
+     "every tick",
+     [] { return spot_world(Placement::heap); },
      {}},
 };
 

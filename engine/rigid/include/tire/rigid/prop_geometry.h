@@ -12,6 +12,7 @@
 
 #include "tire/math/aabb.h"
 #include "tire/math/vec2.h"
+#include "tire/rigid/edge_tree.h"
 #include "tire/rigid/prop_spec.h"
 #include "tire/xpbd/contact.h"
 
@@ -46,12 +47,14 @@ struct PropGeometry {
   double radius = 0.0;     // circle
   double thickness = 0.0;  // chain: how far behind the line still counts as inside (m)
   bool loop = false;       // chain
+  EdgeTree edges;          // chain: which edges are near a point, each widened by the thickness
+  Aabb bounds;             // the shape's box in its frame (a chain's widened by its thickness)
 
   // The shape of a prop in its frame. Box: centred rectangle of spec.size. Chain: one-sided, solid
   // on the right of the direction its points go (a closed chain: solid inside, either winding).
   static PropGeometry from_spec(const PropSpec& spec);
 
-  Aabb local_bounds() const;
+  const Aabb& local_bounds() const { return bounds; }
 };
 
 // The contact of a particle that moved from `from` to `to` (both local coordinates), as a local

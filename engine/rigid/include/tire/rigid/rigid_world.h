@@ -143,7 +143,8 @@ class RigidWorld {
   void apply_impulse_now(std::string_view name, Vec2 impulse);
 
   // Replaces `obstacles` and `props` with the indices of those whose (fattened) bounds overlap
-  // `region`, ascending. Does not allocate once the vectors have grown to the largest answer.
+  // `region`, ascending, each once (a chain's edges are Box2D proxies of their own). Does not
+  // allocate once the vectors have grown to the largest answer.
   void query(const Aabb& region, std::vector<std::uint32_t>& obstacles,
              std::vector<std::uint32_t>& props) const;
 

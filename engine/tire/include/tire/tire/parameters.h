@@ -48,6 +48,7 @@ enum class ParamId : std::uint8_t {
   solver_divergence_area,
   solver_divergence_speed,
   solver_restitution_threshold,
+  solver_tire_neighbours,
   gravity_x,
   gravity_y,
   tire_angle,
@@ -132,7 +133,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 42>{{
+  return std::array<Parameter, 43>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -155,6 +156,11 @@ inline constexpr std::array kParameters = [] {
       {P::solver_restitution_threshold, "solver.restitution_threshold", "m/s", {0, 100}, false,
        kSolver.restitution_threshold, kLevelOnly,
        "A tire bounces by its restitution only off a landing faster than this (m/s), in {range}."},
+      // At most the Gauss–Seidel contacts' parallel colours (world.cpp): a tire with more pairs
+      // than colours has its extra pairs solved on one thread.
+      {P::solver_tire_neighbours, "solver.tire_neighbours", "tires", {1, 64}, true, kSolver.tire_neighbours,
+       kLevelOnly,
+       "The most tires one tire is in contact with in a tick, in {range}: one with more candidates keeps its nearest."},
       // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
       // each component in this range too.
       {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,

@@ -108,6 +108,14 @@ struct SolverConfig {
   double settle_turn = 0.1;
   int max_refine = 8;
 
+  // The most tires one tire is in contact with in a tick (TirePairFinder, soft_contact.h): a tire
+  // with more candidates keeps its nearest. A tire in a pile of its like touches six, and the
+  // broad phase finds at most 11 candidates for any tire of the replays (level 08's 300 small tires
+  // raining onto a pile); the limit bounds what a heap of tires on one spot costs (each tire inside
+  // every other): every tread particle is then tested against this many treads, not all of them,
+  // and each tire pushes this many.
+  int tire_neighbours = 32;
+
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
   // method replaced it (README, "The default method"), and the method for piles of hundreds of
   // tires. Its speed limit, eight rest segments a tick, is the default's (2 substeps × 4).

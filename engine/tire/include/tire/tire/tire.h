@@ -245,15 +245,21 @@ struct Tire {
   // the refinement (SolverConfig::refine_turn); reset by begin_tick.
   double newton_turn = 0.0;
   // The global method's work this tick (GlobalSolver): its solves, the factorisations of K they
-  // made, and the active-set passes they solved on a factor already made; reset by begin_tick.
+  // made, the active-set passes they solved on a factor already made, the searches for contacts
+  // (one a solve and one a pass) and the tests of a tread particle against a neighbour's tread in
+  // them; reset by begin_tick.
   struct GlobalWork {
     std::uint32_t solves = 0;
     std::uint32_t factorisations = 0;
     std::uint32_t updates = 0;
+    std::uint32_t searches = 0;
+    std::uint64_t tread_tests = 0;
     GlobalWork& operator+=(const GlobalWork& o) {
       solves += o.solves;
       factorisations += o.factorisations;
       updates += o.updates;
+      searches += o.searches;
+      tread_tests += o.tread_tests;
       return *this;
     }
   };

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -124,7 +125,8 @@ class World {
   void wake_all();
   // Wakes the island of tire `id` (a script's impulse, a grab, a reset do it themselves).
   void wake_tire(TireId id);
-  std::size_t tire_pair_count() const { return tire_pairs_.size(); }  // broad-phase pairs, last tick
+  std::size_t tire_pair_count() const { return tire_pairs_.size(); }    // broad-phase pairs, last tick
+  std::span<const TirePair> tire_pairs() const { return tire_pairs_; }  // and which they are
   Tire* find_tire(TireId id);
   const Tire* player() const;
   const RigidWorld& rigid() const { return rigid_; }
