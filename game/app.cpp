@@ -562,6 +562,7 @@ void App::draw_ui() {
     hud.grounded = p->touched_ground_within(world.config().jump_grace);
   }
   hud.paused = paused_;
+  hud.over = level_over();
   DevInfo dev;
   dev.shown = debug_.enabled;
   dev.tick = world.tick();

@@ -636,7 +636,7 @@ void Editor::draw_bounds(Draw& d) {
                 bounds.min && bounds.max   ? "the level's"
                 : bounds.min || bounds.max ? "partly computed"
                                            : "computed: margin below and beside the level");
-  ImGui::GetForegroundDrawList()->AddText(
+  ImGui::GetBackgroundDrawList()->AddText(
       {std::max(a.x, palette_width_ + 10.0f) + 6, std::min(a.y, static_cast<float>(height_) - 30.0f) - 20},
       IM_COL32(255, 120, 110, 255), label);
 }
@@ -647,7 +647,7 @@ void Editor::draw_overlay(Draw& d) {
                   region = rgba(90, 200, 255, 60), goal = rgba(90, 255, 120, 70),
                   path = rgba(255, 230, 120, 200);
   const std::string goal_name = editor::string_at(doc, "goal", "");
-  ImDrawList* labels = ImGui::GetForegroundDrawList();
+  ImDrawList* labels = ImGui::GetBackgroundDrawList();  // under the panels
   const auto screen = [this](const std::vector<Vec2>& points) {
     std::vector<ScreenPoint> out;
     for (const Vec2 p : points) out.push_back(camera_.to_screen(p));

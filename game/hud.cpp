@@ -89,11 +89,13 @@ void draw_hud(const HudInfo& info, const DevInfo& dev) {
     if (!info.target.empty())
       ImGui::TextColored({1.0f, 0.85f, 0.35f, 1.0f}, "%.*s", static_cast<int>(info.target.size()),
                          info.target.data());
-    ImGui::Text("speed     %5.0f km/h", info.speed * 3.6);
-    if (info.grounded)
-      ImGui::TextDisabled("on the ground");
-    else
-      ImGui::TextColored({0.55f, 0.8f, 1.0f, 1.0f}, "in the air");
+    if (!info.over) {
+      ImGui::Text("speed     %5.0f km/h", info.speed * 3.6);
+      if (info.grounded)
+        ImGui::TextDisabled("on the ground");
+      else
+        ImGui::TextColored({0.55f, 0.8f, 1.0f, 1.0f}, "in the air");
+    }
     if (info.paused) ImGui::TextColored({1.0f, 0.85f, 0.3f, 1.0f}, "PAUSED  (P resume, . step)");
     if (dev.shown) {
       ImGui::Separator();

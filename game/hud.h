@@ -28,6 +28,7 @@ struct HudInfo {
   double speed = 0.0;                // player hub speed (m/s)
   bool grounded = false;
   bool paused = false;
+  bool over = false;  // the level has ended: the tire's speed and air are no longer the player's
 };
 
 // What F3 adds under the HUD.
