@@ -86,12 +86,12 @@ class LevelSession {
   std::uint64_t state_hash() const;
 
  private:
+  void check_bounds();  // after the script: the player outside the bounds respawns or loses
+  void note_end();      // the tick the level ended on, once
+
   World world_;
   std::unique_ptr<ScriptRunner> script_;
   std::vector<ScriptMessage> messages_;
-  void check_bounds();
-  void note_end();
-
   std::optional<Vec2> checkpoint_;
   std::optional<Aabb> bounds_;
   bool has_checkpoints_ = false;
