@@ -28,6 +28,9 @@ bool is_any(SDL_Scancode k, std::initializer_list<SDL_Scancode> keys) {
   return std::find(keys.begin(), keys.end(), k) != keys.end();
 }
 
+// The HUD's time to beat: the menu's note when it is a best time ("best 9.85 s"), else nothing.
+std::string time_to_beat(const std::string& note) { return note.starts_with("best") ? note : ""; }
+
 }  // namespace
 
 App::App(GameOptions options) : options_(std::move(options)) {}
@@ -120,7 +123,7 @@ void App::after_level_change() {
   seen_generation_ = session_.generation();
   level_tuning_ = session_.tuning();
   bounds_ = level_bounds(session_.level_session());
-  world_renderer_.set_floor(underground_height(session_.world()));
+  world_renderer_.set_underground(underground(session_.world()));
   const tire::Tire* player = session_.world().player();
   camera_.snap(player ? camera_.aim(player->centroid(), {}) : (bounds_.min + bounds_.max) * 0.5, bounds_);
   accumulator_ = 0.0;
@@ -133,6 +136,8 @@ void App::after_level_change() {
   best_runs_.level_started(session_.path(), session_.level_ptr(), messages);
   best_runs_.ticked(session_.world().tick());
   for (const std::string& m : messages) warn(m);
+  hud_target_ = time_to_beat(best_runs_.note(session_.path()));
+  respawns_seen_ = 0;
   sound_.new_level();
   if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
 }
@@ -429,6 +434,10 @@ void App::step_once() {
   ++steps_this_frame_;
   for (const std::string& w : session_.take_warnings()) warn(w);
   best_runs_.ticked(session_.world().tick());
+  if (const int respawns = session_.level_session().respawns(); respawns > respawns_seen_) {
+    respawns_seen_ = respawns;
+    warn("out of the level: back to the checkpoint");
+  }
   if (!finished_at_ && level_over()) level_finished();
 }
 
@@ -472,6 +481,7 @@ void App::level_finished() {
                                     session_.level_session(), messages);
   if (tuned && best_runs_.enabled()) run_result_->note = "tuned (F2): not a best time";
   for (const std::string& m : messages) warn(m);
+  hud_target_ = time_to_beat(best_runs_.note(session_.path()));
 }
 
 void App::advance(double frame_seconds) {
@@ -526,8 +536,10 @@ void App::draw_frame(double wall_seconds) {
 
   const double dt = session_.world().config().dt;
   const double alpha = paused_ || menu_open_ ? 1.0 : std::clamp(accumulator_ / dt, 0.0, 1.0);
-  // The camera holds still while the mouse drags a tire, so the cursor keeps pointing where it pulls.
-  if (const tire::Tire* p = session_.world().player(); p && !grabbing_)
+  // The camera holds still while the mouse drags a tire, so the cursor keeps pointing where it pulls,
+  // and once the tire has left the level: it watches it fall away rather than follow it down.
+  const bool gone = session_.level_session().end_reason() == tire::EndReason::out_of_bounds;
+  if (const tire::Tire* p = session_.world().player(); p && !grabbing_ && !gone)
     camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity()), bounds_,
                    wall_seconds);
 
@@ -544,20 +556,25 @@ void App::draw_ui() {
   const tire::World& world = session_.world();
   HudInfo hud;
   hud.level = session_.level().name;
-  hud.time = world.time();
-  hud.tick = world.tick();
+  hud.time = finished_at_.value_or(world.time());  // the clock stops when the level ends
+  if (const tire::ScriptRunner* script = session_.level_session().script())
+    hud.time_limit = script->spec().time_limit;
+  hud.target = hud_target_;
   if (const tire::Tire* p = world.player()) {
     hud.speed = length(p->velocity());
     hud.grounded = p->touched_ground_within(world.config().jump_grace);
   }
-  hud.fps = fps_;
-  hud.physics_ms = physics_ms_;
-  hud.steps_last_frame = steps_this_frame_;
-  hud.tires = world.tires().size();
-  hud.asleep = world.asleep_count();
   hud.paused = paused_;
-  hud.status = tire::to_string(session_.level_session().status());
-  draw_hud(hud);
+  hud.over = level_over();
+  DevInfo dev;
+  dev.shown = debug_.enabled;
+  dev.tick = world.tick();
+  dev.fps = fps_;
+  dev.physics_ms = physics_ms_;
+  dev.steps_last_frame = steps_this_frame_;
+  dev.tires = world.tires().size();
+  dev.asleep = world.asleep_count();
+  draw_hud(hud, dev);
   draw_script_messages(session_.level_session(), imgui_->big_font());
 
   if (show_tuning_) {
@@ -583,9 +600,9 @@ void App::draw_ui() {
     else if (choice == MenuChoice::quit)
       quit_ = true;
   } else if (level_over()) {
-    switch (draw_end_screen(session_.level_session().status(), session_.level().name,
-                            finished_at_.value_or(world.time()), run_result_ ? run_result_->note : "",
-                            imgui_->big_font())) {
+    switch (draw_end_screen(session_.level_session().status(), session_.level_session().end_reason(),
+                            session_.level().name, finished_at_.value_or(world.time()),
+                            run_result_ ? run_result_->note : "", imgui_->big_font())) {
       case EndChoice::next: go_to_level(+1); break;
       case EndChoice::retry: restart(); break;
       case EndChoice::none: break;
@@ -772,6 +789,7 @@ std::string App::summary_json(long long frames) const {
   out["progress"] = best_runs_.summary(session_.path());
   if (run_result_) {
     out["finished"] = {{"status", run_result_->won ? "won" : "lost"},
+                       {"reason", tire::to_string(session_.level_session().end_reason())},
                        {"tick", run_result_->ticks},
                        {"time", run_result_->time}};
   }

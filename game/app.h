@@ -181,6 +181,8 @@ class App {
   BestRuns best_runs_;
   GhostRenderer ghost_renderer_;
   std::optional<RunResult> run_result_;  // the finished level's time and whether it is a best
+  std::string hud_target_;               // the HUD's time to beat (BestRuns::note)
+  int respawns_seen_ = 0;                // LevelSession::respawns() already told
   // Heard after every tick (sound/sound_system.h).
   sound::SoundSystem sound_;
 };

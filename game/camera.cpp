@@ -63,11 +63,13 @@ void grow(tire::Aabb& box, bool& any, tire::Vec2 p) {
 }
 }  // namespace
 
-double underground_height(const tire::World& world) {
-  double widest = -1.0, height = -1e9;
+Underground underground(const tire::World& world) {
+  double widest = -1.0;
+  Underground out;
   for (const tire::Obstacle& o : world.rigid().obstacles())
-    if (const double w = o.box.max.x - o.box.min.x; w > widest) widest = w, height = o.box.min.y;
-  if (widest > 0.0) return height;
+    if (const double w = o.box.max.x - o.box.min.x; w > widest) widest = w, out = {o.box.min.y, o.box.max.y};
+  if (widest > 0.0) return out;
+  double height = -1e9;
   const auto& props = world.rigid().props();
   bool any = false;
   for (std::uint32_t i = 0; i < props.size(); ++i) {
@@ -79,7 +81,7 @@ double underground_height(const tire::World& world) {
       any = true;
     }
   }
-  return height;
+  return {height, height};
 }
 
 tire::Aabb level_bounds(const tire::LevelSession& session, double margin, double below) {

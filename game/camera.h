@@ -66,9 +66,16 @@ class Camera {
 
 // The union of the level's obstacles, props and regions (and the tires), with a margin: `below`
 // under it, `margin` at the sides and more above, where tires jump.
-// The height below which the level is underground, drawn as rock rather than sky: the bottom of
-// its widest obstacle, or else of its static props (chain terrain); none without either.
-double underground_height(const tire::World& world);
+// Where the level's ground is. `floor`: the height below which the level is underground, drawn as
+// rock under the ground and as the deep elsewhere (a chasm, past a ledge): the bottom of its widest
+// obstacle, or else of its static props (chain terrain); -1e9 without either. `surface`: the top of
+// the widest obstacle (the floor without one); an obstacle whose bottom is below it stands on the
+// ground, and rock goes on under it, where a platform floats.
+struct Underground {
+  double floor = -1e9;
+  double surface = -1e9;
+};
+Underground underground(const tire::World& world);
 
 constexpr double kBoundsMarginBelow = 0.75;  // m
 tire::Aabb level_bounds(const tire::LevelSession& session, double margin = 1.5,

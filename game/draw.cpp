@@ -83,13 +83,16 @@ void Draw::rect_outline(ScreenPoint a, ScreenPoint b, float width, SDL_Color col
 }
 
 void Draw::vertical_gradient(int width, int height, SDL_Color top, SDL_Color bottom) {
-  const auto w = static_cast<float>(width), h = static_cast<float>(height);
-  vertex({0, 0}, top);
-  vertex({w, 0}, top);
-  vertex({w, h}, bottom);
-  vertex({0, 0}, top);
-  vertex({w, h}, bottom);
-  vertex({0, h}, bottom);
+  vertical_gradient({0, 0}, {static_cast<float>(width), static_cast<float>(height)}, top, bottom);
+}
+
+void Draw::vertical_gradient(ScreenPoint min, ScreenPoint max, SDL_Color top, SDL_Color bottom) {
+  vertex(min, top);
+  vertex({max.x, min.y}, top);
+  vertex(max, bottom);
+  vertex(min, top);
+  vertex(max, bottom);
+  vertex({min.x, max.y}, bottom);
 }
 
 }  // namespace game

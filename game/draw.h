@@ -30,8 +30,10 @@ class Draw {
   // Sends the batched vertices to the renderer. Called by the other methods when the batch grows
   // and must be called before anything else draws (ImGui, SDL_RenderPresent).
   void flush();
-  // Two-colour vertical gradient over the whole target.
+  // Two-colour vertical gradient over the whole target, or over the box from `min` (top left) to
+  // `max` (bottom right).
   void vertical_gradient(int width, int height, SDL_Color top, SDL_Color bottom);
+  void vertical_gradient(ScreenPoint min, ScreenPoint max, SDL_Color top, SDL_Color bottom);
 
  private:
   void vertex(ScreenPoint p, SDL_Color c);

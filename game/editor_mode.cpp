@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "editor/level_edits.h"
@@ -573,7 +574,7 @@ void Editor::draw(Draw& d, WorldRenderer& renderer, int width, int height) {
   camera_.set_view(center_, scale_);
   update_preview();
   if (preview_.loaded()) {
-    renderer.set_floor(underground_height(preview_.world()));
+    renderer.set_underground(underground(preview_.world()));
     DebugOptions plain;
     renderer.draw(d, camera_, preview_, 1.0, plain);
   } else {
@@ -603,13 +604,50 @@ void Editor::draw_grid(Draw& d) {
   }
 }
 
+// The level's bounds (levels/README.md "bounds"), as the last level that validated has them: the
+// world outside them tinted, their edge drawn, and a label saying whether they are the level's own
+// or computed. A computed top is open: the tint and the sides go up out of the view.
+void Editor::draw_bounds(Draw& d) {
+  const std::shared_ptr<const tire::Level>& level = doc_.level();
+  if (!level) return;
+  const tire::LevelBounds& bounds = level->bounds;
+  const tire::Aabb view = camera_.view();
+  const tire::Vec2 lo{std::max(bounds.box.min.x, view.min.x - 1.0),
+                      std::max(bounds.box.min.y, view.min.y - 1.0)};
+  const tire::Vec2 hi{std::min(bounds.box.max.x, view.max.x + 1.0),
+                      std::min(bounds.box.max.y, view.max.y + 1.0)};
+  const SDL_Color outside = rgba(120, 0, 0, 60), edge = rgba(230, 60, 50, 220);
+  const auto rect = [&](tire::Vec2 a, tire::Vec2 b) {
+    if (a.x < b.x && a.y < b.y) d.rect(camera_.to_screen(a), camera_.to_screen(b), outside);
+  };
+  const tire::Vec2 vlo = view.min - tire::Vec2{1, 1}, vhi = view.max + tire::Vec2{1, 1};
+  rect(vlo, {vhi.x, std::min(lo.y, vhi.y)});           // below
+  rect({vlo.x, std::max(hi.y, vlo.y)}, vhi);           // above
+  rect({vlo.x, lo.y}, {std::min(lo.x, vhi.x), hi.y});  // left
+  rect({std::max(hi.x, vlo.x), lo.y}, {vhi.x, hi.y});  // right
+  if (lo.x >= hi.x || lo.y >= hi.y) return;
+  const ScreenPoint a = camera_.to_screen(lo), b = camera_.to_screen(hi);
+  if (bounds.box.min.y >= view.min.y) d.line(a, {b.x, a.y}, 2.0f, edge);
+  if (bounds.box.max.y <= view.max.y) d.line({a.x, b.y}, b, 2.0f, edge);
+  if (bounds.box.min.x >= view.min.x) d.line(a, {a.x, b.y}, 2.0f, edge);
+  if (bounds.box.max.x <= view.max.x) d.line({b.x, a.y}, b, 2.0f, edge);
+  char label[96];
+  std::snprintf(label, sizeof label, "bounds (%s)",
+                bounds.min && bounds.max   ? "the level's"
+                : bounds.min || bounds.max ? "partly computed"
+                                           : "computed: margin below and beside the level");
+  ImGui::GetBackgroundDrawList()->AddText(
+      {std::max(a.x, palette_width_ + 10.0f) + 6, std::min(a.y, static_cast<float>(height_) - 30.0f) - 20},
+      IM_COL32(255, 120, 110, 255), label);
+}
+
 void Editor::draw_overlay(Draw& d) {
   const Json& doc = doc_.json();
   const SDL_Color outline = rgba(255, 255, 255, 110), chosen = rgba(255, 170, 40),
                   region = rgba(90, 200, 255, 60), goal = rgba(90, 255, 120, 70),
                   path = rgba(255, 230, 120, 200);
   const std::string goal_name = editor::string_at(doc, "goal", "");
-  ImDrawList* labels = ImGui::GetForegroundDrawList();
+  ImDrawList* labels = ImGui::GetBackgroundDrawList();  // under the panels
   const auto screen = [this](const std::vector<Vec2>& points) {
     std::vector<ScreenPoint> out;
     for (const Vec2 p : points) out.push_back(camera_.to_screen(p));
@@ -636,6 +674,7 @@ void Editor::draw_overlay(Draw& d) {
       }
     }
   }
+  draw_bounds(d);
   // Handles of the one selected item.
   const float h = static_cast<float>(kHandlePixels) * 0.5f;
   for (const Handle& handle : handles_of(doc, selection_, scale_)) {

@@ -89,6 +89,7 @@ class Editor {
 
   void update_preview();
   void draw_overlay(Draw& d);
+  void draw_bounds(Draw& d);
   void draw_grid(Draw& d);
   void draw_properties();
   void draw_level_properties();
@@ -123,6 +124,10 @@ class Editor {
   std::map<std::string, editor::Json> pending_;
   std::map<std::string, std::string> refused_;
   bool edit_property(const std::string& id, const std::string& pointer, const tire::LevelKey& key);
+  // The value a missing key shows: its default, or what the engine computes for it (a bounds corner).
+  editor::Json computed_default(const std::string& pointer, const tire::LevelKey& key) const;
+  float properties_width_ = 340.0f;  // as last drawn
+  float palette_width_ = 180.0f;     // as last drawn
   void draw_keys(const std::string& id, const std::string& pointer, tire::LevelObject object,
                  const std::string& shape);
 

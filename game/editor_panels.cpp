@@ -3,6 +3,8 @@
 // asked before quitting with unsaved changes.
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "editor/level_edits.h"
@@ -50,6 +52,14 @@ LevelObject object_of(ItemKind kind) {
   return LevelObject::root;
 }
 
+// A key's label in the panel: its name and a short unit, "angular_velocity (rad/s)". A unit that is
+// a phrase ("(times the rest area)", "segments per substep") is left to the tooltip's range line.
+std::string label_of(const LevelKey& key) {
+  const bool short_unit =
+      !key.unit.empty() && key.unit.size() <= 8 && key.unit.find_first_of("( ") == std::string::npos;
+  return key.key + (short_unit ? " (" + key.unit + ")" : "");
+}
+
 std::string tooltip(const LevelKey& key) {
   std::string text = key.description;
   switch (key.type) {
@@ -68,6 +78,44 @@ std::string tooltip(const LevelKey& key) {
   return text;
 }
 
+// The property panel is a table: each key's label in the first column, wrapped to it rather than
+// cut, and its field filling the second.
+class PropertyTable {
+ public:
+  explicit PropertyTable(std::string id) : id_(std::move(id)) {}
+  ~PropertyTable() { end(); }
+  PropertyTable(const PropertyTable&) = delete;
+  PropertyTable& operator=(const PropertyTable&) = delete;
+  // Starts a row (and the table, when it is not open): the label's column is current.
+  void row() {
+    if (!open_) {
+      open_ = ImGui::BeginTable(id_.c_str(), 2, ImGuiTableFlags_SizingStretchProp);
+      if (open_) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+      }
+    }
+    if (!open_) return;
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+  }
+  void value_column() {
+    if (open_) ImGui::TableSetColumnIndex(1);
+  }
+  // Closes the table before something that spans the panel (a tree node).
+  void end() {
+    if (open_) ImGui::EndTable();
+    open_ = false;
+    ++part_;
+    id_ += "+";
+  }
+
+ private:
+  std::string id_;
+  bool open_ = false;
+  int part_ = 0;
+};
+
 }  // namespace
 
 // One key's field. Returns true when a value was entered (and committed or refused).
@@ -76,11 +124,19 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
   const Json& object = doc_.json().at(where);
   const auto it = object.find(key.key);
   const bool present = it != object.end();
-  const Json current = present ? *it : Json(key.default_value);
-  const std::string label = key.key + (key.unit.empty() ? "" : " (" + key.unit + ")") + "##" + id;
+  const Json current = present ? *it : computed_default(pointer, key);
+  const std::string label = "##" + id;
   std::optional<Json> entered;
   const auto pending = pending_.find(id);
+  // The label, in the first column; a key the level does not give is greyed, field and all.
   if (!present) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", label_of(key).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key).c_str());
+  if (ImGui::TableGetColumnCount() > 1) ImGui::TableSetColumnIndex(1);  // none: the panel is collapsed
+  const bool resettable = present && !key.required && key.type != KeyType::points;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::SetNextItemWidth(
+      resettable ? -(ImGui::CalcTextSize("x").x + 2.0f * style.FramePadding.x + style.ItemSpacing.x) : -1.0f);
   switch (key.type) {
     case KeyType::number:
     case KeyType::integer: {
@@ -101,8 +157,12 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
       double v[2] = {
           shown.is_array() && shown.size() == 2 && shown[0].is_number() ? shown[0].get<double>() : 0.0,
           shown.is_array() && shown.size() == 2 && shown[1].is_number() ? shown[1].get<double>() : 0.0};
-      if (ImGui::InputScalarN(label.c_str(), ImGuiDataType_Double, v, 2, nullptr, nullptr, "%.6g"))
+      if (ImGui::InputScalarN(label.c_str(), ImGuiDataType_Double, v, 2, nullptr, nullptr, "%.6g")) {
+        // "inf" (a computed bound's open top, as shown) or a typed "nan" becomes the range's end.
+        for (double& c : v)
+          if (!std::isfinite(c)) c = c < 0.0 ? key.range.min : key.range.max;
         pending_[id] = editor::vec2({v[0], v[1]});
+      }
       if (ImGui::IsItemDeactivatedAfterEdit() && pending_.contains(id)) entered = pending_[id];
       break;
     }
@@ -132,15 +192,14 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
       break;
     }
     case KeyType::points:
-      ImGui::Text("%s: %zu points (drag them in the view)", key.key.c_str(),
-                  present && it->is_array() ? it->size() : 0);
+      ImGui::TextWrapped("%zu points (drag them in the view)", present && it->is_array() ? it->size() : 0);
       break;
     case KeyType::object:
     case KeyType::array: break;
   }
   if (!present) ImGui::PopStyleColor();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key).c_str());
-  if (present && !key.required && key.type != KeyType::points) {
+  if (resettable) {
     ImGui::SameLine();
     if (ImGui::SmallButton(("x##reset" + id).c_str())) {
       Json next = doc_.json();
@@ -153,9 +212,12 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
   pending_.erase(id);
   Json next = doc_.json();
   next.at(where)[key.key] = *entered;
-  if (const std::string e = doc_.change(std::move(next)); !e.empty())
-    refused_[id] = e;
-  else
+  if (std::string e = doc_.change(std::move(next)); !e.empty()) {
+    // "FILE: /props/0/density: must be ...": the panel's field says which file and key.
+    const std::string file = doc_.file().string() + ": ";
+    if (e.starts_with(file)) e.erase(0, file.size());
+    refused_[id] = std::move(e);
+  } else
     refused_.erase(id);
   return true;
 }
@@ -163,11 +225,13 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
 void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelObject object,
                        const std::string& shape) {
   const Json::json_pointer where(pointer);
+  PropertyTable table("##keys" + id);
   for (const LevelKey& key : tire::level_keys(object)) {
     if (object == LevelObject::prop && !shape.empty() && !tire::applies_to_shape(key, shape)) continue;
     if (key.key == "$schema") continue;
     const std::string field = id + "/" + key.key;
     if (key.type == KeyType::object && key.nested) {
+      table.end();  // a nested object spans the panel, its keys in a table of their own
       const Json& parent = doc_.json().at(where);
       const bool present = parent.contains(key.key) && parent[key.key].is_object();
       if (object == LevelObject::prop && key.key == "path" && !present)
@@ -180,7 +244,8 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
             apply(std::move(next), "adding it was");
           }
           ImGui::SameLine();
-          ImGui::TextDisabled("(defaults)");
+          ImGui::TextDisabled(*key.nested == LevelObject::bounds ? "(computed from the level)"
+                                                                 : "(defaults)");
         } else {
           draw_keys(field, pointer + "/" + key.key, *key.nested, "");
         }
@@ -192,7 +257,12 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
     if (key.key == "goal" && object == LevelObject::root) {
       // The goal names a region: chosen from them.
       const std::string now = editor::string_at(doc_.json(), "goal", "");
-      if (ImGui::BeginCombo("goal##root", now.empty() ? "(none)" : now.c_str())) {
+      table.row();
+      ImGui::TextWrapped("goal");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key).c_str());
+      table.value_column();
+      ImGui::SetNextItemWidth(-1.0f);
+      if (ImGui::BeginCombo("##goal/root", now.empty() ? "(none)" : now.c_str())) {
         Json next = doc_.json();
         bool chosen = false;
         if (ImGui::Selectable("(none)", now.empty())) next.erase("goal"), chosen = true;
@@ -206,9 +276,14 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
       }
       continue;
     }
+    table.row();
     edit_property(field, pointer, key);
-    if (const auto r = refused_.find(field); r != refused_.end())
-      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", r->second.c_str());
+    if (const auto r = refused_.find(field); r != refused_.end()) {
+      table.end();  // the refusal spans the panel, under its field
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
+      ImGui::TextWrapped("%s", r->second.c_str());
+      ImGui::PopStyleColor();
+    }
   }
 }
 
@@ -227,7 +302,7 @@ void Editor::draw_level_properties() {
 
 void Editor::draw_item_properties(const editor::Pick& item) {
   const Json& doc = doc_.json();
-  ImGui::TextUnformatted(editor::describe(doc, item.kind, item.index).c_str());
+  ImGui::TextWrapped("%s", editor::describe(doc, item.kind, item.index).c_str());
   const std::string pointer =
       std::string("/") + editor::array_key(item.kind) + "/" + std::to_string(item.index);
   const std::string shape =
@@ -237,24 +312,43 @@ void Editor::draw_item_properties(const editor::Pick& item) {
   draw_keys(pointer, pointer, object_of(item.kind), shape);
 }
 
+Json Editor::computed_default(const std::string& pointer, const LevelKey& key) const {
+  // A bounds corner the level does not give: the one in force, computed from the level.
+  if (pointer == "/bounds" && (key.key == "min" || key.key == "max") && doc_.level()) {
+    const tire::Aabb& box = doc_.level()->bounds.box;
+    const tire::Vec2 v = key.key == "min" ? box.min : box.max;
+    return Json::array({v.x, v.y});
+  }
+  // A default that follows another key (a tire's kinetic_friction: its friction) shows that key's.
+  if (key.parameter)
+    if (const char* follows = tire::parameter(*key.parameter).default_follows) {
+      const std::string_view field =
+          std::string_view(follows).substr(std::string_view(follows).rfind('.') + 1);
+      const Json& object = doc_.json().at(Json::json_pointer(pointer));
+      if (const auto it = object.find(std::string(field)); it != object.end()) return *it;
+      if (const tire::Parameter* p = tire::find_parameter(follows)) return p->default_value;
+    }
+  return key.default_value;
+}
+
 void Editor::draw_properties() {
-  ImGui::SetNextWindowPos({static_cast<float>(width_) - 300.0f, 10.0f}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({290.0f, static_cast<float>(height_) - 20.0f}, ImGuiCond_Always);
-  ImGui::Begin("Properties", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-  ImGui::PushItemWidth(140.0f);
   std::optional<editor::Pick> item;
   if (!selection_.empty()) {
     item = selection_.front().item();
     for (const editor::Pick& p : selection_)
       if (p.item() != *item) item.reset();
   }
+  // 28 % of the window: at 1280 px wide, 360 px, which holds a label and a field side by side.
+  properties_width_ = std::clamp(0.28f * static_cast<float>(width_), 340.0f, 480.0f);
+  ImGui::SetNextWindowPos({static_cast<float>(width_) - properties_width_ - 10.0f, 10.0f}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({properties_width_, static_cast<float>(height_) - 20.0f}, ImGuiCond_Always);
+  ImGui::Begin("Properties", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
   if (selection_.empty())
     draw_level_properties();
   else if (item && editor::shape_of(doc_.json(), item->kind, item->index))
     draw_item_properties(*item);
   else
     ImGui::Text("%zu selected", selection_.size());
-  ImGui::PopItemWidth();
   ImGui::End();
 }
 
@@ -283,16 +377,23 @@ void Editor::draw_ui() {
   ImGui::TextDisabled(
       "wheel: zoom at the cursor\nmiddle or Space+drag: pan\nF: frame the level\nDel: delete, Ctrl+D: copy\n"
       "arrows: nudge a grid step\nCtrl+Z / Ctrl+Y: undo / redo");
+  palette_width_ = ImGui::GetWindowWidth();
   ImGui::End();
 
   draw_properties();
 
   if (!doc_.errors().empty()) {
-    ImGui::SetNextWindowPos({190.0f, static_cast<float>(height_) - 10.0f}, ImGuiCond_Always, {0.0f, 1.0f});
-    ImGui::SetNextWindowSize({static_cast<float>(width_) - 500.0f, 0.0f}, ImGuiCond_Always);
+    // Between the palette and the property panel, each error wrapped to the window's width.
+    const float left = palette_width_ + 20.0f;
+    const float width = std::max(200.0f, static_cast<float>(width_) - left - properties_width_ - 30.0f);
+    ImGui::SetNextWindowPos({left, static_cast<float>(height_) - 10.0f}, ImGuiCond_Always, {0.0f, 1.0f});
+    ImGui::SetNextWindowSize({width, 0.0f}, ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints({width, 0.0f}, {width, 0.5f * static_cast<float>(height_)});
     ImGui::Begin("Not valid: it cannot be saved or played until fixed", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    for (const std::string& e : doc_.errors()) ImGui::TextColored({1.0f, 0.5f, 0.45f, 1.0f}, "%s", e.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.5f, 0.45f, 1.0f});
+    for (const std::string& e : doc_.errors()) ImGui::TextWrapped("%s", e.c_str());
+    ImGui::PopStyleColor();
     ImGui::End();
   }
 

@@ -28,7 +28,7 @@ const char* const kKeys[][2] = {
     {"Esc", "level menu"},
     {"F1", "this help"},
     {"F2", "tuning panel"},
-    {"F3", "debug drawing (sleeping tires darker)"},
+    {"F3", "debug drawing and numbers (sleeping tires darker)"},
     {"F5", "save a replay of this session into replays/"},
     {"E / F6", "edit this level (and back to playing it)"},
     {"M", "mute / unmute the sound"},
@@ -66,21 +66,51 @@ bool format_asleep_line(std::span<char> out, std::size_t asleep, std::size_t tir
   return true;
 }
 
-void draw_hud(const HudInfo& info) {
+double time_left(double limit, double time) { return std::max(0.0, limit - time); }
+
+void format_clock_line(std::span<char> out, double time, std::optional<double> limit) {
+  if (out.empty()) return;
+  if (limit)
+    std::snprintf(out.data(), out.size(), "time left %6.1f s", time_left(*limit, time));
+  else
+    std::snprintf(out.data(), out.size(), "time      %7.2f s", time);
+}
+
+void draw_hud(const HudInfo& info, const DevInfo& dev) {
   ImGui::SetNextWindowPos({10, 10});
   ImGui::SetNextWindowBgAlpha(0.55f);
   if (ImGui::Begin("##hud", nullptr, kOverlay)) {
     ImGui::TextUnformatted(info.level.data(), info.level.data() + info.level.size());
     ImGui::Separator();
-    ImGui::Text("time   %7.2f s   tick %llu", info.time, static_cast<unsigned long long>(info.tick));
-    ImGui::Text("speed  %7.2f m/s (%.0f km/h)%s", info.speed, info.speed * 3.6,
-                info.grounded ? "" : "  airborne");
-    ImGui::Text("FPS    %7.0f", info.fps);
-    ImGui::Text("physics %6.2f ms/frame (%d ticks)", info.physics_ms, info.steps_last_frame);
-    ImGui::Text("tires  %7zu", info.tires);
-    char asleep[64];
-    if (format_asleep_line(asleep, info.asleep, info.tires)) ImGui::TextUnformatted(asleep);
+    char clock[64];
+    format_clock_line(clock, info.time, info.time_limit);
+    // The last ten seconds of a time limit in red.
+    if (info.time_limit && time_left(*info.time_limit, info.time) <= 10.0)
+      ImGui::TextColored({1.0f, 0.4f, 0.35f, 1.0f}, "%s", clock);
+    else
+      ImGui::TextUnformatted(clock);
+    if (!info.target.empty())
+      ImGui::TextColored({1.0f, 0.85f, 0.35f, 1.0f}, "%.*s", static_cast<int>(info.target.size()),
+                         info.target.data());
+    if (!info.over) {
+      ImGui::Text("speed     %5.0f km/h", info.speed * 3.6);
+      if (info.grounded)
+        ImGui::TextDisabled("on the ground");
+      else
+        ImGui::TextColored({0.55f, 0.8f, 1.0f, 1.0f}, "in the air");
+    }
     if (info.paused) ImGui::TextColored({1.0f, 0.85f, 0.3f, 1.0f}, "PAUSED  (P resume, . step)");
+    if (dev.shown) {
+      ImGui::Separator();
+      ImGui::TextDisabled("F3: for developers");
+      ImGui::Text("tick    %llu", static_cast<unsigned long long>(dev.tick));
+      ImGui::Text("FPS     %6.0f", dev.fps);
+      ImGui::Text("physics %6.2f ms/frame (%d ticks)", dev.physics_ms, dev.steps_last_frame);
+      ImGui::Text("speed   %6.2f m/s", info.speed);
+      ImGui::Text("tires   %6zu", dev.tires);
+      char asleep[64];
+      if (format_asleep_line(asleep, dev.asleep, dev.tires)) ImGui::TextUnformatted(asleep);
+    }
     ImGui::TextDisabled("F1 help   F2 tuning   F3 debug   Esc levels");
   }
   ImGui::End();

@@ -21,6 +21,20 @@ constexpr const char* kBoldFontFiles[] = {
     "/usr/share/fonts/TTF/DejaVuSans-Bold.ttf",
 };
 
+// What the interface writes beyond ASCII, from the level reference's tables and the parameter
+// table: Latin-1 (° ± ² ³ · ×), Greek (α Δ μ τ), punctuation (– …), superscripts and subscripts
+// (the ⁶ of "10⁶", μ₁), arrows (→) and mathematical operators (− √ ≈). DejaVu Sans has them all;
+// ImGui's default ranges stop at Latin-1 and drew "?" for the rest (tooltips read "(0, 10?]").
+constexpr ImWchar kGlyphRanges[] = {
+    0x0020, 0x00FF,  // Basic Latin, Latin-1 Supplement
+    0x0370, 0x03FF,  // Greek
+    0x2010, 0x205E,  // General Punctuation
+    0x2070, 0x209F,  // Superscripts and Subscripts
+    0x2190, 0x21FF,  // Arrows
+    0x2200, 0x22FF,  // Mathematical Operators
+    0,
+};
+
 const char* first_existing(const auto& files) {
   std::error_code ec;
   for (const char* f : files)
@@ -54,9 +68,9 @@ bool ImGuiLayer::init(SDL_Window* window, SDL_Renderer* renderer) {
   style.Colors[ImGuiCol_WindowBg].w = 0.88f;
 
   if (const char* file = first_existing(kFontFiles)) {
-    io.Fonts->AddFontFromFileTTF(file, 17.0f);
+    io.Fonts->AddFontFromFileTTF(file, 17.0f, nullptr, kGlyphRanges);
     const char* bold = first_existing(kBoldFontFiles);
-    big_ = io.Fonts->AddFontFromFileTTF(bold ? bold : file, 34.0f);
+    big_ = io.Fonts->AddFontFromFileTTF(bold ? bold : file, 34.0f, nullptr, kGlyphRanges);
   } else {
     ImFontConfig config;
     config.SizePixels = 15.0f;

@@ -58,8 +58,17 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vec
   return choice;
 }
 
-EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time,
-                          const std::string& note, ImFont* big) {
+const char* end_title(tire::ScriptStatus status, tire::EndReason reason) {
+  if (status == tire::ScriptStatus::won) return "Level complete!";
+  switch (reason) {
+    case tire::EndReason::time_limit: return "Time's up";
+    case tire::EndReason::out_of_bounds: return "Off the edge";
+    default: return "You lost";
+  }
+}
+
+EndChoice draw_end_screen(tire::ScriptStatus status, tire::EndReason reason, const std::string& level,
+                          double time, const std::string& note, ImFont* big) {
   EndChoice choice = EndChoice::none;
   const bool won = status == tire::ScriptStatus::won;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -70,12 +79,16 @@ EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, d
                    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                        ImGuiWindowFlags_NoSavedSettings)) {
     if (big) ImGui::PushFont(big);
-    centred_text(won ? "Level complete!" : "You lost",
+    centred_text(end_title(status, reason),
                  won ? ImVec4{0.6f, 1.0f, 0.6f, 1.0f} : ImVec4{1.0f, 0.6f, 0.6f, 1.0f});
     if (big) ImGui::PopFont();
     char line[256];
     std::snprintf(line, sizeof line, "%s  -  %.2f s", level.c_str(), time);
     centred_text(line, {0.9f, 0.9f, 0.9f, 1.0f});
+    if (reason == tire::EndReason::time_limit)
+      centred_text("The time limit ran out before the finish.", {0.9f, 0.9f, 0.9f, 1.0f});
+    else if (reason == tire::EndReason::out_of_bounds)
+      centred_text("The tire left the level.", {0.9f, 0.9f, 0.9f, 1.0f});
     if (!note.empty()) centred_text(note.c_str(), {1.0f, 0.85f, 0.35f, 1.0f});
     ImGui::Spacing();
     if (won) {

@@ -24,9 +24,13 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vec
 
 enum class EndChoice { none, next, retry };
 
-// "Level complete" or "You lost", the time and `note` ("New best time!", "best 9.85 s"), with the
+// The end screen's title: "Level complete!" for a win; for a loss, what ended it: "Time's up",
+// "Off the edge" (the level's bounds), "You lost" (the script's lose action).
+const char* end_title(tire::ScriptStatus status, tire::EndReason reason);
+
+// The title, the level and its time and `note` ("New best time!", "best 9.85 s"), with the
 // next-level / retry buttons.
-EndChoice draw_end_screen(tire::ScriptStatus status, const std::string& level, double time,
-                          const std::string& note, ImFont* big);
+EndChoice draw_end_screen(tire::ScriptStatus status, tire::EndReason reason, const std::string& level,
+                          double time, const std::string& note, ImFont* big);
 
 }  // namespace game

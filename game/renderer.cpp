@@ -21,6 +21,9 @@ constexpr SDL_Color kGridMajor = rgba(255, 255, 255, 70);
 constexpr SDL_Color kEarth = rgba(122, 92, 62);
 constexpr SDL_Color kEarthEdge = rgba(74, 54, 36);
 constexpr SDL_Color kBedrock = rgba(66, 52, 42);
+// The deep under the level, seen down a pit or past a ledge: the sky fades to it over kDeepFade.
+constexpr SDL_Color kDeep = rgba(18, 20, 30);
+constexpr double kDeepFade = 4.0;  // m
 constexpr SDL_Color kGrass = rgba(96, 160, 64);
 constexpr SDL_Color kStatic = rgba(104, 116, 134);
 constexpr SDL_Color kDynamic = rgba(214, 146, 66);
@@ -43,6 +46,11 @@ SDL_Color prop_color(const tire::Prop& p) {
 
 ScreenPoint lerp(ScreenPoint a, ScreenPoint b, float t) {
   return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+}
+
+SDL_Color mix(SDL_Color a, SDL_Color b, float t) {
+  const auto m = [t](Uint8 x, Uint8 y) { return static_cast<int>(std::lround(x + (y - x) * t)); };
+  return rgba(m(a.r, b.r), m(a.g, b.g), m(a.b, b.b), m(a.a, b.a));
 }
 
 }  // namespace
@@ -170,9 +178,19 @@ void WorldRenderer::draw_background(Draw& d, const Camera& camera) {
     d.line({0, sy}, {static_cast<float>(camera.width()), sy}, major ? 1.5f : 1.0f,
            major ? kGridMajor : kGridMinor);
   }
+  // Below the ground's bottom is the deep, seen down a pit or past the level's edge: the sky fades
+  // to dark there. The ground itself goes on down as rock, under each piece of it only
+  // (draw_obstacles, draw_props), so that a chasm stays open to the bottom of the screen.
   if (floor_ > view.min.y) {
-    const float top = camera.to_screen({0, floor_}).y;
-    d.rect({0, top}, {static_cast<float>(camera.width()), static_cast<float>(camera.height())}, kBedrock);
+    const auto w = static_cast<float>(camera.width()), h = static_cast<float>(camera.height());
+    const float floor = camera.to_screen({0, floor_}).y, deep = camera.to_screen({0, floor_ - kDeepFade}).y;
+    const SDL_Color sky = mix(kSkyTop, kSkyBottom, std::clamp(floor / h, 0.0f, 1.0f));
+    const auto shade = [&](float y) {
+      return mix(sky, kDeep, std::clamp((y - floor) / (deep - floor), 0.0f, 1.0f));
+    };
+    const float top = std::max(floor, 0.0f), end = std::min(deep, h);
+    if (end > top) d.vertical_gradient({0, top}, {w, end}, shade(top), shade(end));
+    if (deep < h) d.rect({0, std::max(deep, 0.0f)}, {w, h}, kDeep);
   }
 }
 
@@ -180,6 +198,11 @@ void WorldRenderer::draw_obstacles(Draw& d, const Camera& camera, const tire::Wo
   const tire::Aabb view = camera.view();
   const float grass = std::max(3.0f, camera.pixels(0.08));
   for (const tire::Obstacle& o : world.rigid().obstacles()) {
+    // An obstacle that stands on the ground (its bottom below the ground's surface): rock goes on
+    // under it to the bottom of the view. A platform floats.
+    if (o.box.min.y < surface_ && o.box.min.y > view.min.y && o.box.min.x < view.max.x &&
+        o.box.max.x > view.min.x)
+      d.rect(camera.to_screen(o.box.min), camera.to_screen({o.box.max.x, view.min.y}), kBedrock);
     if (!o.box.overlaps(view)) continue;
     const ScreenPoint a = camera.to_screen(o.box.min), b = camera.to_screen(o.box.max);
     d.rect(a, b, kEarth);
@@ -216,8 +239,9 @@ void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession&
       }
       case tire::PropShape::chain: {
         // Terrain, solid on the side opposite its edge normals. An edge that faces up is filled
-        // down to the underground, like the ground; any other edge (a wall, an overhang) is
-        // thickened by the chain's thickness, with mitred joints. Then the surface line.
+        // down to the floor, like the ground, and rock under it to the bottom of the view; any
+        // other edge (a wall, an overhang) is thickened by the chain's thickness, with mitred
+        // joints. Then the surface line.
         const std::size_t count = g.vertices.size();
         const std::size_t edges = std::min(g.loop ? count : count - 1, g.normals.size());
         const double depth = std::max(g.thickness, 0.1);
@@ -237,9 +261,15 @@ void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession&
           const std::size_t f = (e + 1) % count;
           const tire::Vec2 a = pose.to_world(g.vertices[e]), b = pose.to_world(g.vertices[f]);
           const tire::Vec2 n = pose.rotate(g.normals[e]);
+          const double bottom = camera.view().min.y;
           if (terrain && n.y > 0.3 && floor_ < std::min(a.y, b.y)) {
             d.quad(camera.to_screen(a), camera.to_screen(b), camera.to_screen({b.x, floor_}),
                    camera.to_screen({a.x, floor_}), body);
+            if (floor_ > bottom)
+              d.rect(camera.to_screen({a.x, floor_}), camera.to_screen({b.x, bottom}), kBedrock);
+          } else if (terrain && n.y > 0.3 && std::min(a.y, b.y) > bottom) {
+            d.quad(camera.to_screen(a), camera.to_screen(b), camera.to_screen({b.x, bottom}),
+                   camera.to_screen({a.x, bottom}), kBedrock);
           } else {
             d.quad(camera.to_screen(a), camera.to_screen(b),
                    camera.to_screen(pose.to_world(g.vertices[f] - vertex_offset(f))),
@@ -397,6 +427,13 @@ void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession&
         d.rect_outline(a, camera.to_screen({r.box.max.x, r.box.min.y}), 1.5f, rgba(40, 70, 220, 200));
         labels->AddText({a.x + 4, a.y + 2}, IM_COL32(30, 50, 200, 255), r.name.c_str());
       }
+
+  // The level's bounds (a computed top is open: drawn at the top of the view).
+  if (const std::optional<tire::Aabb>& b = session.level_session().bounds()) {
+    const tire::Aabb view = camera.view();
+    const tire::Vec2 hi{b->max.x, std::min(b->max.y, view.max.y + 1.0)};
+    d.rect_outline(camera.to_screen(b->min), camera.to_screen(hi), 2.0f, rgba(220, 50, 40, 200));
+  }
 
   // What the engine shows of its own state (debug_draw_sdl.h).
   SdlDebugDraw shapes(d, camera, session, alpha, positions_, shape_);

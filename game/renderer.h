@@ -48,8 +48,8 @@ class WorldRenderer {
   // long on screen (px).
   static constexpr float kMinSegmentPixels = 6.0f;
 
-  // Below this height (m) the level is underground: drawn as rock rather than sky.
-  void set_floor(double y) { floor_ = y; }
+  // Where the level's ground is (camera.h): below its floor, rock under the ground, the deep elsewhere.
+  void set_underground(const Underground& u) { floor_ = u.floor, surface_ = u.surface; }
   void draw(Draw& draw, const Camera& camera, const GameSession& session, double alpha,
             const DebugOptions& debug);
   // The grab line from the grabbed tire to the mouse.
@@ -77,6 +77,7 @@ class WorldRenderer {
   TireTexture* tire_texture(SDL_Renderer* renderer, const tire::Tire& t, float radius_px, bool is_player);
 
   double floor_ = -1e9;
+  double surface_ = -1e9;
   std::vector<TireTexture> tire_textures_;
   std::vector<SDL_FPoint> uv_;  // texture coordinates of a reduced tire's drawn points
   std::uint32_t uv_segments_ = 0, uv_step_ = 0;

@@ -12,16 +12,21 @@ constexpr const char* kTire = "Tire";
 constexpr const char* kWorld = "World and solver";
 
 // The panel's presentation of each key it tunes. Which keys those are is the table's business.
+// The ranges of the compliances and of the pressure are what the solver holds: at either end of any
+// slider, with any other slider at either end, a tire dropped from 1.5 m and driven over a kerb
+// keeps every cell between tread and rim the right way out and its tread uncrossed. Softer spokes
+// or rim, stiffer air, or a pressure further from 1 fold it (docs/tuning-limits.md, measured by
+// game/tests/test_tuning_limits.cpp).
 constexpr SliderSpec kSliders[] = {
     {"tires.compliance.outer", kCompliance, "outer ring", 1e-9, 1e-1, SliderScale::exponent, "",
      "tread segments (m/N): larger is softer"},
-    {"tires.compliance.inner", kCompliance, "inner ring", 1e-9, 1e-1, SliderScale::exponent, "",
+    {"tires.compliance.inner", kCompliance, "inner ring", 1e-9, 1e-3, SliderScale::exponent, "",
      "rim segments (m/N)"},
-    {"tires.compliance.spoke", kCompliance, "spokes", 1e-9, 1e-1, SliderScale::exponent, "",
+    {"tires.compliance.spoke", kCompliance, "spokes", 1e-9, 1e-4, SliderScale::exponent, "",
      "sidewall spokes (m/N)"},
-    {"tires.compliance.pressure", kCompliance, "pressure##c", 1e-8, 1e0, SliderScale::exponent, "",
+    {"tires.compliance.pressure", kCompliance, "pressure##c", 1e-6, 1e0, SliderScale::exponent, "",
      "the air (m^4/J): larger lets the area change more"},
-    {"tires.pressure", kTire, "pressure", 0.1, 4.0, SliderScale::linear, "%.2f",
+    {"tires.pressure", kTire, "pressure", 0.9, 2.0, SliderScale::linear, "%.2f",
      "target area / rest area: above 1 inflates"},
     {"tires.mass_scale", kTire, "mass scale", 0.1, 10.0, SliderScale::logarithmic, "%.2f x",
      "each tire's mass times this"},

@@ -53,7 +53,8 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 bool apply_tuning(tire::World& world, std::string_view key, double value);
 
 // How the panel shows a key: its slider. The slider's range may be narrower than the table's
-// range, for usability, never wider (slider_range() clips it, and a test checks it).
+// range, for usability and to keep to what the solver holds without folding the tire
+// (docs/tuning-limits.md), never wider (slider_range() clips it, and a test checks it).
 enum class SliderScale { linear, logarithmic, exponent, integer };
 struct SliderSpec {
   std::string_view key;

@@ -64,7 +64,9 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
   ImGui::SetNextWindowSize({430, 0}, ImGuiCond_Appearing);
   if (ImGui::Begin("Tuning (F2)", open, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::PushItemWidth(230);
-    ImGui::TextDisabled("Applies live to every tire in the world, and wakes them.");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("Applies live to every tire, those spawned later too, and wakes them.");
+    ImGui::PopStyleColor();
     // The keys are the parameter table's (tuning_keys()); each is shown in its slider's section,
     // in the table's order, within the table's range.
     const auto& rows = tuning_parameters();
@@ -110,13 +112,12 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
       }
     }
     if (ImGui::Button("Reset to the level's values")) t = level_defaults;
-    ImGui::PopItemWidth();
     if (ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen)) {
       float volume = static_cast<float>(sound.volume);
       if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) sound.volume = volume;
-      ImGui::SameLine();
       ImGui::Checkbox("mute (M)", &sound.muted);
     }
+    ImGui::PopItemWidth();
     if (ImGui::CollapsingHeader("Debug drawing", ImGuiTreeNodeFlags_DefaultOpen)) {
       ImGui::Checkbox("debug drawing on (F3)", &debug.enabled);
       ImGui::Checkbox("inner ring and spokes", &debug.structure);

@@ -117,7 +117,8 @@ TEST_CASE("budgets: a flood of messages keeps at most the budgets on screen", "[
 TEST_CASE("budgets: the text of the messages on screen together is bounded", "[unit][budgets]") {
   const std::string message =
       R"({"action": "message", "text": ")" + std::string(400, 'y') + R"(", "seconds": 60})";
-  const auto session = session_of(R"({"name": "long", "tires": [{"position": [0, 1]}],
+  // On the ground: a tire falling for ten seconds would leave the level's bounds and end it.
+  const auto session = session_of(R"({"name": "long", "tires": [{"position": [0, 1]}], )" + kGround + R"(,
     "budgets": {"message_bytes": 1000},
     "triggers": [{"when": {"type": "every", "period": 1}, "do": [)" +
                                   message + "]}]}");

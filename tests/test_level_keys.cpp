@@ -22,7 +22,9 @@ namespace {
 
 constexpr std::array kObjects{LevelObject::root,       LevelObject::solver,   LevelObject::tire,
                               LevelObject::compliance, LevelObject::obstacle, LevelObject::prop,
-                              LevelObject::path,       LevelObject::region,   LevelObject::budgets};
+                              LevelObject::path,       LevelObject::region,   LevelObject::budgets,
+                              LevelObject::bounds};
+static_assert(kObjects.size() == kLevelObjects);
 
 const char* object_name(LevelObject o) {
   switch (o) {
@@ -35,6 +37,7 @@ const char* object_name(LevelObject o) {
     case LevelObject::path: return "path";
     case LevelObject::region: return "region";
     case LevelObject::budgets: return "budgets";
+    case LevelObject::bounds: return "bounds";
   }
   return "?";
 }
@@ -93,6 +96,10 @@ Placed place(LevelObject object, std::string_view shape = "box") {
     case LevelObject::budgets:
       p.doc["budgets"] = json::object();
       p.pointer = "/budgets";
+      break;
+    case LevelObject::bounds:
+      p.doc["bounds"] = json::object();
+      p.pointer = "/bounds";
       break;
   }
   return p;
@@ -381,6 +388,7 @@ TEST_CASE("level keys: the reference pages list each object's keys in the table'
       {LevelObject::root, {"levels/README.md", "## Root"}},
       {LevelObject::solver, {"levels/README.md", "## `solver`"}},
       {LevelObject::budgets, {"levels/README.md", "## `budgets`"}},
+      {LevelObject::bounds, {"levels/README.md", "## `bounds`"}},
       {LevelObject::tire, {"levels/README.md", "## Tire"}},
       {LevelObject::compliance, {"levels/README.md", "### `compliance`"}},
       {LevelObject::obstacle, {"levels/README.md", "## Obstacle"}},

@@ -268,6 +268,8 @@ std::vector<Kind> kinds() {
                  },
                  true});
 
+  out.push_back({"bounds", def("bounds"), "/bounds", base_of("bounds"),
+                 [](const json& obj) { return with(named_level(), "bounds", obj); }, true});
   out.push_back({"region", def("region"), "/regions/0", base_of("region"),
                  [](const json& obj) { return with(named_level(), "regions", json::array({obj})); }, false});
   out.push_back({"trigger", def("trigger"), "/triggers/0", base_of("trigger"),
@@ -404,6 +406,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
   const Obstacle o;
   const PropSpec p;
   const KinematicPath k;
+  const LevelBounds b;
   return {
       {"root", {{"description", l.description}, {"gravity", vec(l.gravity)}}},
       {"solver",
@@ -458,6 +461,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"restitution", p.restitution},
         {"velocity", vec(p.velocity)},
         {"angular_velocity", p.angular_velocity}}},
+      {"bounds", {{"margin", b.margin}}},
       {"path",
        {{"speed", k.speed},
         {"mode", k.mode == PathMode::loop   ? "loop"

@@ -59,6 +59,31 @@ TEST_CASE("a grabbed tire follows the mouse and falls when released", "[unit][wo
   CHECK(t.centroid().y < 0.6);  // fell, bounced and settled back on the ground
 }
 
+TEST_CASE("a tires. key set while the world runs holds for the tires added after it", "[unit][world]") {
+  World world = flat_world(tire_at({0, 0.5}));
+  REQUIRE(world.set_parameter("tires.compliance.spoke", 1e-4));
+  REQUIRE(world.set_parameter("tires.friction", 0.3));
+  REQUIRE(world.set_parameter("tires.mass", 40));
+  REQUIRE(world.set_parameter("tires.mass_scale", 0.5));  // after tires.mass: of the spawn mass
+  REQUIRE(world.set_parameter("player.jump_speed", 9));   // the player's own: not for others
+  TireSpec spec = tire_at({3, 0.5});
+  spec.friction = 0.9;
+  spec.mass = 8;
+  const std::optional<TireId> spawned = world.spawn_tire(spec);
+  REQUIRE(spawned);
+  const Tire& t = *world.find_tire(*spawned);
+  CHECK(t.spec.compliance.spoke == 1e-4);
+  CHECK(t.spec.friction == 0.3);
+  CHECK(t.particle_mass() * t.particle_count() == Approx(4.0));  // 0.5 × its own 8 kg
+  CHECK(t.spec.jump_speed == TireSpec{}.jump_speed);
+  // A key set again moves to the end of the order: the mass now wins over the scale.
+  REQUIRE(world.set_parameter("tires.mass", 12));
+  const Tire& u = *world.find_tire(*world.spawn_tire(tire_at({6, 0.5})));
+  CHECK(u.particle_mass() * u.particle_count() == Approx(12.0));
+  // The same as the tires that were there: the first tire, set directly, and the spawned one agree.
+  CHECK(world.tires().front().spec.compliance.spoke == t.spec.compliance.spoke);
+}
+
 TEST_CASE("compliance and mass can be tuned live", "[unit][world]") {
   World world = flat_world(tire_at({0, 0.5}));
   run(world, 120);

@@ -287,3 +287,17 @@ add_test(NAME "tire-soak holds a level's spawn flood to the tires it was given"
   COMMAND tire-soak --level ${BAD}/spawn-flood.json --minutes 0.2 --max-tires 20 --warmup 0)
 set_tests_properties("tire-soak holds a level's spawn flood to the tires it was given" PROPERTIES LABELS unit
   PASS_REGULAR_EXPRESSION "tire-soak: ok: .*tires at end 21 \\(max 21\\).*ticks past budgets.tires 0")
+# A level's bounds (levels/README.md "bounds"). A level that names none has them computed from its
+# geometry: a tire driven off a 5 m shelf into nothing is lost once it has fallen 10 m below it,
+# in under 200 ticks, and the run says why and when; in a level with checkpoints it is put back.
+tirectl_test("run loses a tire driven off a ledge, by the computed bounds" 0
+  ARGS run ${BAD}/ledge.json --ticks 200 --steer 1
+  STDOUT "\"status\": \"lost\",[ \n]*\"end\": {[ \n]*\"tick\": 1[0-9][0-9],[ \n]*\"time\": [0-9.]+,[ \n]*\"reason\": \"out_of_bounds\"[ \n]*},[ \n]*\"bounds\": {[ \n]*\"min\": \\[[ \n]*-15.0,[ \n]*-11.0[ \n]*\\],[ \n]*\"max\": \\[[ \n]*15.0,[ \n]*null[ \n]*\\]")
+tirectl_test("run keeps a tire that stays on the ledge" 0
+  ARGS run ${BAD}/ledge.json --ticks 200
+  STDOUT "\"status\": \"running\",[ \n]*\"end\": null,")
+tirectl_test("run puts a tire that leaves the bounds back at the checkpoint" 0
+  ARGS run ${BAD}/ledge-checkpoint.json --ticks 400 --steer 1
+  STDOUT "\"status\": \"running\",[ \n]*\"end\": null,.*\"respawns\": [1-9]")
+tirectl_test("validate names a bounds corner the player starts outside" 2 ARGS validate ${BAD}/bad-bounds.json
+  STDERR "bad-bounds.json: /bounds/min: must be below and left of the player's start \\[0,0.5\\] \\(/tires/0/position\\), got \\[2,-5\\]")

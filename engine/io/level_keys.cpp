@@ -143,6 +143,9 @@ std::vector<LevelKey> root_keys() {
       Key("props", T::array, "rigid bodies simulated by Box2D, at most {max}")
           .range({0, static_cast<double>(LevelLimits::max_props)})
           .nested(LevelObject::prop),
+      Key("bounds", T::object,
+          "the box the player must stay in; leaving it loses, or respawns at the last checkpoint")
+          .nested(LevelObject::bounds),
       Key("regions", T::array, "named boxes the script watches, at most {max}")
           .range({0, static_cast<double>(ScriptLimits::max_regions)})
           .nested(LevelObject::region),
@@ -395,11 +398,27 @@ std::vector<LevelKey> budget_keys() {
   });
 }
 
-const std::array<std::vector<LevelKey>, static_cast<std::size_t>(LevelObject::budgets) + 1>& all_keys() {
+std::vector<LevelKey> bounds_keys() {
+  using T = KeyType;
+  const LevelBounds bounds;
+  return table({
+      Key("min", T::vec2, "lower-left corner, each in {range}; default: the level's geometry less margin")
+          .range(kCoordinate, "m"),
+      Key("max", T::vec2,
+          "upper-right corner, greater than min on both axes; default: right of the geometry by margin, no "
+          "top")
+          .range(kCoordinate, "m"),
+      Key("margin", T::number, "{range}: how far below and beside the level's geometry a computed side lies")
+          .range({0.0, 1000.0}, "m")
+          .by_default(bounds.margin),
+  });
+}
+
+const std::array<std::vector<LevelKey>, kLevelObjects>& all_keys() {
   // Built once, in LevelObject's order.
-  static const std::array<std::vector<LevelKey>, static_cast<std::size_t>(LevelObject::budgets) + 1> keys{
+  static const std::array<std::vector<LevelKey>, kLevelObjects> keys{
       root_keys(), solver_keys(), tire_keys(),   compliance_keys(), obstacle_keys(),
-      prop_keys(), path_keys(),   region_keys(), budget_keys()};
+      prop_keys(), path_keys(),   region_keys(), budget_keys(),     bounds_keys()};
   return keys;
 }
 

@@ -122,6 +122,7 @@ void populate_world(const Level& level, World& world) {
 std::unique_ptr<LevelSession> make_session(const Level& level) {
   auto session = std::make_unique<LevelSession>(level.solver, level.gravity);
   populate_world(level, session->world());
+  session->set_bounds(level.bounds.box);
   session->set_script(level.script);
   return session;
 }

@@ -89,9 +89,8 @@ const LevelKey& level_key(LevelObject object, std::string_view key) {
 }
 
 std::span<const std::string_view> level_key_names(LevelObject object) {
-  constexpr std::size_t kObjects = static_cast<std::size_t>(LevelObject::budgets) + 1;
-  static const std::array<std::vector<std::string_view>, kObjects> names = [] {
-    std::array<std::vector<std::string_view>, kObjects> out;
+  static const std::array<std::vector<std::string_view>, kLevelObjects> names = [] {
+    std::array<std::vector<std::string_view>, kLevelObjects> out;
     for (std::size_t o = 0; o < out.size(); ++o)
       for (const LevelKey& k : level_keys(static_cast<LevelObject>(o))) out[o].push_back(k.key);
     return out;
@@ -426,6 +425,61 @@ void check_budgets(JsonReader& r, const json& doc, const Level& level) {
   }
 }
 
+// The level's bounds (level_bounds.h): the corners given, the box in force, and that the player
+// starts inside it. `issues`: the reader's, to tell whether the bounds object itself was sound.
+void read_bounds(JsonReader& r, const json& doc, Level& level, const std::vector<JsonIssue>& issues) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::bounds, name);
+  };
+  LevelBounds& b = level.bounds;
+  const std::size_t issues_before = issues.size();
+  const auto it = doc.find("bounds");
+  const std::string path = "/bounds";
+  if (it != doc.end() && r.object(*it, path, level_key_names(LevelObject::bounds))) {
+    const json& j = *it;
+    if (j.contains("min")) b.min = read_vec2(r, j, path, key("min"), {});
+    if (j.contains("max")) b.max = read_vec2(r, j, path, key("max"), {});
+    b.margin = read_number(r, j, path, key("margin"), b.margin);
+    if (b.min && b.max && j.contains("margin"))
+      r.fail(join_path(path, "margin"),
+             "has no effect when min and max are both given (it places a side that is not given): remove it");
+  }
+  b.box = resolve_bounds(b, level_extent(level));
+  if (issues.size() != issues_before) return;
+  // As the file writes them: the bounds object's corners and the player's position.
+  const auto written = [&doc](const std::string& pointer) {
+    return JsonReader::describe(doc.at(json::json_pointer(pointer)));
+  };
+  if ((b.min || b.max) && !(b.box.min.x < b.box.max.x && b.box.min.y < b.box.max.y)) {
+    const auto shown = [](Vec2 v) { return JsonReader::describe(json::array({v.x, v.y})); };
+    if (b.min && b.max)
+      r.fail(join_path(path, "max"), "must be greater than min on both axes, got " + written("/bounds/max") +
+                                         " with min " + written("/bounds/min"));
+    else if (b.min)  // the computed top is open: only x can fail
+      r.fail(join_path(path, "min"),
+             "must be left of the computed right side x = " + JsonReader::describe(b.box.max.x) +
+                 " (the level's geometry plus margin), got " + written("/bounds/min"));
+    else  // computed sides lie beyond the geometry: only a given one can cross them
+      r.fail(join_path(path, "max"), "must be above and right of the computed lower-left corner " +
+                                         shown(b.box.min) + " (the level's geometry less margin), got " +
+                                         written("/bounds/max"));
+    return;
+  }
+  // The player starts inside: a level lost before its first tick is a mistake.
+  std::size_t player = 0;
+  for (std::size_t i = 0; i < level.tires.size(); ++i)
+    if (level.tires[i].player) player = i;
+  if (player >= level.tires.size()) return;
+  const Vec2 start = level.tires[player].position;
+  const std::string position = join_path(join_path("/tires", player), "position");
+  if (!doc.contains(json::json_pointer(position))) return;  // missing: reported as such
+  const std::string where = " the player's start " + written(position) + " (" + position + ")";
+  if (b.min && !(b.min->x <= start.x && b.min->y <= start.y))
+    r.fail(join_path(path, "min"), "must be below and left of" + where + ", got " + written("/bounds/min"));
+  if (b.max && !(start.x <= b.max->x && start.y <= b.max->y))
+    r.fail(join_path(path, "max"), "must be above and right of" + where + ", got " + written("/bounds/max"));
+}
+
 void check_totals(JsonReader& r, const json& doc, const Level& level) {
   Totals t;
   for (std::size_t i = 0; i < level.tires.size(); ++i)
@@ -525,6 +579,7 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
   for (const PropSpec& p : level.props)
     if (!p.name.empty()) prop_names.push_back(p.name);
   level.script = read_script(r, doc, prop_names);
+  read_bounds(r, doc, level, issues);
   check_totals(r, doc, level);
   if (issues.size() != issues_before) return std::nullopt;
   return level;

@@ -31,6 +31,18 @@ const char* to_string(ScriptStatus status) {
   return "running";
 }
 
+const char* to_string(EndReason reason) {
+  switch (reason) {
+    case EndReason::none: return "none";
+    case EndReason::goal: return "goal";
+    case EndReason::win_action: return "win_action";
+    case EndReason::lose_action: return "lose_action";
+    case EndReason::time_limit: return "time_limit";
+    case EndReason::out_of_bounds: return "out_of_bounds";
+  }
+  return "none";
+}
+
 std::uint64_t tick_at(double seconds, double dt) {
   const double ticks = seconds / dt;
   const double n = std::ceil(ticks - kTickTolerance * std::max(1.0, ticks));
@@ -60,7 +72,7 @@ void ScriptRunner::update(ScriptHost& host) {
   if (status_ != ScriptStatus::running) return;
 
   if (spec_.goal && player_inside(spec_.regions[*spec_.goal], host)) {
-    finish(ScriptStatus::won);
+    finish(ScriptStatus::won, EndReason::goal);
     return;
   }
   for (std::size_t i = 0; i < spec_.triggers.size() && status_ == ScriptStatus::running; ++i)
@@ -68,7 +80,7 @@ void ScriptRunner::update(ScriptHost& host) {
   sweep_counter_triggers(host);
   if (status_ == ScriptStatus::running && spec_.time_limit &&
       host.tick() >= tick_at(*spec_.time_limit, host.dt()))
-    finish(ScriptStatus::lost);
+    finish(ScriptStatus::lost, EndReason::time_limit);
 }
 
 void ScriptRunner::evaluate(std::size_t i, ScriptHost& host) {
@@ -179,8 +191,8 @@ void ScriptRunner::run(const Action& action, ScriptHost& host) {
                  [&](const ShowMessage& a) { host.show_message(a.text, a.seconds); },
                  [&](const SetCheckpoint& a) { host.set_checkpoint(a.position); },
                  [&](const ChangeCounter& a) { change_counter(a); },
-                 [&](const Win&) { finish(ScriptStatus::won); },
-                 [&](const Lose&) { finish(ScriptStatus::lost); },
+                 [&](const Win&) { finish(ScriptStatus::won, EndReason::win_action); },
+                 [&](const Lose&) { finish(ScriptStatus::lost, EndReason::lose_action); },
                  [&](const NextLevel&) { host.next_level(); },
              },
              action);
@@ -207,8 +219,10 @@ bool ScriptRunner::player_inside(const Region& region, const ScriptHost& host) c
   return false;
 }
 
-void ScriptRunner::finish(ScriptStatus status) {
-  if (status_ == ScriptStatus::running) status_ = status;  // the first verdict stands
+void ScriptRunner::finish(ScriptStatus status, EndReason reason) {
+  if (status_ != ScriptStatus::running) return;  // the first verdict stands
+  status_ = status;
+  end_reason_ = reason;
 }
 
 void ScriptRunner::hash_into(StateHash& hash) const {

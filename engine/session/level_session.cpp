@@ -1,6 +1,7 @@
 #include "tire/session/level_session.h"
 
 #include <cmath>
+#include <variant>
 
 #include "session_script_host.h"
 #include "tire/math/state_hash.h"
@@ -16,10 +17,44 @@ void LevelSession::set_script(const ScriptSpec& spec) {
   const bool empty = spec.regions.empty() && spec.triggers.empty() && spec.counters.empty() && !spec.goal &&
                      !spec.time_limit;
   script_ = empty ? nullptr : std::make_unique<ScriptRunner>(spec);
+  has_checkpoints_ = false;
+  for (const Trigger& t : spec.triggers)
+    for (const Action& a : t.actions)
+      has_checkpoints_ = has_checkpoints_ || std::holds_alternative<SetCheckpoint>(a);
   if (script_) {
     SessionScriptHost host(*this);
     script_->update(host);
+    note_end();
   }
+}
+
+ScriptStatus LevelSession::status() const {
+  if (out_of_bounds_) return ScriptStatus::lost;
+  return script_ ? script_->status() : ScriptStatus::running;
+}
+
+EndReason LevelSession::end_reason() const {
+  if (out_of_bounds_) return EndReason::out_of_bounds;
+  return script_ ? script_->end_reason() : EndReason::none;
+}
+
+void LevelSession::note_end() {
+  if (!end_tick_ && status() != ScriptStatus::running) end_tick_ = world_.tick();
+}
+
+void LevelSession::check_bounds() {
+  if (!bounds_ || status() != ScriptStatus::running) return;
+  const Tire* player = world_.player();
+  if (!player) return;
+  const Vec2 c = player->centroid();
+  const Aabb& b = *bounds_;
+  if (c.x >= b.min.x && c.x <= b.max.x && c.y >= b.min.y && c.y <= b.max.y) return;
+  if (has_checkpoints_) {
+    respawn_player();
+    ++respawns_;
+    return;
+  }
+  out_of_bounds_ = true;
 }
 
 void LevelSession::step(const TickInput& input) {
@@ -30,10 +65,13 @@ void LevelSession::step(const TickInput& input) {
     message_bytes_ -= m.text.size();
     return true;
   });
-  if (script_) {
+  // The script has stopped once the level is over; so it has when the bounds ended it.
+  if (script_ && !out_of_bounds_) {
     SessionScriptHost host(*this);
     script_->update(host);
   }
+  check_bounds();
+  note_end();
 }
 
 void LevelSession::show_message(std::string_view text, double seconds) {
@@ -106,6 +144,9 @@ std::uint64_t LevelSession::state_hash() const {
   StateHash h;
   world_.hash_into(h);
   if (script_) script_->hash_into(h);
+  // Only once it happens, so that the digest of every run that never left the bounds stays what it
+  // was before bounds existed (the replays' recorded hashes).
+  if (out_of_bounds_) h.add(std::uint8_t{1});
   return h.digest();
 }
 

@@ -144,7 +144,19 @@ bool World::set_parameter(std::string_view key, double value) {
   }
   bool known = true;
   for (Tire& t : tires_) known = set_tire_parameter(t, p->id, value) && known;
+  if (known) remember_tire_setting(p->id, value);
   return known;
+}
+
+void World::remember_tire_setting(ParamId id, double value) {
+  const auto end = tire_settings_.begin() + static_cast<std::ptrdiff_t>(tire_setting_count_);
+  const auto it =
+      std::find_if(tire_settings_.begin(), end, [id](const TireSetting& s) { return s.id == id; });
+  if (it != end) {
+    std::move(it + 1, end, it);  // keeps the order in which the others were last set
+    --tire_setting_count_;
+  }
+  tire_settings_[tire_setting_count_++] = {id, value};
 }
 
 std::optional<double> World::parameter(std::string_view key) const {
@@ -206,6 +218,8 @@ void World::release_particle(TireId id) {
 TireId World::add_tire(const TireSpec& spec) {
   const TireId id = next_id_++;
   tires_.emplace_back(id, spec, topologies_.of(TireShape::of(spec)));
+  for (std::size_t i = 0; i < tire_setting_count_; ++i)
+    set_tire_parameter(tires_.back(), tire_settings_[i].id, tire_settings_[i].value);
   if (spec.player || !player_) player_ = id;
   // Room for the contacts between tires, so that stepping never allocates: a tire in a pile
   // touches at most six others, and a pair is counted once.

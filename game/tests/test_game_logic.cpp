@@ -17,6 +17,7 @@
 #include "hud.h"
 #include "key_script.h"
 #include "level_list.h"
+#include "menus.h"
 #include "renderer.h"
 #include "tuning.h"
 
@@ -497,4 +498,81 @@ TEST_CASE("the debug view's shade of a sleeping tire is darker in every channel,
     // Enough to see: at least a quarter less light.
     CHECK(s.r + s.g + s.b <= 0.75 * (c.r + c.g + c.b));
   }
+}
+
+TEST_CASE("the HUD counts a time limit down and the end screen names what ended the level", "[unit][game]") {
+  char line[64];
+  format_clock_line(line, 12.345, std::nullopt);
+  CHECK(std::string_view(line) == "time        12.35 s");
+  format_clock_line(line, 12.345, 60.0);
+  CHECK(std::string_view(line) == "time left   47.7 s");
+  format_clock_line(line, 61.0, 60.0);  // never below zero
+  CHECK(std::string_view(line) == "time left    0.0 s");
+  CHECK(time_left(60.0, 59.5) == 0.5);
+  using tire::EndReason;
+  using tire::ScriptStatus;
+  CHECK(std::string_view(end_title(ScriptStatus::lost, EndReason::time_limit)) == "Time's up");
+  CHECK(std::string_view(end_title(ScriptStatus::lost, EndReason::out_of_bounds)) == "Off the edge");
+  CHECK(std::string_view(end_title(ScriptStatus::lost, EndReason::lose_action)) == "You lost");
+  CHECK(std::string_view(end_title(ScriptStatus::won, EndReason::goal)) == "Level complete!");
+  // And the session says which: level 01, standing still, runs out of time.
+  const tire::LevelLoad load =
+      tire::load_level_file(std::filesystem::path(TIRE_LEVELS_DIR) / "01-first-roll.json");
+  REQUIRE(load.level);
+  GameSession session;
+  session.start("01.json", std::make_shared<const tire::Level>(*load.level));
+  for (int i = 0; i < 4000 && session.level_session().status() == ScriptStatus::running; ++i)
+    session.step({});
+  CHECK(session.level_session().end_reason() == EndReason::time_limit);
+}
+
+TEST_CASE("a chasm is drawn open to the deep, rock only under the ground", "[unit][game]") {
+  // Level 02 drawn into memory: its chasm (x 30 to 34.5) between two stretches of ground whose
+  // bottom is y = -1, with a catch floor far down (y -12 to -11).
+  const tire::LevelLoad load =
+      tire::load_level_file(std::filesystem::path(TIRE_LEVELS_DIR) / "02-jumps.json");
+  REQUIRE(load.level);
+  GameSession session;
+  session.start("02.json", std::make_shared<const tire::Level>(*load.level));
+  const Underground ground = underground(session.world());
+  CHECK(ground.floor == -1.0);
+  CHECK(ground.surface == 0.0);
+  SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormat(0, 400, 300, 32, SDL_PIXELFORMAT_RGBA32);
+  REQUIRE(surface);
+  SDL_Renderer* renderer = SDL_CreateSoftwareRenderer(surface);
+  REQUIRE(renderer);
+  {
+    Draw draw(renderer);
+    WorldRenderer world_renderer;
+    world_renderer.set_underground(ground);
+    Camera camera;
+    camera.resize(400, 300);
+    camera.set_view({32, -6}, 20.0);  // x 22 to 42, y -13.5 to 1.5
+    world_renderer.draw(draw, camera, session, 1.0, DebugOptions{});
+    draw.flush();
+    const auto pixel = [&](tire::Vec2 world) {
+      const ScreenPoint p = camera.to_screen(world);
+      const auto* row =
+          static_cast<const std::uint8_t*>(surface->pixels) + static_cast<int>(p.y) * surface->pitch;
+      const std::uint8_t* c = row + 4 * static_cast<int>(p.x);
+      return SDL_Color{c[0], c[1], c[2], c[3]};
+    };
+    const auto brightness = [](SDL_Color c) { return c.r + c.g + c.b; };
+    const SDL_Color under_ground = pixel({25, -6}), in_chasm = pixel({32, -6}), chasm_top = pixel({32, -0.5}),
+                    under_catch_floor = pixel({32, -12.8});
+    INFO("under the ground " << int(under_ground.r) << "," << int(under_ground.g) << ","
+                             << int(under_ground.b) << "; in the chasm " << int(in_chasm.r) << ","
+                             << int(in_chasm.g) << "," << int(in_chasm.b));
+    // Rock under the ground: brown, red above blue.
+    CHECK(under_ground.r > under_ground.b + 10);
+    // The chasm, 5 m below the floor: the deep, darker than the rock and bluish, not rock.
+    CHECK(brightness(in_chasm) < brightness(under_ground));
+    CHECK(in_chasm.b > in_chasm.r);
+    // At the chasm's lip it is still sky; under the catch floor at its bottom, rock again.
+    CHECK(chasm_top.b > 180);
+    CHECK(under_catch_floor.r > under_catch_floor.b + 10);
+    world_renderer.release();
+  }
+  SDL_DestroyRenderer(renderer);
+  SDL_FreeSurface(surface);
 }

@@ -1,8 +1,10 @@
 # Shared set-up for ./tools/test and ./tools/play: Debian packages, configure, build.
 # Sourced, not run. Idempotent: a second call with nothing changed costs a few seconds.
 
+# fonts-dejavu-core: the game's font, with the glyphs its text needs beyond Latin-1 (ImGui's own
+# font has none of them).
 TIRE_PACKAGES=(g++ cmake pkg-config libsdl2-dev libbox2d-dev nlohmann-json3-dev catch2
-  libcli11-dev libimgui-dev libssl-dev)
+  libcli11-dev libimgui-dev libssl-dev fonts-dejavu-core)
 # What the test suite needs besides: the format check (tools/check-format); the editor's tests in a
 # real X window (Xvfb, xdotool, ImageMagick's import, python3).
 TIRE_TEST_PACKAGES=(clang-format xvfb xdotool imagemagick python3)

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -86,9 +87,26 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
                        {"dropped", b.dropped}});
   const nlohmann::ordered_json substeps = {
       {"level", world.config().substeps}, {"most", tally.most}, {"refined_ticks", tally.refined_ticks}};
+  // How the level ended: on which tick, and by what (the goal, the time limit, the bounds...).
+  nlohmann::ordered_json end;
+  if (const std::optional<std::uint64_t> tick = session.end_tick())
+    end = {{"tick", *tick},
+           {"time", static_cast<double>(*tick) * world.config().dt},
+           {"reason", tire::to_string(session.end_reason())}};
+  // The box the player must stay in; an open side (the computed top) is null.
+  nlohmann::ordered_json bounds;
+  if (const std::optional<tire::Aabb>& b = session.bounds()) {
+    const auto side = [](double v) {
+      return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+    };
+    bounds = {{"min", {side(b->min.x), side(b->min.y)}}, {"max", {side(b->max.x), side(b->max.y)}}};
+  }
   return {{"ticks", world.tick()},
           {"time", world.time()},
           {"status", tire::to_string(session.status())},
+          {"end", end},
+          {"bounds", bounds},
+          {"respawns", session.respawns()},
           {"tires", tires},
           {"props", props},
           {"substeps", substeps},

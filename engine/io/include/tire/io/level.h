@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tire/io/json_reader.h"
+#include "tire/io/level_bounds.h"
 #include "tire/rigid/obstacle.h"
 #include "tire/rigid/prop_spec.h"
 #include "tire/script/script_spec.h"
@@ -31,7 +32,8 @@ struct Level {
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
   std::vector<PropSpec> props;
-  ScriptSpec script;  // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
+  LevelBounds bounds;  // the box the player must stay in (level_bounds.h)
+  ScriptSpec script;   // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
 };
 
 // Limits enforced before any work is done (CONTRACTS.md "Limits").
@@ -69,7 +71,8 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
 // gravity: its physics, without the script.
 void populate_world(const Level& level, World& world);
 
-// The level ready to play: its world populated and its script installed (tick-0 actions done).
+// The level ready to play: its world populated, its bounds set and its script installed (tick-0
+// actions done).
 std::unique_ptr<LevelSession> make_session(const Level& level);
 
 }  // namespace tire

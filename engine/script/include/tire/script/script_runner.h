@@ -29,6 +29,13 @@ enum class ScriptStatus : std::uint8_t { running, won, lost };
 
 const char* to_string(ScriptStatus status);  // "running", "won", "lost"
 
+// What ended a level. The script ends it by its goal, a win or lose action or the time limit; the
+// level session (tire/session/level_session.h) by the player leaving the level's bounds.
+enum class EndReason : std::uint8_t { none, goal, win_action, lose_action, time_limit, out_of_bounds };
+
+// "none", "goal", "win_action", "lose_action", "time_limit", "out_of_bounds"
+const char* to_string(EndReason reason);
+
 // The tick at which a time is reached: the first tick count n with n · dt ≥ seconds, with a
 // relative tolerance of 1e-9 so that 5 s at dt = 1/60 is tick 300 despite rounding:
 // n = max(0, ceil(seconds/dt − 1e-9 · max(1, seconds/dt))).
@@ -55,6 +62,7 @@ class ScriptRunner {
   void update(ScriptHost& host);
 
   ScriptStatus status() const { return status_; }
+  EndReason end_reason() const { return end_reason_; }                     // none while running
   const std::vector<CounterValue>& counters() const { return counters_; }  // in name order
   std::optional<int> counter(std::string_view name) const;
   const ScriptSpec& spec() const { return spec_; }
@@ -77,10 +85,11 @@ class ScriptRunner {
   void run(const Action& action, ScriptHost& host);
   void change_counter(const ChangeCounter& change);
   bool player_inside(const Region& region, const ScriptHost& host) const;
-  void finish(ScriptStatus status);
+  void finish(ScriptStatus status, EndReason reason);
 
   ScriptSpec spec_;
   ScriptStatus status_ = ScriptStatus::running;
+  EndReason end_reason_ = EndReason::none;  // follows from the state hashed: not hashed itself
   std::vector<CounterValue> counters_;
   std::vector<TriggerState> triggers_;  // parallel to spec_.triggers
   std::vector<TireId> scratch_;         // the tires inside a region this tick, before it is swapped in

@@ -1,5 +1,6 @@
 // A level being played: the World (physics) and what the level's script adds around it — the
-// script itself, its messages, the checkpoint, the request for the next level — and the mouse grab.
+// script itself, its messages, the checkpoint, the request for the next level — the level's bounds
+// and how it ended, and the mouse grab.
 // The game, tirectl and replays play levels through this; tests and tools that only need physics
 // drive a World directly.
 #pragma once
@@ -11,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tire/math/aabb.h"
 #include "tire/script/script_runner.h"
 #include "tire/world/world.h"
 
@@ -39,10 +41,24 @@ class LevelSession {
   // apply before any physics. An empty spec leaves the session unscripted.
   void set_script(const ScriptSpec& spec);
   const ScriptRunner* script() const { return script_.get(); }
-  ScriptStatus status() const { return script_ ? script_->status() : ScriptStatus::running; }
 
-  // One fixed tick: the world steps with `input` driving the player, expired messages go, then
-  // the script runs.
+  // The box the player must stay in (levels/README.md "bounds"). After each tick's script, a
+  // player whose centroid is outside it is put back (respawn_player) when the level has
+  // checkpoints — a checkpoint action anywhere in its script — and otherwise loses the level
+  // (EndReason::out_of_bounds). Without bounds, nothing is checked.
+  void set_bounds(const Aabb& box) { bounds_ = box; }
+  const std::optional<Aabb>& bounds() const { return bounds_; }
+  // Whether leaving the bounds respawns rather than loses.
+  bool respawns_out_of_bounds() const { return has_checkpoints_; }
+  int respawns() const { return respawns_; }  // times the player left the bounds and was put back
+
+  // Running, won or lost; why it ended and on which tick (nullopt while running).
+  ScriptStatus status() const;
+  EndReason end_reason() const;
+  std::optional<std::uint64_t> end_tick() const { return end_tick_; }
+
+  // One fixed tick: the world steps with `input` driving the player, expired messages go, the
+  // script runs, then the bounds are checked.
   void step(const TickInput& input);
 
   // What the script (and the game) can do between ticks, beyond the world's own API.
@@ -70,10 +86,18 @@ class LevelSession {
   std::uint64_t state_hash() const;
 
  private:
+  void check_bounds();  // after the script: the player outside the bounds respawns or loses
+  void note_end();      // the tick the level ended on, once
+
   World world_;
   std::unique_ptr<ScriptRunner> script_;
   std::vector<ScriptMessage> messages_;
   std::optional<Vec2> checkpoint_;
+  std::optional<Aabb> bounds_;
+  bool has_checkpoints_ = false;
+  bool out_of_bounds_ = false;  // the level was lost by leaving the bounds
+  int respawns_ = 0;
+  std::optional<std::uint64_t> end_tick_;
   bool next_level_requested_ = false;
   std::optional<TireId> grabbed_;
   std::size_t message_bytes_ = 0;  // of messages_' texts together

@@ -3,6 +3,7 @@
 // session/, adds those around it). The game, tirectl and the tests all drive it through step().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -82,7 +83,8 @@ class World {
   // What scripts (and the game's tuning panel) can do between ticks.
   void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
   // Sets a parameter of the table (tire/parameters.h) that may change while the world runs (a
-  // script, replay or panel key): "tires.<key>" on every tire, "player.<key>" on the player's.
+  // script, replay or panel key): "tires.<key>" on every tire, and on every tire added after it
+  // (spawned by a script, a replay or the player), "player.<key>" on the player's.
   // False, changing nothing, for a key not in the table, one only a level file sets, or a value
   // the table's row does not accept (outside its range, not finite, a fraction for an integer).
   bool set_parameter(std::string_view key, double value);
@@ -220,6 +222,15 @@ class World {
   std::vector<std::string> warnings_;
   RunBudgets budgets_;
   std::vector<BudgetReached> budgets_reached_;
+  // The "tires." keys set while the world runs, each once, in the order last set: add_tire gives
+  // them to a new tire in that order (a later tires.mass_scale wins over an earlier tires.mass).
+  struct TireSetting {
+    ParamId id;
+    double value;
+  };
+  std::array<TireSetting, kParameters.size()> tire_settings_{};
+  std::size_t tire_setting_count_ = 0;
+  void remember_tire_setting(ParamId id, double value);
   bool take_spawn();
   std::uint64_t spawn_tick_ = 0;  // the tick spawns_this_tick_ counts
   int spawns_this_tick_ = 0;
