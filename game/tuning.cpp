@@ -18,9 +18,9 @@ constexpr const char* kWorld = "World and solver";
 // or rim, stiffer air, or a pressure further from 1 fold it (docs/tuning-limits.md, measured by
 // game/tests/test_tuning_limits.cpp).
 constexpr SliderSpec kSliders[] = {
-    {"tires.compliance.outer", kCompliance, "outer ring", 1e-9, 1e-1, SliderScale::exponent, "",
+    {"tires.compliance.outer", kCompliance, "outer ring", 1e-8, 1e-1, SliderScale::exponent, "",
      "tread segments (m/N): larger is softer"},
-    {"tires.compliance.inner", kCompliance, "inner ring", 1e-9, 1e-3, SliderScale::exponent, "",
+    {"tires.compliance.inner", kCompliance, "inner ring", 1e-7, 1e-3, SliderScale::exponent, "",
      "rim segments (m/N)"},
     {"tires.compliance.spoke", kCompliance, "spokes", 1e-9, 1e-4, SliderScale::exponent, "",
      "sidewall spokes (m/N)"},
