@@ -574,6 +574,7 @@ void App::draw_ui() {
   dev.steps_last_frame = steps_this_frame_;
   dev.tires = world.tires().size();
   dev.asleep = world.asleep_count();
+  dev.failed_solves = world.failed_solves();
   draw_hud(hud, dev);
   draw_script_messages(session_.level_session(), imgui_->big_font());
 

@@ -110,6 +110,9 @@ void draw_hud(const HudInfo& info, const DevInfo& dev) {
       ImGui::Text("tires   %6zu", dev.tires);
       char asleep[64];
       if (format_asleep_line(asleep, dev.asleep, dev.tires)) ImGui::TextUnformatted(asleep);
+      if (dev.failed_solves > 0)
+        ImGui::TextColored({1.0f, 0.4f, 0.3f, 1.0f}, "failed solves %llu",
+                           static_cast<unsigned long long>(dev.failed_solves));
     }
     ImGui::TextDisabled("F1 help   F2 tuning   F3 debug   Esc levels");
   }

@@ -39,7 +39,8 @@ struct DevInfo {
   double physics_ms = 0.0;  // wall time spent in World::step per frame (smoothed)
   int steps_last_frame = 0;
   std::size_t tires = 0;
-  std::size_t asleep = 0;  // tires asleep (World::asleep_count)
+  std::size_t asleep = 0;           // tires asleep (World::asleep_count)
+  std::uint64_t failed_solves = 0;  // World::failed_solves
 };
 
 // Seconds left of a time limit, never below 0.

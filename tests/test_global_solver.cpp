@@ -329,3 +329,29 @@ TEST_CASE("global: an active-set pass that lets friction go solves on the factor
   CHECK(work_a.factorisations < work_a.solves + work_a.solves / 20);
   CHECK(most_apart < 1e-9);
 }
+
+TEST_CASE("global: a solve that is not finite is counted and reported, and the tire reset",
+          "[unit][global]") {
+  // A NaN put into a tread particle from outside: the tire's factorisation is not finite. The
+  // failure is not silent: World counts it, warns with the tick and the tire, and the divergence
+  // guard puts the tire back at its spawn state, after which it solves again.
+  World world = flat_world(tire_at({0.0, 0.5}), global_config(2));
+  Tire& t = *world.find_tire(0);
+  run(world, 10);
+  REQUIRE(world.failed_solves() == 0);
+  t.particles.x[3].x = std::numeric_limits<double>::quiet_NaN();
+  world.step({});
+  const std::uint64_t failed = world.failed_solves();
+  CHECK(failed >= 1);
+  int reported = 0;
+  for (const std::string& w : world.warnings())
+    reported += w.find("global solve(s) failed") != std::string::npos;
+  INFO(::Catch::Detail::stringify(world.warnings()));
+  CHECK(reported == 1);
+  CHECK(t.is_finite());
+  world.warnings().clear();
+  run(world, 60);
+  CHECK(world.failed_solves() == failed);  // the reset tire solves as before
+  CHECK(world.warnings().empty());
+  CHECK(t.centroid().y == Approx(0.5).margin(0.01));
+}

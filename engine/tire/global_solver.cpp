@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "tire/math/check.h"
 #include "tire/math/trig.h"
@@ -685,10 +687,16 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   // Active-set passes (each a factorisation), until nothing changes or the passes run out; the
   // last pass's changes are solved once more, so Δx always matches the contacts written back.
   // A pass whose changes K can take as rows solves on the factor it has (solve_changes).
+  // A solve that is not finite (a NaN put in from outside) leaves the tire as it was and is counted:
+  // World reports it, and its divergence guard resets the tire.
+  const auto failed = [&] {
+    ++work_.failed_solves;
+    t.global_work += work_;
+  };
   const int passes = std::max(1, ctx.config->contact_passes);
-  if (!solve_pass(t)) return;  // not finite (a NaN put in from outside): the divergence guard resets it
+  if (!solve_pass(t)) return failed();
   for (int pass = 1; pass <= passes && update_active_set(t, ctx); ++pass)
-    if (!(ctx.config->reuse_factor && solve_changes(t)) && !solve_pass(t)) return;
+    if (!(ctx.config->reuse_factor && solve_changes(t)) && !solve_pass(t)) return failed();
   t.newton_turn = std::max(t.newton_turn, largest_turn(t));
   t.global_work += work_;
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
@@ -779,12 +787,15 @@ void GlobalSolverPool::reserve(unsigned slots, std::uint32_t segments) {
 }
 
 GlobalSolverPool::Lease GlobalSolverPool::lend() {
-  TIRE_ASSERT(!solvers_.empty(), "the global method's solvers were never reserved");
-  for (;;)
-    for (std::size_t k = 0; k < solvers_.size(); ++k) {
-      bool expected = false;
-      if (busy_[k].compare_exchange_strong(expected, true, std::memory_order_acquire)) return Lease(*this, k);
-    }
+  // reserve() gave one solver to each thread that may solve at once, so one is always free; none
+  // free is a caller solving on more threads than it reserved for, stopped here, not spun on.
+  for (std::size_t k = 0; k < solvers_.size(); ++k) {
+    bool expected = false;
+    if (busy_[k].compare_exchange_strong(expected, true, std::memory_order_acquire)) return Lease(*this, k);
+  }
+  std::fprintf(stderr, "tire: GlobalSolverPool::lend: all %zu solvers are in use (reserve one per thread)\n",
+               solvers_.size());
+  std::abort();
 }
 
 }  // namespace tire

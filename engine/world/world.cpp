@@ -384,7 +384,10 @@ void World::step(const TickInput& input) {
   // After the substeps: the impulses the tires gave props go to Box2D, which steps them (the last
   // substep, with the global method); a tire that diverged is reset.
   rigid_.end_tick(rigid_substeps ? h : config_.dt);
-  for (const std::uint32_t i : sleep_.awake()) guard_divergence(tires_[i]);
+  for (const std::uint32_t i : sleep_.awake()) {
+    note_failed_solves(tires_[i]);
+    guard_divergence(tires_[i]);
+  }
   if (global) update_refinement();
   if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, tick_config_, held);
   if (sleep_.stale()) sleep_.refresh(tires_);
@@ -654,6 +657,14 @@ bool World::colors_share_no_tire() {
     }
   }
   return true;
+}
+
+void World::note_failed_solves(const Tire& t) {
+  const std::uint32_t failed = t.global_work.failed_solves;
+  if (failed == 0) return;
+  failed_solves_ += failed;
+  warnings_.push_back("tick " + std::to_string(tick_) + ": tire " + std::to_string(t.id) + ": " +
+                      std::to_string(failed) + " global solve(s) failed (not finite); its step was skipped");
 }
 
 void World::guard_divergence(Tire& t) {

@@ -111,6 +111,7 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
           {"props", props},
           {"substeps", substeps},
           {"energy", energy.to_json()},
+          {"failed_solves", world.failed_solves()},
           {"budgets_reached", budgets},
           {"hash", tire::to_hex(session.state_hash())}};
 }

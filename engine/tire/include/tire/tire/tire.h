@@ -254,12 +254,14 @@ struct Tire {
     std::uint32_t updates = 0;
     std::uint32_t searches = 0;
     std::uint64_t tread_tests = 0;
+    std::uint32_t failed_solves = 0;  // factorisations or solves that were not finite (World counts them)
     GlobalWork& operator+=(const GlobalWork& o) {
       solves += o.solves;
       factorisations += o.factorisations;
       updates += o.updates;
       searches += o.searches;
       tread_tests += o.tread_tests;
+      failed_solves += o.failed_solves;
       return *this;
     }
   };

@@ -157,6 +157,9 @@ class World {
 
   // Warnings raised while stepping (a diverged tire that was reset, ...); the caller drains them.
   std::vector<std::string>& warnings() { return warnings_; }
+  // Global solves that failed (a factorisation or solve not finite) since the world was made; each
+  // is also a warning, and the tire's divergence guard resets it.
+  std::uint64_t failed_solves() const { return failed_solves_; }
 
  private:
   // The phases of a substep (world.cpp), each over every tire: the plain schedule, one by one.
@@ -169,6 +172,7 @@ class World {
   void hand_over_impulses();
   void solve_tire_pairs();
   void solve_by_tire_colour(const SubstepContext& ctx, bool last);
+  void note_failed_solves(const Tire& t);
   void guard_divergence(Tire& t);
   // After a tick: refine_ from how far the awake tires' solves turned their constraints.
   void update_refinement();
@@ -220,6 +224,7 @@ class World {
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;
   std::vector<std::string> warnings_;
+  std::uint64_t failed_solves_ = 0;
   RunBudgets budgets_;
   std::vector<BudgetReached> budgets_reached_;
   // The "tires." keys set while the world runs, each once, in the order last set: add_tire gives
