@@ -1,4 +1,4 @@
-// libFuzzer target: see fuzz_session.h and README "Hardening". Built as a plain program too, with
+// libFuzzer target: see fuzz_session.h and docs/testing.md, "Hardening". Built as a plain program too, with
 // session_main.cpp for its main (the test suite's fuzz run).
 #include "fuzz_session.h"
 

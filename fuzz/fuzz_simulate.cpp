@@ -1,4 +1,4 @@
-// libFuzzer target: see fuzz_common.h and README "Hardening".
+// libFuzzer target: see fuzz_common.h and docs/testing.md, "Hardening".
 #include <cstddef>
 #include <cstdint>
 #include <string>

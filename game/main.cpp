@@ -1,7 +1,7 @@
 // tire-game [LEVEL] [--levels-dir DIR] [--frames N] [--press SPEC]... [--screenshot FILE] [--record FILE]
 //           [--edit FILE] [--replay FILE] [--pad SPEC]... [--no-progress] [--volume V] [--audio-log FILE]
 //
-// The same program runs in the browser (README "In a browser"): there the page's query string is
+// The same program runs in the browser (docs/web.md): there the page's query string is
 // the command line (game/web/shell.html), and the browser's main loop calls App::frame() once per
 // animation frame instead of App::run()'s loop.
 #include <CLI/CLI.hpp>

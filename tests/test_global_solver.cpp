@@ -106,8 +106,9 @@ TEST_CASE("global: a resting tire's sag is its compliances', at any substep coun
   CHECK(sag8 == Approx(sag2).epsilon(0.03));
   CHECK(sag32 == Approx(sag2).epsilon(0.03));
   CHECK(sag32 == Approx(sag8).epsilon(0.03));
-  // The oracle (shared/oracles/global_solve_contacts.py) finds 0.114 mm for this material on a
-  // tire without the rim's area; the engine's default tire sits 0.11 mm down.
+  // A dense reference solve of the same method (numpy, contacts inside the solve; docs/physics.md,
+  // "The global method") finds 0.114 mm for this material on a tire without the rim's area; the
+  // engine's default tire sits 0.11 mm down.
   if (factor == 1.0) CHECK(sag8 == Approx(0.11e-3).margin(0.01e-3));
   // Gauss–Seidel with the same material at 2 substeps: hundreds of times softer.
   if (factor == 1.0) {
@@ -198,7 +199,7 @@ TEST_CASE("global: a tire whose air and rings disagree exerts no torque on itsel
   // Pressure 1.2 or 0.8: the air asks for 20 % more (or less) area than the rings allow, and the
   // constraints push against each other every substep. Internal forces are central, so a free tire
   // that starts at rest stays at rest, spin included. (Gauss–Seidel's projections, one after another,
-  // do not keep it: the same tire spins up to 16.6 rad/s in 4 s at 8 × 1, README "The global method".)
+  // do not keep it: the same tire spins up to 16.6 rad/s in 4 s at 8 × 1, docs/physics.md.)
   SolverConfig config = global_config(GENERATE(1, 2, 8));
   const double pressure = GENERATE(0.8, 1.2);
   CAPTURE(config.substeps, pressure);

@@ -237,9 +237,9 @@ TEST_CASE("global: a column of tires between walls is as stiff as its tires, at 
   // Six tires stacked between frictionless walls (tires without friction: the walls only keep the
   // column upright, so the weight goes down the column). Each contact carries the tires above. The
   // reference is Gauss–Seidel at 128 substeps (hubs 0.9916, 0.9920 and 0.9924 m apart, bottom up,
-  // after 16 s); Gauss–Seidel at 8 × 1 sags to 0.937 m between the bottom two (README, "The global
-  // method"). Solving each tire's neighbours inside its system keeps the spacing and the areas at
-  // 2 and 8 substeps. (At 32 substeps and more the global column sags, 0.970 m at 32: see README.)
+  // after 16 s); Gauss–Seidel at 8 × 1 sags to 0.937 m between the bottom two (docs/physics.md, "The
+  // global method"). Solving each tire's neighbours inside its system keeps the spacing and the areas at
+  // 2 and 8 substeps. (At 32 substeps and more the global column sags, 0.970 m at 32: see docs/physics.md.)
   SolverConfig config;
   config.method = SolverMethod::global;
   config.substeps = GENERATE(2, 8);

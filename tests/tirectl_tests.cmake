@@ -170,7 +170,7 @@ tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0
 tirectl_test("level 08-three-hundred is won through the gate the 300th tire opens" 0
   ARGS run ${LEVELS}/08-three-hundred.json --ticks 1200 --steer -1 STDOUT "\"status\": \"won\"")
 
-# Hardening (README "Hardening"): hostile files get one clear line per problem naming the file, the
+# Hardening (docs/testing.md, "Hardening"): hostile files get one clear line per problem naming the file, the
 # JSON path and what was expected, and exit code 2; never a crash, a stack trace or "terminate
 # called" (expect.cmake fails on those). Every fuzz regression input goes through tirectl too.
 set(HOSTILE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz-regressions)
@@ -258,7 +258,7 @@ tirectl_test("tradeoff refuses zero substeps" 2 ARGS tradeoff --substeps 0 --out
 tirectl_test("tradeoff refuses an unknown scenario" 2 ARGS tradeoff --scenarios nowhere --out ${TRADEOFF_OUT}-bad
   STDERR "unknown scenario \"nowhere\"")
 
-# Outputs written safely (README "Hardening"): never over the level being run or the replay read,
+# Outputs written safely (docs/testing.md, "Hardening"): never over the level being run or the replay read,
 # never onto a FIFO, device or directory, through a symbolic link to its file, the mode kept; a
 # write that fails is exit 2 naming the file. Each case in a folder of its own under the build.
 foreach(check "onto-level/run --record onto the level being run is refused before the run, the level unchanged"

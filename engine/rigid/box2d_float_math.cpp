@@ -1,5 +1,5 @@
 // The float functions Box2D takes from the C library, defined here as the engine's own, so that
-// Box2D's rotations are the same bits on every platform (README "Determinism").
+// Box2D's rotations are the same bits on every platform (docs/determinism.md).
 //
 // Box2D 2.4 turns an angle into a rotation with sinf and cosf (b2Rot::Set, inline in b2_math.h and
 // compiled into libbox2d as sincosf), in its solver and wherever a body is placed; it also imports

@@ -258,7 +258,7 @@ void cap_horizontal_speed(Tire& t, RigidMotion& m) {
 // spin in place for ever (docs/at-rest.md). A spinning landing then rolls off at the speed its
 // angular momentum gives at 1 to 256 substeps; Müller's per-particle form reaches that speed only at
 // 256. Where a short slide decides (a polygon's landings on a slope) the two forms differ even at
-// 2048 substeps, by up to 5 cm over a 2 s roll at 12 segments (README, the trade-off's cross-check).
+// 2048 substeps, by up to 5 cm over a 2 s roll at 12 segments (docs/accuracy.md, the cross-check).
 void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   const RigidMotion m = t.rigid_motion();

@@ -96,7 +96,7 @@ def drag_box(window, env, x0, y0, x1, y1):
 
 
 def build_new_level(window, env, work):
-    """The README's walkthrough: a ground, a tire on it, a goal to its right; saved."""
+    """docs/editor.md's walkthrough: a ground, a tire on it, a goal to its right; saved."""
     key(window, env, "o")
     drag_box(window, env, 300, 500, 1000, 540)
     key(window, env, "t")

@@ -1,4 +1,4 @@
-# tire-game's outputs written safely (README "Hardening"), headless (SDL_VIDEODRIVER=offscreen), in a
+# tire-game's outputs written safely (docs/testing.md, "Hardening"), headless (SDL_VIDEODRIVER=offscreen), in a
 # folder of the test's own with a copy of a level:
 #   cmake -DGAME=tire-game -DLEVEL=levels/01-first-roll.json -DWORK=<dir> -DCASE=<case> -P outputs_check.cmake
 # CASE: onto-level  --record, --screenshot or --audio-log onto the level being played: exit 2 before

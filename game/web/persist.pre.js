@@ -1,4 +1,4 @@
-// The browser build's data folder (progress.json and ghosts/, README "In a browser") lives in the
+// The browser build's data folder (progress.json and ghosts/, docs/web.md) lives in the
 // page's IndexedDB, so that best times and ghosts outlast a reload. Linked with --pre-js: this runs
 // inside the module, where FS, IDBFS, ENV and the run dependencies are in scope.
 //  - Before main: IDBFS is mounted at /persistent, XDG_DATA_HOME points there (so the game's

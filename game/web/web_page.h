@@ -1,4 +1,4 @@
-// What the browser build of tire-game does with its page (README "In a browser"); compiled only
+// What the browser build of tire-game does with its page (docs/web.md); compiled only
 // there (emscripten).
 #pragma once
 

@@ -1,4 +1,4 @@
-# tirectl's outputs written safely (README "Hardening"), in a folder of the test's own with a copy of
+# tirectl's outputs written safely (docs/testing.md, "Hardening"), in a folder of the test's own with a copy of
 # a level, so that nothing outside it can be written over whatever happens:
 #   cmake -DTIRECTL=tirectl -DLEVEL=levels/01-first-roll.json -DWORK=<dir> -DCASE=<case> -P check_outputs.cmake
 # CASE: onto-level   --record onto the level being run (also through a symbolic link): exit 2

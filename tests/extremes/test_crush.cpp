@@ -73,7 +73,7 @@ void crush_and_release(const std::string& name, const TireSpec& tire, const Solv
   CHECK(world.tick_substeps() == config.substeps);
 }
 
-// The global method at the setting the README advises for a level, 2 substeps and the speed limit of
+// The global method at the setting docs/physics.md advises for a level, 2 substeps and the speed limit of
 // Gauss–Seidel 8 × 1 (tunnel_clamp 4).
 SolverConfig global_2x1() {
   SolverConfig config;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The web test (ctest -L web, README "In a browser"): builds the game for the browser with
+# The web test (ctest -L web, docs/web.md): builds the game for the browser with
 # ./tools/web --build-only, serves build-web/ on a free loopback port, and in headless Chromium
 # (puppeteer-core) checks that the page draws the game, that real keys and clicks reach it, that
 # ?frames=300&press=right:0-299 ends with the native game's player position to the last bit, that

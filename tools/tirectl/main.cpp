@@ -1,4 +1,4 @@
-// tirectl: the headless command line over the engine (see CONTRACTS.md "tirectl").
+// tirectl: the headless command line over the engine (docs/tirectl.md).
 #include <CLI/CLI.hpp>
 #include <iostream>
 

@@ -295,7 +295,7 @@ int tradeoff(const TradeoffOptions& options) {
         s.tunnel_clamp = clamp;
         s.method = method;
         s.material_damping = o.material_damping;
-        // A global iteration costs about five Gauss–Seidel sweeps (README); for the progress bar.
+        // A global iteration costs about five Gauss–Seidel sweeps (docs/accuracy.md); for the progress bar.
         const double sweep = method == tire::SolverMethod::global ? 5.0 : 1.0;
         jobs.push_back(
             {&sc, s, kind, {}, static_cast<double>(sc.ticks) * ss * (sweep * it + 2.0) * (seg + 8.0)});

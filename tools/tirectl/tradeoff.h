@@ -1,5 +1,5 @@
 // tirectl tradeoff: its options, their command-line registration and the command (see
-// tradeoff.cpp and the README's "Speed versus accuracy").
+// tradeoff.cpp and docs/accuracy.md).
 #pragma once
 
 #include <string>
@@ -21,7 +21,7 @@ struct TradeoffOptions {
   std::vector<int> extra_iterations;  // filled in: 1 x n settings for claim 2 (not an option)
   // Solver methods to sweep, as method_name() writes them. Each gets the same sweep unless
   // global_substeps / global_iterations narrow the global method's (an iteration of it is a
-  // Newton step of the whole tire: from 2 substeps on, a second one changes little; README).
+  // Newton step of the whole tire: from 2 substeps on, a second one changes little; docs/accuracy.md).
   std::vector<std::string> methods{"gauss-seidel", "global"};
   std::vector<int> global_substeps;             // empty: --substeps
   std::vector<int> global_iterations;           // empty: --iterations
@@ -31,7 +31,7 @@ struct TradeoffOptions {
   int repeats = 3;                     // timed runs per setting; each tick's median is taken
   int ref_substeps = 0;                // the converged reference run; 0: each scenario's own
   int ref_iterations = 0;
-  double material_damping = 1e-4;  // the tire's τ (s) in every run (TireSpec{} has 5e-3: README)
+  double material_damping = 1e-4;  // the tire's τ (s) in every run (TireSpec{} has 5e-3: docs/accuracy.md)
   // A recommended setting keeps each scenario's centroid error within max(absolute (m),
   // relative × how far the reference's tire moves).
   double game_error = 0.025;

@@ -153,7 +153,7 @@ std::vector<TradeoffScenario> make_scenarios() {
     s.deflection = crush_deflection;
     s.load = kCrushMass * kGravity;
     s.dynamic_props = true;
-    // The tire–prop coupling turns unstable from about 1024 substeps (README), so the reference
+    // The tire–prop coupling turns unstable from about 1024 substeps (docs/accuracy.md), so the reference
     // stays below that and makes up with iterations.
     s.ref_substeps = 256;
     s.ref_iterations = 8;

@@ -25,7 +25,7 @@ struct SolverSettings {
 
 struct TradeoffScenario {
   std::string name;
-  std::string what;  // one line for the summary and the README
+  std::string what;  // one line for the summary and docs/accuracy.md
   int ticks = 180;   // at dt = 1/60
   // Builds the scene into an empty world (gravity and solver already set); `base` is the tire to
   // use (TireSpec{} with the run's segments and material damping), placed by the scene.

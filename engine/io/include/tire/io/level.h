@@ -36,7 +36,7 @@ struct Level {
   ScriptSpec script;   // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
 };
 
-// Limits enforced before any work is done (CONTRACTS.md "Limits").
+// Limits enforced before any work is done (docs/testing.md, "Hardening").
 struct LevelLimits {
   static constexpr std::uintmax_t max_file_bytes = 64ull << 20;
   static constexpr int max_depth = 64;

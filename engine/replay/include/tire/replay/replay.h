@@ -1,4 +1,4 @@
-// Replays (format "tire-replay/1", CONTRACTS.md): the level a session ran, every input that
+// Replays (format "tire-replay/1", docs/formats.md): the level a session ran, every input that
 // reached the World, tick by tick, and what the run must come to. The game records them, tirectl
 // records and checks them, and the replay suite runs them in ctest.
 //

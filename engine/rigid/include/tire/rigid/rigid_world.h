@@ -13,7 +13,7 @@
 // tires' own constraints do, and a tire pushing a crate does to it what it does at any substep
 // count (a crate standing still for a whole tick took every substep's push as a collision: driven
 // into a 6 kg crate, the tire pushed it 2.45 m at 2 substeps and 8.62 m at 8 on average over ten
-// starts; now 2.07 and 2.11 m, README "The global method").
+// starts; now 2.07 and 2.11 m, docs/physics.md, "What the default does differently").
 //
 // With substep motion (the global method's; begin_tick), a prop that touches nothing in Box2D moves
 // within the tick as the tire's particles do (Macklin et al. 2019, Algorithm 1): gravity each

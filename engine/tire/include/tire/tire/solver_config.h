@@ -7,7 +7,7 @@ namespace tire {
 // How a substep solves each tire's constraints.
 //  gauss_seidel: one sweep over the constraints per iteration, each projected on its own
 //    (Macklin et al. 2016, Algorithm 1). Cheap per sweep, but a load travels one constraint a
-//    sweep, so a stiff tire's stiffness depends on the substeps (README, "Speed versus accuracy").
+//    sweep, so a stiff tire's stiffness depends on the substeps (docs/accuracy.md).
 //  global: all of a tire's constraints and its contacts with obstacles and props as one linear
 //    system per iteration (GlobalSolver, global_solver.h): the tire's stiffness is its compliances'
 //    at any substep count.
@@ -117,7 +117,7 @@ struct SolverConfig {
   int tire_neighbours = 32;
 
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
-  // method replaced it (README, "The default method"), and the method for piles of hundreds of
+  // method replaced it (docs/physics.md, "The default method"), and the method for piles of hundreds of
   // tires. Its speed limit, eight rest segments a tick, is the default's (2 substeps × 4).
   static constexpr SolverConfig gauss_seidel_8x1() {
     SolverConfig c;

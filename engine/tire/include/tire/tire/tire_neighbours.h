@@ -34,7 +34,7 @@
 //
 // Leaving these contacts outside the tires' systems, as a projection after them, does not hold a
 // pile: each stiff tire undoes the local dent a neighbour's push makes, and a column of six tires at
-// two substeps lost a third of its area and let a tire through (see the README, "The global method").
+// two substeps lost a third of its area and let a tire through (docs/physics.md, "The global method").
 #pragma once
 
 #include <cstdint>
