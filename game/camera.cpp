@@ -51,18 +51,6 @@ void Camera::clamp(const tire::Aabb& bounds) {
   center_.y = lo_y <= hi_y ? std::clamp(center_.y, lo_y, hi_y) : lo_y;
 }
 
-namespace {
-void grow(tire::Aabb& box, bool& any, tire::Vec2 p) {
-  if (!any) {
-    box = {p, p};
-    any = true;
-    return;
-  }
-  box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-  box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
-}
-}  // namespace
-
 Underground underground(const tire::World& world) {
   double widest = -1.0;
   Underground out;
@@ -86,11 +74,10 @@ Underground underground(const tire::World& world) {
 
 tire::Aabb level_bounds(const tire::LevelSession& session, double margin, double below) {
   const tire::World& world = session.world();
-  tire::Aabb box{{-10, -2}, {10, 8}};
-  bool any = false;
+  tire::Aabb box = tire::Aabb::none();
   for (const tire::Obstacle& o : world.rigid().obstacles()) {
-    grow(box, any, o.box.min);
-    grow(box, any, o.box.max);
+    box.include(o.box.min);
+    box.include(o.box.max);
   }
   const auto& props = world.rigid().props();
   for (std::uint32_t i = 0; i < props.size(); ++i) {
@@ -99,24 +86,24 @@ tire::Aabb level_bounds(const tire::LevelSession& session, double margin, double
     const tire::Aabb local = props[i].geometry.local_bounds();
     for (const tire::Vec2 c :
          {local.min, local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}})
-      grow(box, any, pose.to_world(c));
+      box.include(pose.to_world(c));
     for (const tire::Vec2& w : props[i].spec.path.waypoints) {
-      grow(box, any, w + local.min);
-      grow(box, any, w + local.max);
+      box.include(w + local.min);
+      box.include(w + local.max);
     }
   }
   if (const tire::ScriptRunner* script = session.script())
     for (const tire::Region& r : script->spec().regions) {
-      grow(box, any, r.box.min);
-      grow(box, any, r.box.max);
+      box.include(r.box.min);
+      box.include(r.box.max);
     }
   for (const tire::Tire& t : world.tires()) {
     const tire::Vec2 c = t.centroid();
     const double r = t.spec.outer_radius;
-    grow(box, any, c - tire::Vec2{r, r});
-    grow(box, any, c + tire::Vec2{r, r});
+    box.include(c - tire::Vec2{r, r});
+    box.include(c + tire::Vec2{r, r});
   }
-  if (!any) return box;
+  if (box.holds_nothing()) return {{-10, -2}, {10, 8}};
   box.min -= tire::Vec2{margin, below};
   box.max += tire::Vec2{margin, margin + 3.0};
   return box;

@@ -13,17 +13,9 @@ namespace tire {
 namespace {
 
 struct Extent {
-  Aabb box{};
-  bool any = false;
+  Aabb box = Aabb::none();
   void add(Vec2 p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;  // a region the reader refused
-    if (!any) {
-      box = {p, p};
-      any = true;
-      return;
-    }
-    box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-    box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
+    if (std::isfinite(p.x) && std::isfinite(p.y)) box.include(p);  // not: a region the reader refused
   }
   void add(const Aabb& b) {
     add(b.min);
@@ -72,7 +64,7 @@ Aabb level_extent(const Level& level) {
       if (const auto* s = std::get_if<SpawnProp>(&action)) add_prop(e, s->prop);
       if (const auto* c = std::get_if<SetCheckpoint>(&action)) e.add(c->position);
     }
-  return e.any ? e.box : Aabb{};
+  return e.box.holds_nothing() ? Aabb{} : e.box;
 }
 
 Aabb resolve_bounds(const LevelBounds& bounds, const Aabb& extent) {

@@ -1,6 +1,7 @@
 #include "tire/io/level_schema.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "script_reader.h"
+#include "tire/io/level_keys.h"
 #include "tire/tire/parameters.h"
 
 namespace tire {
@@ -221,17 +223,16 @@ SchemaGeneration generate_level_schema(const std::string& current) {
        "/$defs/action_set_gravity/properties")["description"] =
         described("New gravity [x, y] (m/s²), each in {range}.", g.range);
     generate_set_action(at(defs, "action_set", "/$defs"));
-    // A tire's material: the presets, in the table's order, the first the default.
-    ojson materials = ojson::array();
-    for (const Material& m : kMaterials) materials.push_back(m.name);
+    // A tire's material, as its level key has it: the presets in the table's order, the default, and
+    // the description as a sentence.
+    const LevelKey& material = *find_level_key(LevelObject::tire, "material");
+    std::string sentence = material.description + " (levels/README.md, Materials).";
+    sentence[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(sentence[0])));
     at(at(defs, "tire", "/$defs"), "properties", "/$defs/tire")["material"] =
         ojson{{"type", "string"},
-              {"enum", materials},
-              {"default", kMaterials.front().name},
-              {"description",
-               "A preset of compliance, pressure, material_damping, friction, kinetic_friction, "
-               "rolling_resistance and "
-               "restitution (levels/README.md, Materials): a starting point the tire's own keys override."}};
+              {"enum", material.choices},
+              {"default", material.default_value.get<std::string>()},
+              {"description", sentence}};
     out.text = format_json(doc);
   } catch (const std::exception& e) {
     out.error = e.what();

@@ -35,8 +35,7 @@ void TirePairFinder::find(const std::vector<Tire>& tires, std::span<const std::u
     Aabb b{x.front(), x.front()};
     double speed2 = 0.0;
     for (std::uint32_t k = 0; k < tires[i].n; ++k) {  // the tread bounds the tire
-      b.min = {std::min(b.min.x, x[k].x), std::min(b.min.y, x[k].y)};
-      b.max = {std::max(b.max.x, x[k].x), std::max(b.max.y, x[k].y)};
+      b.include(x[k]);
       speed2 = std::max(speed2, length_squared(v[k]));
     }
     // Both tires of a pair are expanded, so each covers its own travel.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <span>
 
 #include "tire/math/vec2.h"
@@ -18,15 +19,24 @@ struct Aabb {
   constexpr Aabb expanded(double margin) const {
     return {{min.x - margin, min.y - margin}, {max.x + margin, max.y + margin}};
   }
+
+  // The box holding nothing (min above max): include() of a point makes it that point.
+  static constexpr Aabb none() {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {{inf, inf}, {-inf, -inf}};
+  }
+  constexpr bool holds_nothing() const { return min.x > max.x; }
+  // Grows the box to hold p.
+  constexpr void include(Vec2 p) {
+    min = {std::min(min.x, p.x), std::min(min.y, p.y)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y)};
+  }
 };
 
 // The smallest box holding `points` (at least one), taken in order.
 inline Aabb bounds_of(std::span<const Vec2> points) {
-  Aabb box{points.front(), points.front()};
-  for (const Vec2& p : points) {
-    box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-    box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
-  }
+  Aabb box = Aabb::none();
+  for (const Vec2& p : points) box.include(p);
   return box;
 }
 
