@@ -479,6 +479,7 @@ void App::level_finished() {
   std::vector<std::string> messages;
   run_result_ = best_runs_.finished(won, *finished_at_, session_.world().tick(), is_file && !tuned, recorder_,
                                     session_.level_session(), messages);
+  if (tuned) run_result_->medal = tire::Medal::none;  // not the level's times
   if (tuned && best_runs_.enabled()) run_result_->note = "tuned (F2): not a best time";
   for (const std::string& m : messages) warn(m);
   hud_target_ = time_to_beat(best_runs_.note(session_.path()));
@@ -601,9 +602,10 @@ void App::draw_ui() {
     else if (choice == MenuChoice::quit)
       quit_ = true;
   } else if (level_over()) {
-    switch (draw_end_screen(session_.level_session().status(), session_.level_session().end_reason(),
-                            session_.level().name, finished_at_.value_or(world.time()),
-                            run_result_ ? run_result_->note : "", imgui_->big_font())) {
+    switch (draw_end_screen(
+        session_.level_session().status(), session_.level_session().end_reason(), session_.level().name,
+        finished_at_.value_or(world.time()), run_result_ ? run_result_->note : "",
+        run_result_ ? run_result_->medal : tire::Medal::none, session_.level().medals, imgui_->big_font())) {
       case EndChoice::next: go_to_level(+1); break;
       case EndChoice::retry: restart(); break;
       case EndChoice::none: break;

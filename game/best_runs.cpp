@@ -24,6 +24,8 @@ std::vector<std::string> BestRuns::open(std::optional<std::filesystem::path> dir
 void BestRuns::level_started(const std::string& level_path, std::shared_ptr<const tire::Level> level,
                              std::vector<std::string>& messages) {
   last_.reset();
+  medals_ = level ? level->medals : std::nullopt;
+  dt_ = level ? level->solver.dt : 0.0;
   if (!enabled_) return;
   const std::string key = level_key(levels_dir_, level_path);
   const std::string sha = level_file_sha256(level_path);
@@ -46,6 +48,7 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
   r.won = won;
   r.time = time;
   r.ticks = ticks;
+  if (won && medals_) r.medal = tire::medal_for(*medals_, ticks, dt_);
   if (!enabled_ || !record) {
     last_ = r;
     return r;
@@ -53,7 +56,7 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
   const std::string key = key_;
   const LevelRecord* known = progress_.find(key);
   const std::optional<LevelRecord> before = known ? std::optional<LevelRecord>(*known) : std::nullopt;
-  const bool faster = progress_.record(key, won, time, ticks);
+  const bool faster = progress_.record(key, won, time, ticks, r.medal);
   ++writes_;
   if (const std::string err = progress_.save(); !err.empty()) {
     // Not saved: the record goes back to what the file holds, and no new best is claimed.

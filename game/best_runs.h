@@ -22,9 +22,10 @@ struct RunResult {
   bool won = false;
   double time = 0.0;
   std::uint64_t ticks = 0;
-  bool new_best = false;  // a win faster than the best so far, and saved as the new best
-  bool saved = false;     // the progress file was written with this run
-  std::string note;       // "New best time!" or "best 9.85 s"
+  bool new_best = false;                  // a win faster than the best so far, and saved as the new best
+  bool saved = false;                     // the progress file was written with this run
+  std::string note;                       // "New best time!" or "best 9.85 s"
+  tire::Medal medal = tire::Medal::none;  // what the win earned, when the level has medals
 };
 
 class BestRuns {
@@ -61,7 +62,9 @@ class BestRuns {
   std::filesystem::path levels_dir_;
   Progress progress_;
   Ghost ghost_;
-  std::string key_, sha_;  // the level the ghost was loaded for
+  std::string key_, sha_;                    // the level the ghost was loaded for
+  std::optional<tire::LevelMedals> medals_;  // the current level's
+  double dt_ = 0.0;                          // and its tick
   std::optional<RunResult> last_;
   std::uint64_t writes_ = 0;
 };

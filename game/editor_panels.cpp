@@ -116,6 +116,17 @@ class PropertyTable {
   int part_ = 0;
 };
 
+// A level's first medals, from its time limit (60 s without one): gold within a third of it, silver
+// within half, bronze within three quarters, in half seconds from 10 s up; the author tunes them.
+Json starting_medals(const Json& level) {
+  const auto it = level.find("time_limit");
+  const double limit = it != level.end() && it->is_number() ? it->get<double>() : 60.0;
+  const auto share = [limit](double s) {
+    return limit >= 10.0 ? std::round(limit * s * 2.0) / 2.0 : limit * s;
+  };
+  return Json{{"gold", share(1.0 / 3.0)}, {"silver", share(0.5)}, {"bronze", share(0.75)}};
+}
+
 }  // namespace
 
 // One key's field. Returns true when a value was entered (and committed or refused).
@@ -240,7 +251,8 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
         if (!present) {
           if (ImGui::SmallButton(("set##" + field).c_str())) {
             Json next = doc_.json();
-            next.at(where)[key.key] = Json::object();
+            next.at(where)[key.key] =
+                *key.nested == LevelObject::medals ? starting_medals(doc_.json()) : Json::object();
             apply(std::move(next), "adding it was");
           }
           ImGui::SameLine();

@@ -18,6 +18,7 @@ std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir) {
     const tire::LevelLoad load = tire::load_level_file(p);
     e.valid = load.level.has_value();
     e.name = e.valid ? load.level->name : p.filename().string();
+    if (e.valid) e.medals = load.level->medals;
     out.push_back(std::move(e));
   }
   std::sort(out.begin(), out.end(),

@@ -7,12 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "tire/io/level_medals.h"
+
 namespace game {
 
 struct LevelEntry {
   std::filesystem::path path;
-  std::string name;   // the level's "name", or the file name when it does not load
-  bool valid = true;  // false: the file does not load (see its errors when chosen)
+  std::string name;                         // the level's "name", or the file name when it does not load
+  bool valid = true;                        // false: the file does not load (see its errors when chosen)
+  std::optional<tire::LevelMedals> medals;  // the times that earn its medals, if it has them
 };
 
 std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir);

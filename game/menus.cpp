@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
 namespace game {
 
@@ -13,6 +14,31 @@ void centred_text(const char* text, ImVec4 color) {
   if (avail > w) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (avail - w) * 0.5f);
   ImGui::TextColored(color, "%s", text);
 }
+ImVec4 medal_colour(tire::Medal medal) {
+  switch (medal) {
+    case tire::Medal::gold: return {1.0f, 0.84f, 0.2f, 1.0f};
+    case tire::Medal::silver: return {0.82f, 0.85f, 0.9f, 1.0f};
+    case tire::Medal::bronze: return {0.85f, 0.55f, 0.3f, 1.0f};
+    case tire::Medal::none: break;
+  }
+  return {0.7f, 0.7f, 0.7f, 1.0f};
+}
+
+// The medal earned, the three times (the earned one in its colour) and the time of the next one.
+void draw_medals(tire::Medal earned, const tire::LevelMedals& medals, bool won) {
+  if (earned != tire::Medal::none) centred_text((medal_title(earned) + "!").c_str(), medal_colour(earned));
+  char line[160];
+  std::snprintf(line, sizeof line, "Gold %.2f s    Silver %.2f s    Bronze %.2f s", medals.gold,
+                medals.silver, medals.bronze);
+  centred_text(line, {0.75f, 0.75f, 0.75f, 1.0f});
+  const tire::Medal next = tire::next_medal(earned);
+  if (won && next != tire::Medal::none) {
+    std::snprintf(line, sizeof line, "%s within %.2f s", medal_title(next).c_str(),
+                  *tire::medal_time(medals, next));
+    centred_text(line, medal_colour(next));
+  }
+}
+
 }  // namespace
 
 MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vector<std::string>& notes,
@@ -34,7 +60,13 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vec
     for (std::size_t i = 0; i < levels.size(); ++i) {
       const LevelEntry& e = levels[i];
       std::string label = e.path.filename().string() + "   " + (e.valid ? e.name : "(does not load)");
-      if (i < notes.size() && !notes[i].empty()) label += "   (" + notes[i] + ")";
+      const std::string note = i < notes.size() ? notes[i] : "";
+      if (!note.empty()) label += "   (" + note + ")";
+      if (e.medals && !note.starts_with("best")) {  // not won yet: the time to win within for gold
+        char gold[64];
+        std::snprintf(gold, sizeof gold, "   gold within %.2f s", e.medals->gold);
+        label += gold;
+      }
       if (current && *current == i) label += "   [playing]";
       label += "##" + std::to_string(i);
       const bool is_selected = selected == i;
@@ -67,8 +99,19 @@ const char* end_title(tire::ScriptStatus status, tire::EndReason reason) {
   }
 }
 
+std::string medal_title(tire::Medal medal) {
+  switch (medal) {
+    case tire::Medal::gold: return "Gold medal";
+    case tire::Medal::silver: return "Silver medal";
+    case tire::Medal::bronze: return "Bronze medal";
+    case tire::Medal::none: break;
+  }
+  return "";
+}
+
 EndChoice draw_end_screen(tire::ScriptStatus status, tire::EndReason reason, const std::string& level,
-                          double time, const std::string& note, ImFont* big) {
+                          double time, const std::string& note, tire::Medal medal,
+                          const std::optional<tire::LevelMedals>& medals, ImFont* big) {
   EndChoice choice = EndChoice::none;
   const bool won = status == tire::ScriptStatus::won;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -90,6 +133,7 @@ EndChoice draw_end_screen(tire::ScriptStatus status, tire::EndReason reason, con
     else if (reason == tire::EndReason::out_of_bounds)
       centred_text("The tire left the level.", {0.9f, 0.9f, 0.9f, 1.0f});
     if (!note.empty()) centred_text(note.c_str(), {1.0f, 0.85f, 0.35f, 1.0f});
+    if (medals) draw_medals(won ? medal : tire::Medal::none, *medals, won);
     ImGui::Spacing();
     if (won) {
       if (ImGui::Button("Next level (N / Enter)")) choice = EndChoice::next;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "level_list.h"
+#include "tire/io/level_medals.h"
 #include "tire/script/script_runner.h"
 
 struct ImFont;
@@ -28,9 +29,13 @@ enum class EndChoice { none, next, retry };
 // "Off the edge" (the level's bounds), "You lost" (the script's lose action).
 const char* end_title(tire::ScriptStatus status, tire::EndReason reason);
 
-// The title, the level and its time and `note` ("New best time!", "best 9.85 s"), with the
-// next-level / retry buttons.
+// The title, the level and its time and `note` ("New best time!", "best 9.85 s"), the medal the run
+// earned among the level's `medals` (if it has them), with the next-level / retry buttons.
 EndChoice draw_end_screen(tire::ScriptStatus status, tire::EndReason reason, const std::string& level,
-                          double time, const std::string& note, ImFont* big);
+                          double time, const std::string& note, tire::Medal medal,
+                          const std::optional<tire::LevelMedals>& medals, ImFont* big);
+
+// "Gold medal", "Silver medal", "Bronze medal" or "" for none.
+std::string medal_title(tire::Medal medal);
 
 }  // namespace game

@@ -1,5 +1,6 @@
 #include "progress.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -54,7 +55,8 @@ std::string format_record(const LevelRecord* record) {
   if (!record->won) return "not won yet";
   char text[64];
   std::snprintf(text, sizeof text, "best %.2f s", record->best_time);
-  return text;
+  if (record->medal == tire::Medal::none) return text;
+  return std::string(text) + ", " + std::string(tire::medal_name(record->medal));
 }
 
 std::optional<std::map<std::string, LevelRecord>> Progress::parse(const std::string& text,
@@ -106,6 +108,15 @@ std::optional<std::map<std::string, LevelRecord>> Progress::parse(const std::str
         return std::nullopt;
       }
       r.best_ticks = ticks->get<std::uint64_t>();
+      if (const auto medal = entry.find("medal"); medal != entry.end()) {
+        const std::optional<tire::Medal> m =
+            medal->is_string() ? tire::medal_from_name(medal->get<std::string>()) : std::nullopt;
+        if (!m) {
+          error = path + "/medal: must be \"gold\", \"silver\", \"bronze\" or \"none\"";
+          return std::nullopt;
+        }
+        r.medal = *m;
+      }
     }
     out[key] = r;
   }
@@ -144,6 +155,7 @@ std::string Progress::to_json() const {
     if (r.won) {
       entry["best_time"] = r.best_time;
       entry["best_ticks"] = r.best_ticks;
+      if (r.medal != tire::Medal::none) entry["medal"] = tire::medal_name(r.medal);
     }
     levels[key] = entry;
   }
@@ -155,7 +167,7 @@ const LevelRecord* Progress::find(const std::string& key) const {
   return it == levels_.end() ? nullptr : &it->second;
 }
 
-bool Progress::record(const std::string& key, bool won, double time, std::uint64_t ticks) {
+bool Progress::record(const std::string& key, bool won, double time, std::uint64_t ticks, tire::Medal medal) {
   LevelRecord& r = levels_[key];
   if (!won) return false;
   const bool best = !r.won || time < r.best_time;
@@ -164,6 +176,8 @@ bool Progress::record(const std::string& key, bool won, double time, std::uint64
     r.best_time = time;
     r.best_ticks = ticks;
   }
+  r.medal =
+      std::max(r.medal, medal);  // a slower win earns a medal the best did not when the level's times change
   return best;
 }
 

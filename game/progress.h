@@ -5,7 +5,8 @@
 // level inside the file keeps its record and two levels of the same name do not share one.
 //
 //   { "format": "soft-tire-progress/1",
-//     "levels": { "01-first-roll.json": { "won": true, "best_time": 9.85, "best_ticks": 591 } } }
+//     "levels": { "01-first-roll.json": { "won": true, "best_time": 9.85, "best_ticks": 591,
+//                                         "medal": "gold" } } }
 //
 // The file is written atomically (tire::write_file_atomically). A damaged one (not JSON, cut short,
 // wrong types) is reported, renamed to progress.json.damaged, and the game starts with none.
@@ -18,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "tire/io/level_medals.h"
+
 namespace game {
 
 inline constexpr const char* kProgressFormat = "soft-tire-progress/1";
@@ -28,8 +31,9 @@ inline constexpr std::uintmax_t kMaxProgressBytes = 16u << 20;
 
 struct LevelRecord {
   bool won = false;
-  double best_time = 0.0;        // s of simulated time, when won
-  std::uint64_t best_ticks = 0;  // the same in ticks
+  double best_time = 0.0;                 // s of simulated time, when won
+  std::uint64_t best_ticks = 0;           // the same in ticks
+  tire::Medal medal = tire::Medal::none;  // the best medal a win earned (levels/README.md, "medals")
 };
 
 // The data folder from the environment: $XDG_DATA_HOME/soft-tire (when set and absolute), else
@@ -44,7 +48,8 @@ std::string unusable_data_dir(const std::filesystem::path& dir);
 // path when it is not inside it.
 std::string level_key(const std::filesystem::path& levels_dir, const std::filesystem::path& level_file);
 
-// "best 9.85 s" for a won level, "not won yet" for one played but not won, "" for none.
+// "best 9.85 s" for a won level ("best 9.85 s, gold" with a medal), "not won yet" for one played but
+// not won, "" for none.
 std::string format_record(const LevelRecord* record);
 
 class Progress {
@@ -57,9 +62,10 @@ class Progress {
   std::string to_json() const;
 
   const LevelRecord* find(const std::string& key) const;
-  // A finished run of level `key`; true when it is a win faster than the best so far (or the
-  // first win).
-  bool record(const std::string& key, bool won, double time, std::uint64_t ticks);
+  // A finished run of level `key`, and the medal it earned; true when it is a win faster than the
+  // best so far (or the first win). The record keeps the best medal won.
+  bool record(const std::string& key, bool won, double time, std::uint64_t ticks,
+              tire::Medal medal = tire::Medal::none);
   // Puts level `key`'s record back as it was before record() (nullopt: none): after a save that
   // failed, what the game shows stays what the file holds.
   void restore(const std::string& key, const std::optional<LevelRecord>& before);

@@ -23,7 +23,7 @@ namespace {
 constexpr std::array kObjects{LevelObject::root,       LevelObject::solver,   LevelObject::tire,
                               LevelObject::compliance, LevelObject::obstacle, LevelObject::prop,
                               LevelObject::path,       LevelObject::region,   LevelObject::budgets,
-                              LevelObject::bounds};
+                              LevelObject::bounds,     LevelObject::medals};
 static_assert(kObjects.size() == kLevelObjects);
 
 const char* object_name(LevelObject o) {
@@ -38,6 +38,7 @@ const char* object_name(LevelObject o) {
     case LevelObject::region: return "region";
     case LevelObject::budgets: return "budgets";
     case LevelObject::bounds: return "bounds";
+    case LevelObject::medals: return "medals";
   }
   return "?";
 }
@@ -100,6 +101,10 @@ Placed place(LevelObject object, std::string_view shape = "box") {
     case LevelObject::bounds:
       p.doc["bounds"] = json::object();
       p.pointer = "/bounds";
+      break;
+    case LevelObject::medals:
+      p.doc["medals"] = {{"gold", 10}, {"silver", 20}, {"bronze", 30}};
+      p.pointer = "/medals";
       break;
   }
   return p;
@@ -389,6 +394,7 @@ TEST_CASE("level keys: the reference pages list each object's keys in the table'
       {LevelObject::solver, {"levels/README.md", "## `solver`"}},
       {LevelObject::budgets, {"levels/README.md", "## `budgets`"}},
       {LevelObject::bounds, {"levels/README.md", "## `bounds`"}},
+      {LevelObject::medals, {"levels/README.md", "## `medals`"}},
       {LevelObject::tire, {"levels/README.md", "## Tire"}},
       {LevelObject::compliance, {"levels/README.md", "### `compliance`"}},
       {LevelObject::obstacle, {"levels/README.md", "## Obstacle"}},

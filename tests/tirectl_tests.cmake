@@ -301,3 +301,21 @@ tirectl_test("run puts a tire that leaves the bounds back at the checkpoint" 0
   STDOUT "\"status\": \"running\",[ \n]*\"end\": null,.*\"respawns\": [1-9]")
 tirectl_test("validate names a bounds corner the player starts outside" 2 ARGS validate ${BAD}/bad-bounds.json
   STDERR "bad-bounds.json: /bounds/min: must be below and left of the player's start \\[0,0.5\\] \\(/tires/0/position\\), got \\[2,-5\\]")
+
+# Medals: a won run prints the medal it earned; the course check finds a level that holding one
+# direction wins.
+tirectl_test("run prints the medal a win earns" 0 ARGS run ${BAD}/course/held-right.json --ticks 600 --steer 1
+  STDOUT "\"status\": \"won\".*\"medal\": \"gold\"")
+tirectl_test("run prints no medal for a run still going" 0 ARGS run ${BAD}/course/held-right.json --ticks 10
+  STDOUT "\"medal\": null")
+tirectl_test("course finds a level won by holding one direction" 1 ARGS course ${BAD}/course --max-held-share 0.25
+  STDOUT "\"won_holding\": \\[[ \n]*\"right\"[ \n]*\\]"
+  STDERR "1 of 1 levels are won by holding one input")
+tirectl_test("course names a level with no shipped replay that wins it" 1 ARGS course ${BAD}/course
+  --replays ${CMAKE_CURRENT_SOURCE_DIR}/replays --max-held-share 1 STDOUT "no shipped replay wins it")
+# The game's course (levels/): every level has a goal, a time limit, medals and a shipped replay
+# that wins it, and at most a quarter are won by holding one direction or nothing. Label `course`:
+# not in the Debug run (tools/test), which would step the same bits ten times slower.
+add_test(NAME "tirectl course: levels/ is a course" COMMAND tirectl course ${LEVELS}
+  --replays ${CMAKE_CURRENT_SOURCE_DIR}/replays)
+set_tests_properties("tirectl course: levels/ is a course" PROPERTIES LABELS course TIMEOUT 1200)

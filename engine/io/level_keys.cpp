@@ -146,6 +146,8 @@ std::vector<LevelKey> root_keys() {
       Key("bounds", T::object,
           "the box the player must stay in; leaving it loses, or respawns at the last checkpoint")
           .nested(LevelObject::bounds),
+      Key("medals", T::object, "the times to win within for a gold, silver or bronze medal")
+          .nested(LevelObject::medals),
       Key("regions", T::array, "named boxes the script watches, at most {max}")
           .range({0, static_cast<double>(ScriptLimits::max_regions)})
           .nested(LevelObject::region),
@@ -414,11 +416,27 @@ std::vector<LevelKey> bounds_keys() {
   });
 }
 
+std::vector<LevelKey> medals_keys() {
+  using T = KeyType;
+  const Range seconds{0.0, ScriptLimits::max_seconds, true};
+  return table({
+      Key("gold", T::number, "{range}: a win within this time earns gold; less than silver")
+          .range(seconds, "s")
+          .required(),
+      Key("silver", T::number, "{range}: a win within this time earns silver; less than bronze")
+          .range(seconds, "s")
+          .required(),
+      Key("bronze", T::number, "{range}: a win within this time earns bronze; at most the time limit")
+          .range(seconds, "s")
+          .required(),
+  });
+}
+
 const std::array<std::vector<LevelKey>, kLevelObjects>& all_keys() {
   // Built once, in LevelObject's order.
   static const std::array<std::vector<LevelKey>, kLevelObjects> keys{
-      root_keys(), solver_keys(), tire_keys(),   compliance_keys(), obstacle_keys(),
-      prop_keys(), path_keys(),   region_keys(), budget_keys(),     bounds_keys()};
+      root_keys(), solver_keys(), tire_keys(),   compliance_keys(), obstacle_keys(), prop_keys(),
+      path_keys(), region_keys(), budget_keys(), bounds_keys(),     medals_keys()};
   return keys;
 }
 

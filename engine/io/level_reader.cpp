@@ -480,6 +480,37 @@ void read_bounds(JsonReader& r, const json& doc, Level& level, const std::vector
     r.fail(join_path(path, "max"), "must be above and right of" + where + ", got " + written("/bounds/max"));
 }
 
+// The level's medals (level_medals.h): each time given, gold < silver < bronze, and bronze within
+// the time limit (a medal the time limit takes away first cannot be won).
+void read_medals(JsonReader& r, const json& doc, Level& level, const std::vector<JsonIssue>& issues) {
+  const auto it = doc.find("medals");
+  const std::string path = "/medals";
+  if (it == doc.end() || !r.object(*it, path, level_key_names(LevelObject::medals))) return;
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::medals, name);
+  };
+  const json& j = *it;
+  const std::size_t issues_before = issues.size();
+  LevelMedals m;
+  m.gold = read_number(r, j, path, key("gold"), 0.0);
+  m.silver = read_number(r, j, path, key("silver"), 0.0);
+  m.bronze = read_number(r, j, path, key("bronze"), 0.0);
+  if (issues.size() != issues_before) return;
+  const auto order = [&](const char* faster, const char* slower) {
+    if (!(j[faster].get<double>() < j[slower].get<double>()))
+      r.fail(join_path(path, faster), std::string("must be less than ") + slower + " (" +
+                                          JsonReader::describe(j[slower]) + "), got " +
+                                          JsonReader::describe(j[faster]));
+  };
+  order("gold", "silver");
+  order("silver", "bronze");
+  if (level.script.time_limit && m.bronze > *level.script.time_limit)
+    r.fail(join_path(path, "bronze"), "must be at most the time limit (" +
+                                          JsonReader::describe(doc["time_limit"]) + " s), got " +
+                                          JsonReader::describe(j["bronze"]));
+  if (issues.size() == issues_before) level.medals = m;
+}
+
 void check_totals(JsonReader& r, const json& doc, const Level& level) {
   Totals t;
   for (std::size_t i = 0; i < level.tires.size(); ++i)
@@ -580,6 +611,7 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
     if (!p.name.empty()) prop_names.push_back(p.name);
   level.script = read_script(r, doc, prop_names);
   read_bounds(r, doc, level, issues);
+  read_medals(r, doc, level, issues);
   check_totals(r, doc, level);
   if (issues.size() != issues_before) return std::nullopt;
   return level;

@@ -70,6 +70,27 @@ TEST_CASE("a faster win is a new best time and a slower one is not", "[unit][gam
   CHECK(back->at("a.json").won);
 }
 
+TEST_CASE("the best medal won is kept with the best time", "[unit][game]") {
+  Progress p;
+  CHECK(p.record("a.json", true, 20.0, 1200, tire::Medal::bronze));
+  CHECK(format_record(p.find("a.json")) == "best 20.00 s, bronze");
+  CHECK(p.record("a.json", true, 9.5, 570, tire::Medal::gold));
+  // Slower, and with no medal (the level's times were made harder): the gold won stays.
+  CHECK_FALSE(p.record("a.json", true, 12.0, 720, tire::Medal::none));
+  CHECK(p.find("a.json")->medal == tire::Medal::gold);
+  CHECK(format_record(p.find("a.json")) == "best 9.50 s, gold");
+  std::string error;
+  const auto back = Progress::parse(p.to_json(), error);
+  REQUIRE(back);
+  CHECK(back->at("a.json").medal == tire::Medal::gold);
+  // A record from before medals has none.
+  const auto old = Progress::parse(
+      R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": 9, "best_ticks": 540}}})",
+      error);
+  REQUIRE(old);
+  CHECK(old->at("a.json").medal == tire::Medal::none);
+}
+
 TEST_CASE("a damaged progress file is an error naming what is wrong", "[unit][game]") {
   const std::pair<const char*, const char*> cases[] = {
       {R"({"format": "soft-tire-progress/1", "levels": {"a.js)", "not valid JSON"},
@@ -82,6 +103,8 @@ TEST_CASE("a damaged progress file is an error naming what is wrong", "[unit][ga
        "/levels/a.json/best_time"},
       {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": 9, "best_ticks": -1}}})",
        "/levels/a.json/best_ticks"},
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": 9, "best_ticks": 540, "medal": "platinum"}}})",
+       "/levels/a.json/medal"},
   };
   for (const auto& [text, what] : cases) {
     std::string error;

@@ -30,6 +30,17 @@ int replay(const ReplayOptions& options);
 
 int validate(const std::vector<std::string>& files);
 
+// The levels of a folder checked as the game's course (course.cpp): exit 1 when a level lacks a time
+// limit or medals, when no replay in `replays` wins it, or when more than `max_held_share`
+// of the levels are won by holding one input.
+struct CourseOptions {
+  std::string levels = "levels";
+  std::string replays;  // "": not checked
+  double max_held_share = 0.25;
+  double max_seconds = 120.0;  // how long a level without a time limit is held
+};
+int course(const CourseOptions& options);
+
 // levels/schema.json from the parameter table: printed (default), checked (exit 1 when the file
 // differs) or rewritten in place.
 struct SchemaOptions {

@@ -50,6 +50,19 @@ int main(int argc, char** argv) {
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check level files; one line per problem");
   validate_cmd->add_option("files", validate_files, "Level files (JSON)")->required();
 
+  tirectl::CourseOptions course;
+  CLI::App* course_cmd = app.add_subcommand(
+      "course",
+      "Check a folder of levels as a course: goals, time limits, medals, winning replays, one-key wins");
+  course_cmd->add_option("levels", course.levels, "The levels' folder")->capture_default_str();
+  course_cmd->add_option("--replays", course.replays,
+                         "A folder of replays: each level needs one that wins it");
+  course_cmd
+      ->add_option("--max-held-share", course.max_held_share,
+                   "The largest share of levels that holding right, left or nothing may win")
+      ->check(number_in({0, 1}))
+      ->capture_default_str();
+
   tirectl::SchemaOptions schema;
   CLI::App* schema_cmd = app.add_subcommand(
       "schema", "Print levels/schema.json as the parameter table generates it; --check or --write the file");
@@ -105,6 +118,7 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) return tirectl::run(run);
     if (*validate_cmd) return tirectl::validate(validate_files);
+    if (*course_cmd) return tirectl::course(course);
     if (*replay_cmd) return tirectl::replay(replay);
     if (*schema_cmd) return tirectl::schema(schema);
     if (*bench_cmd) return tirectl::bench(bench);

@@ -59,7 +59,8 @@ struct EnergyWatch {
   }
 };
 
-nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepTally& tally,
+nlohmann::ordered_json summary(const tire::LevelSession& session,
+                               const std::optional<tire::LevelMedals>& medals, const SubstepTally& tally,
                                const EnergyWatch& energy) {
   const tire::World& world = session.world();
   nlohmann::ordered_json tires = nlohmann::ordered_json::array();
@@ -93,6 +94,10 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
     end = {{"tick", *tick},
            {"time", static_cast<double>(*tick) * world.config().dt},
            {"reason", tire::to_string(session.end_reason())}};
+  // The medal a win earns (levels/README.md, "medals"); null for a level without medals.
+  nlohmann::ordered_json medal;
+  if (medals && session.status() == tire::ScriptStatus::won && session.end_tick())
+    medal = tire::medal_name(tire::medal_for(*medals, *session.end_tick(), world.config().dt));
   // The box the player must stay in; an open side (the computed top) is null.
   nlohmann::ordered_json bounds;
   if (const std::optional<tire::Aabb>& b = session.bounds()) {
@@ -105,6 +110,7 @@ nlohmann::ordered_json summary(const tire::LevelSession& session, const SubstepT
           {"time", world.time()},
           {"status", tire::to_string(session.status())},
           {"end", end},
+          {"medal", medal},
           {"bounds", bounds},
           {"respawns", session.respawns()},
           {"tires", tires},
@@ -230,7 +236,7 @@ int run(const RunOptions& options) {
       return 2;
     }
   }
-  std::cout << summary(*session, tally, energy).dump(2) << "\n";
+  std::cout << summary(*session, load.level->medals, tally, energy).dump(2) << "\n";
   return 0;
 }
 

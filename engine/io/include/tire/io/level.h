@@ -11,6 +11,7 @@
 
 #include "tire/io/json_reader.h"
 #include "tire/io/level_bounds.h"
+#include "tire/io/level_medals.h"
 #include "tire/rigid/obstacle.h"
 #include "tire/rigid/prop_spec.h"
 #include "tire/script/script_spec.h"
@@ -32,8 +33,9 @@ struct Level {
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
   std::vector<PropSpec> props;
-  LevelBounds bounds;  // the box the player must stay in (level_bounds.h)
-  ScriptSpec script;   // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
+  LevelBounds bounds;                 // the box the player must stay in (level_bounds.h)
+  ScriptSpec script;                  // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
+  std::optional<LevelMedals> medals;  // the times that earn a medal (level_medals.h), if it has them
 };
 
 // Limits enforced before any work is done (docs/testing.md, "Hardening").

@@ -23,8 +23,20 @@ namespace tire {
 
 // The kinds of object a level file holds, each a section of levels/README.md (regions:
 // levels/SCRIPTING.md).
-enum class LevelObject { root, solver, tire, compliance, obstacle, prop, path, region, budgets, bounds };
-inline constexpr std::size_t kLevelObjects = static_cast<std::size_t>(LevelObject::bounds) + 1;
+enum class LevelObject {
+  root,
+  solver,
+  tire,
+  compliance,
+  obstacle,
+  prop,
+  path,
+  region,
+  budgets,
+  bounds,
+  medals
+};
+inline constexpr std::size_t kLevelObjects = static_cast<std::size_t>(LevelObject::medals) + 1;
 
 enum class KeyType {
   number,   // a finite number in `range`
