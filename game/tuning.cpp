@@ -113,6 +113,42 @@ bool Tuning::set(std::string_view key, double value) {
   return true;
 }
 
+namespace {
+// The keys of a preset the panel tunes, and where each is in a Material.
+struct MaterialKey {
+  std::string_view key;
+  double tire::Material::*field = nullptr;  // or one of the compliances
+  double tire::TireCompliance::*compliance = nullptr;
+};
+constexpr MaterialKey kMaterialKeys[] = {
+    {"tires.compliance.outer", nullptr, &tire::TireCompliance::outer},
+    {"tires.compliance.inner", nullptr, &tire::TireCompliance::inner},
+    {"tires.compliance.spoke", nullptr, &tire::TireCompliance::spoke},
+    {"tires.compliance.pressure", nullptr, &tire::TireCompliance::pressure},
+    {"tires.material_damping", &tire::Material::material_damping},
+    {"tires.friction", &tire::Material::friction},
+    {"tires.restitution", &tire::Material::restitution},
+    {"tires.pressure", &tire::Material::pressure},
+};
+double value_in(const tire::Material& m, const MaterialKey& k) {
+  return k.field ? m.*(k.field) : m.compliance.*(k.compliance);
+}
+}  // namespace
+
+Tuning with_material(Tuning t, const tire::Material& material) {
+  for (const MaterialKey& k : kMaterialKeys) t.set(k.key, value_in(material, k));
+  return t;
+}
+
+const tire::Material* material_of(const Tuning& t) {
+  for (const tire::Material& m : tire::kMaterials) {
+    bool all = true;
+    for (const MaterialKey& k : kMaterialKeys) all = all && tuning_value(t, k.key) == value_in(m, k);
+    if (all) return &m;
+  }
+  return nullptr;
+}
+
 double tuning_value(const Tuning& t, std::string_view key) {
   if (key == kSleepKey) return t.sleep ? 1.0 : 0.0;
   const std::size_t i = index_of(key);

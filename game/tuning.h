@@ -42,6 +42,13 @@ struct Tuning {
 // The value of `key` in `t` (kSleepKey: 1 or 0); 0 for a key the panel does not tune.
 double tuning_value(const Tuning& t, std::string_view key);
 
+// `t` with a material preset's values (tire/parameters.h, kMaterials) in the keys the panel tunes:
+// the compliances, material damping, friction, restitution and pressure. Kinetic friction follows
+// friction, as the panel's one friction slider has it; rolling resistance is not the panel's.
+Tuning with_material(Tuning t, const tire::Material& material);
+// The preset whose values `t` holds in those keys, or nullptr (the panel then shows "custom").
+const tire::Material* material_of(const Tuning& t);
+
 // The key = value changes that turn `from` into `to`.
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 

@@ -67,6 +67,18 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("Applies live to every tire, those spawned later too, and wakes them.");
     ImGui::PopStyleColor();
+    // A material preset (tire/parameters.h) sets the tire's sliders at once; any slider moved after
+    // it makes the tire "custom".
+    const tire::Material* now = material_of(t);
+    if (ImGui::BeginCombo("material", now ? now->name : "custom")) {
+      for (const tire::Material& m : tire::kMaterials) {
+        if (ImGui::Selectable(m.name, &m == now)) t = with_material(t, m);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m.description);
+      }
+      ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("A preset for every tire's compliances, damping, friction, restitution and pressure");
     // The keys are the parameter table's (tuning_keys()); each is shown in its slider's section,
     // in the table's order, within the table's range.
     const auto& rows = tuning_parameters();

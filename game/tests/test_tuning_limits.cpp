@@ -165,6 +165,39 @@ TEST_CASE("every pair of tuning slider ends leaves the tire whole", "[unit][game
   UNSCOPED_INFO("least cell over all pairs: " << least_cell);
 }
 
+TEST_CASE("each material preset chosen in the panel is the preset a level names, and holds its shape",
+          "[unit][game][tuning]") {
+  for (const tire::Material& m : tire::kMaterials) {
+    INFO(m.name);
+    GameSession session;
+    session.start("trial.json", trial_level());
+    const Tuning chosen = with_material(session.tuning(), m);
+    CHECK(material_of(chosen) == &m);
+    const std::vector<TuneEvent> changes = tuning_changes(session.tuning(), chosen);
+    for (const TuneEvent& e : changes) session.queue(e);
+    session.flush();
+    tire::TireSpec named;
+    m.apply_to(named);
+    const tire::TireSpec& got = session.world().tires().front().spec;
+    CHECK(got.compliance.outer == named.compliance.outer);
+    CHECK(got.compliance.inner == named.compliance.inner);
+    CHECK(got.compliance.spoke == named.compliance.spoke);
+    CHECK(got.compliance.pressure == named.compliance.pressure);
+    CHECK(got.material_damping == named.material_damping);
+    CHECK(got.friction == named.friction);
+    CHECK(got.kinetic_friction == named.friction);  // the panel's one friction slider
+    CHECK(got.restitution == named.restitution);
+    CHECK(got.pressure == named.pressure);
+    const Trial t = run_trial(changes);
+    INFO("least cell " << t.least_cell << ", least area " << t.least_area);
+    CHECK(t.holds());
+  }
+  // A slider moved after a preset makes it custom.
+  Tuning soft = with_material(Tuning{}, *tire::find_material("soft"));
+  REQUIRE(soft.set("tires.friction", 0.31));
+  CHECK(material_of(soft) == nullptr);
+}
+
 TEST_CASE("the tuning panel's changes reach the tires spawned after them", "[unit][game][tuning]") {
   GameSession session;
   session.start("trial.json", trial_level());
