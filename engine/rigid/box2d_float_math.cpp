@@ -13,10 +13,14 @@
 // 1 ulp of a float rounding boundary, and the same bits everywhere. tests/test_box2d_float_math.cpp
 // checks that Box2D's rotations, inline and compiled, are these.
 //
+// These are C-library names, so no layer of the engine holds them: an engine installed as a library
+// leaves its user's C library alone. They are an object library of their own, tire::float_math
+// (engine/rigid/CMakeLists.txt), that a program opts into; every program of this project does
+// (cmake/float_math.cmake), and a program that embeds the engine links it to get the same bits as
+// tirectl, the game and the browser build (docs/engine.md).
+//
 // No header of the C library is included here: its declarations of these names (noexcept in
 // glibc's, not in musl's) are not needed, and the definitions below are the only ones in sight.
-#include "box2d_float_math.h"
-
 #include "tire/math/exp.h"
 #include "tire/math/trig.h"
 
@@ -37,11 +41,3 @@ float atan2f(float y, float x) noexcept { return static_cast<float>(tire::atan2(
 float expf(float x) noexcept { return static_cast<float>(tire::exp(x)); }
 
 }  // extern "C"
-
-namespace tire {
-
-// RigidWorld's constructor calls this: a static library's object is linked only when something
-// refers to it, and Box2D's references to sinf (a shared library's) are not seen by the linker.
-void use_engine_float_math() {}
-
-}  // namespace tire

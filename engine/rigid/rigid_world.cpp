@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "box2d_float_math.h"
-
 namespace tire {
 
 namespace {
@@ -117,7 +115,6 @@ RigidWorld::RigidWorld(Vec2 gravity)
     : restitution_rule_(std::make_unique<RestitutionRule>()),
       world_(std::make_unique<b2World>(to_b2(gravity))),
       gravity_(gravity) {
-  use_engine_float_math();  // Box2D's rotations are the engine's (box2d_float_math.cpp)
   world_->SetContactListener(restitution_rule_.get());
   b2BodyDef def;
   def.type = b2_staticBody;
