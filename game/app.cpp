@@ -28,9 +28,6 @@ bool is_any(SDL_Scancode k, std::initializer_list<SDL_Scancode> keys) {
   return std::find(keys.begin(), keys.end(), k) != keys.end();
 }
 
-// The HUD's time to beat: the menu's note when it is a best time ("best 9.85 s"), else nothing.
-std::string time_to_beat(const std::string& note) { return note.starts_with("best") ? note : ""; }
-
 }  // namespace
 
 App::App(GameOptions options) : options_(std::move(options)) {}
@@ -136,7 +133,7 @@ void App::after_level_change() {
   best_runs_.level_started(session_.path(), session_.level_ptr(), messages);
   best_runs_.ticked(session_.world().tick());
   for (const std::string& m : messages) warn(m);
-  hud_target_ = time_to_beat(best_runs_.note(session_.path()));
+  hud_target_ = best_runs_.target(session_.path(), session_.level().medals);
   respawns_seen_ = 0;
   sound_.new_level();
   if (window_) SDL_SetWindowTitle(window_, ("Soft tire - " + session_.level().name).c_str());
@@ -482,7 +479,7 @@ void App::level_finished() {
   if (tuned) run_result_->medal = tire::Medal::none;  // not the level's times
   if (tuned && best_runs_.enabled()) run_result_->note = "tuned (F2): not a best time";
   for (const std::string& m : messages) warn(m);
-  hud_target_ = time_to_beat(best_runs_.note(session_.path()));
+  hud_target_ = best_runs_.target(session_.path(), session_.level().medals);
 }
 
 void App::advance(double frame_seconds) {

@@ -91,6 +91,21 @@ std::string BestRuns::note(const std::filesystem::path& level_file) const {
   return format_record(progress_.find(level_key(levels_dir_, level_file)));
 }
 
+std::string BestRuns::target(const std::filesystem::path& level_file,
+                             const std::optional<tire::LevelMedals>& medals) const {
+  const LevelRecord* r = enabled_ ? progress_.find(level_key(levels_dir_, level_file)) : nullptr;
+  std::string out = r && r->won ? format_record(r) : "";
+  const tire::Medal have = r && r->won ? r->medal : tire::Medal::none;
+  const tire::Medal next = have == tire::Medal::none ? tire::Medal::gold : tire::next_medal(have);
+  if (medals && next != tire::Medal::none) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%s within %.2f s", std::string(tire::medal_name(next)).c_str(),
+                  *tire::medal_time(*medals, next));
+    out += (out.empty() ? "" : "  -  ") + std::string(text);
+  }
+  return out;
+}
+
 nlohmann::json BestRuns::summary(const std::string& level_path) const {
   nlohmann::json out{{"enabled", enabled_}};
   if (!enabled_) return out;

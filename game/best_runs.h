@@ -51,6 +51,10 @@ class BestRuns {
 
   // The menu's note for a level file: "best 9.85 s", "not won yet" or "".
   std::string note(const std::filesystem::path& level_file) const;
+  // The HUD's time to beat: the best ("best 9.85 s, silver") and, in a level with `medals`, the
+  // next medal's time ("gold within 7.00 s"; gold's before any medal); "" for neither.
+  std::string target(const std::filesystem::path& level_file,
+                     const std::optional<tire::LevelMedals>& medals) const;
   Ghost& ghost() { return ghost_; }
   const Ghost& ghost() const { return ghost_; }
   // For the exit summary: the progress file, this level's record and the menu's note, the last run,
