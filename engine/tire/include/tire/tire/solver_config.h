@@ -102,10 +102,14 @@ struct SolverConfig {
   // a tick in which none turns by more than settle_turn takes half as many again (World::
   // tick_substeps). A soft tire crushed flat under 100 times its weight (tests/extremes/test_crush.cpp)
   // has its spokes turned by 1–3 rad a step at 2 substeps and blows up; refined it holds, as at 8.
-  // A tire rolling, jumping and landing on flat ground turns its constraints by at most 0.05 rad a
-  // step at 2 substeps, and never refines. max_refine 1 turns it off.
-  double refine_turn = 0.3;
-  double settle_turn = 0.1;
+  // A soft tire rolling at 10 m/s turns its tread by 0.15–0.3 rad a step at 2 substeps, and one
+  // iteration then makes energy (coasting, it sped up from 10 to 10.8 m/s in 5 s, where at 3–8
+  // substeps, or with 2 iterations, it slows to 5–6 m/s): refined past 0.15 rad it gains none
+  // (tests/test_materials.cpp, docs/soft-tire.md). The stiff tire rolling, jumping and landing on
+  // flat ground turns its constraints by at most 0.05 rad a step at 2 substeps, and never refines.
+  // max_refine 1 turns it off.
+  double refine_turn = 0.15;
+  double settle_turn = 0.05;
   int max_refine = 8;
 
   // The most tires one tire is in contact with in a tick (TirePairFinder, soft_contact.h): a tire
