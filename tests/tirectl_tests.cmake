@@ -292,7 +292,7 @@ set_tests_properties("tire-soak holds a level's spawn flood to the tires it was 
 # in under 200 ticks, and the run says why and when; in a level with checkpoints it is put back.
 tirectl_test("run loses a tire driven off a ledge, by the computed bounds" 0
   ARGS run ${BAD}/ledge.json --ticks 200 --steer 1
-  STDOUT "\"status\": \"lost\",[ \n]*\"end\": {[ \n]*\"tick\": 1[0-9][0-9],[ \n]*\"time\": [0-9.]+,[ \n]*\"reason\": \"out_of_bounds\"[ \n]*},[ \n]*\"bounds\": {[ \n]*\"min\": \\[[ \n]*-15.0,[ \n]*-11.0[ \n]*\\],[ \n]*\"max\": \\[[ \n]*15.0,[ \n]*null[ \n]*\\]")
+  STDOUT "\"status\": \"lost\",[ \n]*\"end\": {[ \n]*\"tick\": 1[0-9][0-9],[ \n]*\"time\": [0-9.]+,[ \n]*\"reason\": \"out_of_bounds\"[ \n]*},[ \n]*\"medal\": null,[ \n]*\"bounds\": {[ \n]*\"min\": \\[[ \n]*-15.0,[ \n]*-11.0[ \n]*\\],[ \n]*\"max\": \\[[ \n]*15.0,[ \n]*null[ \n]*\\]")
 tirectl_test("run keeps a tire that stays on the ledge" 0
   ARGS run ${BAD}/ledge.json --ticks 200
   STDOUT "\"status\": \"running\",[ \n]*\"end\": null,")
