@@ -1,18 +1,13 @@
 #include "level_list.h"
 
-#include <algorithm>
-
 #include "tire/io/level.h"
 
 namespace game {
 
 std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir) {
   std::vector<LevelEntry> out;
-  std::error_code ec;
-  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::filesystem::path& p = it->path();
-    if (p.extension() != ".json" || !it->is_regular_file(ec)) continue;
-    if (p.filename() == "schema.json") continue;  // the levels' JSON schema, not a level
+  std::string error;  // an unreadable folder lists what was read: the menu says when it is empty
+  for (const std::filesystem::path& p : tire::level_files(dir, error)) {
     LevelEntry e;
     e.path = p;
     const tire::LevelLoad load = tire::load_level_file(p);
@@ -21,8 +16,6 @@ std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir) {
     if (e.valid) e.medals = load.level->medals;
     out.push_back(std::move(e));
   }
-  std::sort(out.begin(), out.end(),
-            [](const LevelEntry& a, const LevelEntry& b) { return a.path.filename() < b.path.filename(); });
   return out;
 }
 

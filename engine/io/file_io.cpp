@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -248,6 +249,16 @@ std::string check_output_file(const std::filesystem::path& file) {
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
   std::error_code ec;
   return std::filesystem::equivalent(a, b, ec) && !ec;
+}
+
+std::vector<std::filesystem::path> json_files(const std::filesystem::path& dir, std::string& error) {
+  std::vector<std::filesystem::path> out;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().extension() == ".json" && it->is_regular_file(ec)) out.push_back(it->path());
+  if (ec) error = printable(dir.string()) + ": " + ec.message();
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.filename() < b.filename(); });
+  return out;
 }
 
 bool write_file_atomically(const std::filesystem::path& file, std::string_view contents, std::string& error) {

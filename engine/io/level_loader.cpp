@@ -103,6 +103,12 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
   return out;
 }
 
+std::vector<std::filesystem::path> level_files(const std::filesystem::path& dir, std::string& error) {
+  std::vector<std::filesystem::path> files = json_files(dir, error);
+  std::erase_if(files, [](const std::filesystem::path& p) { return p.filename() == "schema.json"; });
+  return files;
+}
+
 LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::string error;
   const auto text = read_file(file, LevelLimits::max_file_bytes, error);

@@ -496,14 +496,15 @@ void read_medals(JsonReader& r, const json& doc, Level& level, const std::vector
   m.silver = read_number(r, j, path, key("silver"), 0.0);
   m.bronze = read_number(r, j, path, key("bronze"), 0.0);
   if (issues.size() != issues_before) return;
-  const auto order = [&](const char* faster, const char* slower) {
-    if (!(j[faster].get<double>() < j[slower].get<double>()))
+  // The values as read; the message quotes them as the file writes them.
+  const auto order = [&](const char* faster, double a, const char* slower, double b) {
+    if (!(a < b))
       r.fail(join_path(path, faster), std::string("must be less than ") + slower + " (" +
                                           JsonReader::describe(j[slower]) + "), got " +
                                           JsonReader::describe(j[faster]));
   };
-  order("gold", "silver");
-  order("silver", "bronze");
+  order("gold", m.gold, "silver", m.silver);
+  order("silver", m.silver, "bronze", m.bronze);
   if (level.script.time_limit && m.bronze > *level.script.time_limit)
     r.fail(join_path(path, "bronze"), "must be at most the time limit (" +
                                           JsonReader::describe(doc["time_limit"]) + " s), got " +

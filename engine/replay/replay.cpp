@@ -373,8 +373,8 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
                          const std::function<void(std::uint64_t)>& after_tick) {
   ReplayOutcome out;
   std::unique_ptr<LevelSession> session = make_session(level);
-  TickInput held;
-  std::size_t next_input = 0, next_checkpoint = 0, next_box = 0;
+  InputFeed feed(replay.inputs);
+  std::size_t next_checkpoint = 0, next_box = 0;
   // The boxes in tick order (file order within a tick): each tick looks only at its own, so that
   // 100 000 boxes cost nothing on the ticks they do not name.
   std::vector<const ReplayBox*> boxes;
@@ -415,10 +415,7 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
   };
   check(0);
   for (std::uint64_t tick = 0; tick < replay.ticks; ++tick) {
-    held.jump = false;
-    while (next_input < replay.inputs.size() && replay.inputs[next_input].tick == tick)
-      apply_input(replay.inputs[next_input++], *session, level, held);
-    session->step(held);
+    feed.step(*session, level);
     check(tick + 1);
     if (after_tick) after_tick(tick + 1);
   }
@@ -431,6 +428,16 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
     if (!out.first_divergent_tick) out.first_divergent_tick = replay.ticks;
   }
   return out;
+}
+
+void InputFeed::step(LevelSession& session, const Level& level) {
+  held_.jump = false;
+  for (; next_ < inputs_.size() && inputs_[next_].tick == tick_; ++next_) {
+    if (recorder_) recorder_->input(inputs_[next_]);
+    apply_input(inputs_[next_], session, level, held_);
+  }
+  session.step(held_);
+  ++tick_;
 }
 
 ReplayRecorder::ReplayRecorder(std::string level_path, std::string level_sha256,

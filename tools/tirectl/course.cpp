@@ -2,7 +2,6 @@
 // Each level needs a time limit and medals; with --replays, a shipped replay that wins it
 // (and the medal that run earns); and at most a share of the levels may be won by holding one
 // direction, or nothing, from the first tick to the last.
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -37,29 +36,12 @@ struct Ending {
 // Plays `inputs` (sorted by tick) into `level` until it ends or `max_ticks` have run.
 Ending play(const tire::Level& level, const std::vector<tire::ReplayInput>& inputs, std::uint64_t max_ticks) {
   std::unique_ptr<tire::LevelSession> session = tire::make_session(level);
-  tire::TickInput held;
-  std::size_t next = 0;
+  tire::InputFeed feed(inputs);
   for (std::uint64_t tick = 0; tick < max_ticks && session->status() == tire::ScriptStatus::running; ++tick) {
-    held.jump = false;
-    while (next < inputs.size() && inputs[next].tick == tick)
-      tire::apply_input(inputs[next++], *session, level, held);
-    session->step(held);
+    feed.step(*session, level);
     session->world().warnings().clear();
   }
   return {session->status(), session->end_tick().value_or(session->world().tick())};
-}
-
-std::vector<fs::path> json_files(const fs::path& dir, std::string& error) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().extension() == ".json" && it->path().filename() != "schema.json" &&
-        it->is_regular_file(ec))
-      out.push_back(it->path());
-  if (ec) error = tire::printable(dir.string()) + ": " + ec.message();
-  std::sort(out.begin(), out.end(),
-            [](const fs::path& a, const fs::path& b) { return a.filename() < b.filename(); });
-  return out;
 }
 
 struct Shipped {
@@ -72,7 +54,7 @@ struct Shipped {
 
 int course(const CourseOptions& options) {
   std::string error;
-  const std::vector<fs::path> levels = json_files(options.levels, error);
+  const std::vector<fs::path> levels = tire::level_files(options.levels, error);
   if (!error.empty() || levels.empty()) {
     std::cerr << "tirectl: course: "
               << (error.empty() ? "no levels in " + tire::printable(options.levels) : error) << "\n";
@@ -80,7 +62,7 @@ int course(const CourseOptions& options) {
   }
   std::vector<Shipped> shipped;
   if (!options.replays.empty()) {
-    for (const fs::path& file : json_files(options.replays, error)) {
+    for (const fs::path& file : tire::json_files(options.replays, error)) {
       tire::ReplayLoad load = tire::load_replay_file(file);
       if (!load.replay) {
         for (const std::string& e : load.errors) std::cerr << e << "\n";
@@ -122,8 +104,7 @@ int course(const CourseOptions& options) {
     if (!options.replays.empty()) {
       ojson wins = ojson::array();
       for (const Shipped& s : shipped) {
-        std::error_code ec;
-        if (!fs::equivalent(s.level, file, ec) || s.replay.expect.status != "won") continue;
+        if (!tire::same_file(s.level, file) || s.replay.expect.status != "won") continue;
         const Ending end = play(level, s.replay.inputs, s.replay.ticks);
         ojson w{{"replay", s.file.filename().string()},
                 {"status", tire::to_string(end.status)},

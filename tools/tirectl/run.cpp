@@ -202,18 +202,12 @@ int run(const RunOptions& options) {
 
   std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
   tire_tools::TickProgress progress("run", static_cast<std::uint64_t>(options.ticks), options.progress);
-  tire::TickInput held;
-  std::size_t next = 0;
+  tire::InputFeed feed(inputs, recorder ? &*recorder : nullptr);
   SubstepTally tally;
   EnergyWatch energy;
   energy.start(session->world());
   for (long long tick = 0; tick < options.ticks; ++tick) {
-    held.jump = false;
-    while (next < inputs.size() && inputs[next].tick == static_cast<std::uint64_t>(tick)) {
-      if (recorder) recorder->input(inputs[next]);
-      tire::apply_input(inputs[next++], *session, *load.level, held);
-    }
-    session->step(held);
+    feed.step(*session, *load.level);
     if (recorder) recorder->after_step(*session);
     tire::World& world = session->world();
     tally.add(world);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tire {
 
@@ -41,6 +42,10 @@ std::string check_output_file(const std::filesystem::path& file);
 // True when `a` and `b` are the same existing file (symbolic and hard links followed); false when
 // either does not exist.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// The *.json regular files of folder `dir`, sorted by file name; `error` says why the folder could
+// not be read (what was read before the failure is returned).
+std::vector<std::filesystem::path> json_files(const std::filesystem::path& dir, std::string& error);
 
 // `text` (a path, a key, anything a user or a file chose) as it may appear inside a one-line
 // message: a newline, carriage return or tab is written \n, \r, \t, any other control character

@@ -69,6 +69,10 @@ LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<s
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});
 
+// The levels of folder `dir` as the game's menu and tirectl course list them: its *.json files but
+// schema.json (the levels' JSON schema), sorted by file name (json_files, file_io.h).
+std::vector<std::filesystem::path> level_files(const std::filesystem::path& dir, std::string& error);
+
 // Adds the level's obstacles, props and tires to an empty world built with its solver and
 // gravity: its physics, without the script.
 void populate_world(const Level& level, World& world);

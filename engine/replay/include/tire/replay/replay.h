@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,25 @@ class ReplayRecorder {
  private:
   Replay replay_;
   std::uint64_t checkpoint_every_;
+};
+
+// A run's inputs (sorted by tick) played into a session one tick at a time: before each step, the
+// inputs written for that tick of the run (counted from its start, across restarts) are applied,
+// and `recorder`, when given, records each as it is applied. run_replay, tirectl run and tirectl
+// course play inputs so.
+class InputFeed {
+ public:
+  explicit InputFeed(std::span<const ReplayInput> inputs, ReplayRecorder* recorder = nullptr)
+      : inputs_(inputs), recorder_(recorder) {}
+  // Applies this tick's inputs and steps the session.
+  void step(LevelSession& session, const Level& level);
+
+ private:
+  std::span<const ReplayInput> inputs_;
+  ReplayRecorder* recorder_;
+  std::size_t next_ = 0;
+  std::uint64_t tick_ = 0;
+  TickInput held_;  // steer and inflate hold from tick to tick; jump is for its tick only
 };
 
 }  // namespace tire
