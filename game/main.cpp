@@ -8,10 +8,10 @@
 #include <iostream>
 #include <memory>
 
-#include "app.h"
+#include "app/app.h"
+#include "app/replay_check.h"
 #include "cli_numbers.h"
-#include "progress.h"
-#include "replay_check.h"
+#include "progress/progress.h"
 
 #ifdef __EMSCRIPTEN__
 #include <emscripten.h>

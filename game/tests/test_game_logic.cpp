@@ -9,17 +9,17 @@
 #include <fstream>
 #include <thread>
 
-#include "camera.h"
-#include "draw.h"
-#include "frame_stats.h"
-#include "game_session.h"
-#include "hot_reload.h"
-#include "hud.h"
-#include "key_script.h"
-#include "level_list.h"
-#include "menus.h"
-#include "renderer.h"
-#include "tuning.h"
+#include "app/frame_stats.h"
+#include "app/hot_reload.h"
+#include "app/level_list.h"
+#include "app/menus.h"
+#include "input/key_script.h"
+#include "play/game_session.h"
+#include "play/tuning.h"
+#include "render/camera.h"
+#include "render/draw.h"
+#include "render/hud.h"
+#include "render/renderer.h"
 
 using namespace game;
 

@@ -5,12 +5,12 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
-#include "best_runs.h"
-#include "gamepad.h"
-#include "ghost.h"
-#include "pad_script.h"
-#include "progress.h"
-#include "session_recorder.h"
+#include "input/gamepad.h"
+#include "input/pad_script.h"
+#include "play/session_recorder.h"
+#include "progress/best_runs.h"
+#include "progress/ghost.h"
+#include "progress/progress.h"
 #include "tire/math/state_hash.h"
 
 using namespace game;

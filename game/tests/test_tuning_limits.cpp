@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "game_session.h"
-#include "tuning.h"
+#include "play/game_session.h"
+#include "play/tuning.h"
 
 using namespace game;
 

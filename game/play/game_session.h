@@ -1,0 +1,76 @@
+// One level being played: the engine's LevelSession (world and script), the Level it was built
+// from, the tuning in force and what rendering needs to interpolate between ticks. Every input
+// reaches the session through here (session_input.h): events are queued, then applied between
+// ticks by flush(); step() flushes and then calls LevelSession::step, the same fixed tick tirectl
+// runs.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "input/session_input.h"
+#include "play/tuning.h"
+#include "tire/io/level.h"
+#include "tire/session/level_session.h"
+
+namespace game {
+
+class GameSession {
+ public:
+  // Builds a fresh world from `level` at once (no observer call: use a LoadLevelEvent for that).
+  void start(std::string path, std::shared_ptr<const tire::Level> level);
+
+  // Queues an event for the next flush. Consecutive MoveGrabEvents collapse into the last one.
+  void queue(SessionEvent event);
+  // Applies the queued events now (between ticks) and tells the observer.
+  void flush();
+  // flush(), remember the positions for interpolation, then World::step(input).
+  void step(const tire::TickInput& input);
+
+  void set_observer(SessionObserver* observer) { observer_ = observer; }
+
+  bool loaded() const { return session_ != nullptr; }
+  tire::LevelSession& level_session() { return *session_; }
+  const tire::LevelSession& level_session() const { return *session_; }
+  tire::World& world() { return session_->world(); }
+  const tire::World& world() const { return session_->world(); }
+  const tire::Level& level() const { return *level_; }
+  const std::shared_ptr<const tire::Level>& level_ptr() const { return level_; }
+  const std::string& path() const { return path_; }
+  const Tuning& tuning() const { return tuning_; }
+  // Whether the tuning panel changed the world since the level was (re)started: such a run is not
+  // the level as written, and its time does not count as a best time.
+  bool tuned() const { return tuned_; }
+  // Counts level loads: a change tells the app to reset its camera and grab state.
+  std::uint64_t generation() const { return generation_; }
+
+  // Particle positions blended between the previous tick and the current one: alpha 0 is the
+  // previous tick, 1 the current. A tire with no previous tick (just spawned) is drawn as it is.
+  void interpolated_positions(const tire::Tire& tire, double alpha, std::vector<tire::Vec2>& out) const;
+  tire::Vec2 interpolated_centroid(const tire::Tire& tire, double alpha) const;
+  // A live prop's pose, blended the same way.
+  tire::Pose interpolated_pose(std::uint32_t prop, double alpha) const;
+
+  // Warnings the world raised since the last call.
+  std::vector<std::string> take_warnings();
+
+ private:
+  void apply(const SessionEvent& event);
+
+  std::unique_ptr<tire::LevelSession> session_;
+  std::shared_ptr<const tire::Level> level_;
+  std::string path_;
+  Tuning tuning_;
+  bool tuned_ = false;
+  std::uint64_t generation_ = 0;
+  std::vector<SessionEvent> queue_;
+  SessionObserver* observer_ = nullptr;
+  std::unordered_map<tire::TireId, std::vector<tire::Vec2>> previous_x_;
+  std::vector<tire::Pose> previous_poses_;
+};
+
+}  // namespace game
