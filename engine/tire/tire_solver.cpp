@@ -7,6 +7,7 @@
 #include "tire/math/check.h"
 #include "tire/math/exp.h"
 #include "tire/tire/soft_contact.h"
+#include "tire/tire/tire_method.h"
 
 namespace tire {
 
@@ -21,28 +22,6 @@ double drive_angular_acceleration(const Tire& t, const RigidMotion& motion) {
   const double target = steer * t.spec.max_speed;
   if (steer > 0.0 ? tread_speed >= target : tread_speed <= target) return 0.0;
   return -steer * t.spec.drive_acceleration / t.spec.outer_radius;
-}
-
-// The global method's prediction carries a tire's spin on as a rotation. v ← (x − xₙ)/h is a chord:
-// a tire that turned by θ over the last substep moves along straight chords, and projecting them
-// back onto its ring takes θ − atan θ of every turn away, about θ³/3 (a free tire spinning at
-// 25 rad/s keeps 8.6 rad/s after a second at 2 substeps, 14.4 at 8, with Gauss–Seidel, which still
-// steps so; it also made the tire accelerate more slowly at few substeps). So each particle's velocity
-// relative to the hub's is turned by the angle the tire turned through: from the chords,
-// Σ m r × (v − V) / Σ m |r|² = sin θ / h exactly for a rigid turn (r at the substep's end). A rigid
-// spin then goes on at any substep count, as Müller et al. 2020 advance a rigid body's orientation
-// by its angular velocity rather than along a chord; deformation is turned with the tire.
-// Gauss–Seidel keeps the plain step, bit for bit.
-void turn_velocities(Tire& t, double h) {
-  const RigidMotion m = t.rigid_motion();
-  const double sin_theta = std::clamp(m.omega * h, -1.0, 1.0);
-  if (sin_theta == 0.0) return;
-  const double cos_theta = std::sqrt(1.0 - sin_theta * sin_theta);
-  for (std::size_t i = 0; i < t.particles.size(); ++i) {
-    const Vec2 u = t.particles.v[i] - m.velocity;
-    t.particles.v[i] =
-        m.velocity + Vec2{cos_theta * u.x - sin_theta * u.y, sin_theta * u.x + cos_theta * u.y};
-  }
 }
 
 // The anti-tunnelling clamp: no particle faster than v_max. Scaling each particle's velocity on its
@@ -89,7 +68,7 @@ void predict(Tire& t, const SubstepContext& ctx) {
     for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += k.velocity + perp(p.x[i] - k.centre) * k.spin;
     t.late_push = {};
   }
-  if (ctx.config->method == SolverMethod::global) turn_velocities(t, h);
+  tire_method(ctx.config->method).carry_velocities(t, h);
   const RigidMotion motion = t.control.steer != 0.0 ? t.rigid_motion() : RigidMotion{};
   const double alpha = drive_angular_acceleration(t, motion);
   const Vec2 hub = motion.centroid;
@@ -143,60 +122,6 @@ void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
   }
 }
 
-// A particle against a prop: the contact in the prop's frame (its motion over the substep taken
-// into account), friction relative to the moving surface, and for a dynamic prop the generalized
-// inverse mass w = 1/M + (r×n)²/I (Müller 2020 eq. 2–3) and the reaction impulse −m Δx/h.
-void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext& ctx) {
-  const PropFrame& frame = t.prop_frames[pair.index];
-  const Prop& prop = ctx.rigid->props()[frame.prop];
-  Vec2& x = t.particles.x[pair.particle];
-  const Vec2 x_prev = t.particles.x_prev[pair.particle];
-  const auto local = local_contact(prop.geometry, frame.start.to_local(x_prev), frame.end.to_local(x),
-                                   t.was_held(pair.particle));
-  if (!local) return;
-  const SurfaceContact c{frame.end.rotate(local->normal), local->depth};
-  const double t_end = ctx.time + ctx.h;
-  const Vec2 surface_velocity = prop.point_velocity(x, t_end);
-  double normal_share = 1.0, tangent_share = 1.0;
-  const double w = t.particles.w[pair.particle];
-  // A dynamic prop pushed into what holds it up (the ground under a crate) cannot give way that way
-  // this tick: its inverse mass along the push is scaled by its mobility (0 straight into a
-  // support), and the impulse still reaches it, where Box2D hands it to the support (shock
-  // propagation, one level deep).
-  if (prop.is_dynamic()) {
-    const Vec2 r = x - prop.center_at(t_end);
-    const double rn = cross(r, c.normal), rt = dot(r, c.normal);  // r × n and r × t, t = perp(n)
-    const double mob_n = prop.mobility(-c.normal),
-                 mob_t = std::min(prop.mobility(perp(c.normal)), prop.mobility(-perp(c.normal)));
-    normal_share = w / (w + mob_n * (prop.inverse_mass + rn * rn * prop.inverse_inertia));
-    tangent_share = w / (w + mob_t * (prop.inverse_mass + rt * rt * prop.inverse_inertia));
-  }
-  ContactRecord& rec = t.touch_contact(pair.particle);
-  const Vec2 before = x;
-  resolve_contact(x, x_prev, c, pair.mu_static, pair.mu_kinetic, rec, surface_velocity * ctx.h, normal_share,
-                  tangent_share);
-  rec.surface_velocity = surface_velocity;
-  rec.prop = static_cast<std::int32_t>(frame.prop);
-  if (prop.is_dynamic())
-    t.prop_impulses.push_back({frame.prop, (before - x) * (t.particle_mass() / ctx.h), x, t_end, ctx.time});
-}
-
-void solve_contacts(Tire& t, const SubstepContext& ctx) {
-  Particles& p = t.particles;
-  const std::vector<Obstacle>& obstacles = ctx.rigid->obstacles();
-  for (const ContactPair& pair : t.pairs) {
-    const std::uint32_t i = pair.particle;
-    if (pair.is_prop) {
-      resolve_prop_contact(t, pair, ctx);
-    } else if (const auto c = swept_box_contact(p.x_prev[i], p.x[i], obstacles[pair.index].box)) {
-      ContactRecord& rec = t.touch_contact(i);
-      resolve_contact(p.x[i], p.x_prev[i], *c, pair.mu_static, pair.mu_kinetic, rec);
-      rec.surface_velocity = {};
-      rec.prop = -1;
-    }
-  }
-}
-
 // Momentum-conserving damping (Müller et al. 2007, "Position Based Dynamics", Sec. 3.5): only the
 // deviation from the tire's rigid motion decays, at rate `damping` per second. Leaves `m` as is.
 void damp_deviation(Tire& t, const RigidMotion& m, double damping, double h) {
@@ -235,71 +160,6 @@ void cap_horizontal_speed(Tire& t, RigidMotion& m) {
   const double shift = std::copysign(t.spec.max_speed, vx) - vx;
   for (Vec2& v : t.particles.v) v.x += shift;
   m.velocity.x += shift;
-}
-
-// The global method's kinetic friction (Müller et al. 2020, eq. 30: a sliding contact's friction
-// impulse is at most μ_k times its normal impulse J_n = m λ_n/h), split between the tire's rigid
-// motion and the particle's own motion about it. Taken off the particle's velocity alone, as
-// Gauss–Seidel does, it stalls a particle of a stiff tire: a spinning tread landing in one substep
-// has a normal impulse many times the particle's momentum, the particle is stopped dead while its
-// ring spins on, and the next solve throws the tire off the stalled point (a spinning tire dropped
-// 2 cm left the ground again at 5 m/s at 2 substeps). So, contact after contact:
-//  - the rigid part: the slip of the tire's rigid motion at the point, v_t, is stopped by at most
-//    j = min(μ_k J_n, m_eff |v_t|), with m_eff = (1/M + (r×t)²/I)⁻¹ the tire's mass there along the
-//    tangent t; j changes the whole tire's velocity and spin (later contacts see the change);
-//  - the deformation part: the particle's tangential velocity about that rigid motion (a tread
-//    squeezed out sideways) takes what is left of μ_k J_n, at most all of it.
-// Impulses owed to dynamic props are recorded. Against another tire (the global method's contacts
-// between tires, whose static friction is in the position solve) the slip is relative to the
-// neighbour's tread, the rigid part's mass is the pair's reduced mass (the neighbour's give along
-// the tangent, TreadView::give, added to the tire's), and the neighbour takes the opposite impulse
-// as a push for its next prediction (TireNeighbours::apply_reactions after the velocity pass). Without
-// it a contact between tires that slipped had no friction at all, and a tire wedged in a pile could
-// spin in place for ever (docs/at-rest.md). A spinning landing then rolls off at the speed its
-// angular momentum gives at 1 to 256 substeps; Müller's per-particle form reaches that speed only at
-// 256. Where a short slide decides (a polygon's landings on a slope) the two forms differ even at
-// 2048 substeps, by up to 5 cm over a 2 s roll at 12 segments (docs/accuracy.md, the cross-check).
-void apply_kinetic_friction_split(Tire& t, const SubstepContext& ctx) {
-  Particles& p = t.particles;
-  const RigidMotion m = t.rigid_motion();
-  const double mass = t.total_mass(), particle_mass = t.particle_mass();
-  if (!(m.inertia > 0.0)) return;
-  Vec2 dv;          // change of the hub's velocity so far
-  double dw = 0.0;  // and of the spin
-  t.for_each_contact([&](std::uint32_t i) {
-    const ContactRecord& c = t.contacts[i];
-    if (!c.active || c.stuck || (c.tire >= 0 && !ctx.neighbours)) return;
-    const Vec2 r = p.x[i] - m.centroid;
-    const auto tangential = [&](Vec2 v) { return v - c.normal * dot(v, c.normal); };
-    double budget = c.mu_kinetic * particle_mass * c.lambda_n / ctx.h;  // μ_k J_n (N·s)
-    Vec2 impulse;
-    const Vec2 slip = tangential(m.velocity + dv + perp(r) * (m.omega + dw) - c.surface_velocity);
-    if (const double speed = length(slip); speed > 0.0 && budget > 0.0) {
-      const Vec2 tangent = slip / speed;
-      const double rt = cross(r, tangent);
-      const double m_eff = 1.0 / (1.0 / mass + rt * rt / m.inertia + c.other_give_t);
-      const double j = std::min(budget, m_eff * speed);
-      budget -= j;
-      impulse = tangent * -j;
-      dv += impulse / mass;
-      dw += cross(r, impulse) / m.inertia;
-    }
-    // The particle's own slip about the rigid motion (the rigid changes above do not alter it).
-    const Vec2 own = tangential(p.v[i] - (m.velocity + perp(r) * m.omega));
-    if (const double speed = length(own); speed > 0.0 && budget > 0.0) {
-      const Vec2 dv_own = own * -(std::min(budget / particle_mass, speed) / speed);
-      p.v[i] += dv_own;
-      impulse += dv_own * particle_mass;
-    }
-    if (c.prop >= 0 && impulse != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
-      t.prop_impulses.push_back(
-          {static_cast<std::uint32_t>(c.prop), impulse * -1.0, p.x[i], ctx.time + ctx.h, ctx.time + ctx.h});
-    if (c.tire >= 0 && impulse != Vec2{})  // the neighbour takes −impulse: a push of impulse·h (kg·m)
-      ctx.neighbours->reactions(ctx.neighbours->index_of(t))
-          .push_back({static_cast<std::uint32_t>(c.tire), 0, p.x[i], impulse * ctx.h, false});
-  });
-  if (dv == Vec2{} && dw == 0.0) return;
-  for (std::uint32_t i = 0; i < p.size(); ++i) p.v[i] += dv + perp(p.x[i] - m.centroid) * dw;
 }
 
 // The hub's velocity: the mean of the particles' (they all weigh the same).
@@ -391,27 +251,15 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
   const Vec2 before = bounces ? hub_velocity(p) : Vec2{};
   derive_velocities(p, ctx.h);
   std::copy(t.on_tire.begin(), t.on_tire.end(), t.grounded_flags.begin());
-  const bool global = ctx.config->method == SolverMethod::global;
-  if (global) apply_kinetic_friction_split(t, ctx);
+  const TireMethod& method = tire_method(ctx.config->method);
+  method.apply_friction(t, ctx);
   t.for_each_contact([&](std::uint32_t i) {
     const ContactRecord& c = t.contacts[i];
-    // Against another tire, friction is static only, in the position solve (as the Gauss–Seidel
-    // contact between tires has it): the other tire could not take a kinetic impulse back here.
-    // The global method's kinetic friction against surfaces was applied above.
-    const Vec2 dv = c.tire >= 0 || global ? Vec2{} : apply_kinetic_friction(p.v[i], c, ctx.h);
-    if (c.prop >= 0 && dv != Vec2{} && ctx.rigid->props()[static_cast<std::size_t>(c.prop)].is_dynamic())
-      t.prop_impulses.push_back({static_cast<std::uint32_t>(c.prop), dv * -t.particle_mass(), p.x[i],
-                                 ctx.time + ctx.h, ctx.time + ctx.h});
     if (c.active && c.normal.y >= ctx.config->ground_normal_y) t.grounded_flags[i] = 1;
   });
   if (bounces) apply_restitution(t, ctx, before);
   t.air_time = t.grounded() ? 0.0 : t.air_time + ctx.h;
-  // The global method damps inside its solve (XPBD eq. 26); Gauss–Seidel damps here.
-  const bool dashpots = ctx.config->method == SolverMethod::gauss_seidel;
-  if (const double tau = t.spec.material_damping; tau > 0.0 && dashpots) {
-    t.distance.damp(p.x.data(), p.v.data());
-    damp_area_constraint(t.area_constraint, p.x.data(), p.v.data(), p.w.data(), tau, ctx.h);
-  }
+  method.damp_material(t, ctx.h);
   RigidMotion motion = t.rigid_motion();
   if (ctx.config->damping > 0.0) damp_deviation(t, motion, ctx.config->damping, ctx.h);
   apply_rolling_resistance(t, motion, ctx.h);
@@ -425,8 +273,7 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   TIRE_ASSERT(config.dt > 0.0 && std::isfinite(config.dt), "the tick is not a positive length of time");
   TIRE_ASSERT(t.sizes_consistent(), "a tire's arrays no longer match its particle count");
   const double h = config.dt / config.substeps;
-  if (config.method == SolverMethod::gauss_seidel)
-    t.distance.prepare(t.particles.w.data(), h, t.spec.material_damping);
+  tire_method(config.method).begin_tick(t, h);
   // The farthest any particle can get this tick: the clamp bounds each substep's travel; the
   // tire's radius covers what the constraints can move a particle on top of that.
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
@@ -460,43 +307,10 @@ void begin_substep(Tire& t, const SubstepContext& ctx) {
   t.grab_lambda = 0.0;
 }
 
-namespace {
-
-// The grab: C = |x − target| pulled to 0 with compliance α (XPBD eq. 18 with one particle).
-void solve_grab(Tire& t, double inv_h2) {
-  Vec2& x = t.particles.x[t.grab_particle];
-  const double w = t.particles.w[t.grab_particle];
-  const Vec2 d = x - t.grab_target;
-  const double len = length(d);
-  if (len <= 0.0 || w <= 0.0) return;
-  const double alpha_tilde = t.grab_compliance * inv_h2;
-  const double delta_lambda = (-len - alpha_tilde * t.grab_lambda) / (w + alpha_tilde);
-  t.grab_lambda += delta_lambda;
-  x += d * (w * delta_lambda / len);
-}
-
-}  // namespace
-
 void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
   Particles& p = t.particles;
-  const bool global = ctx.config->method == SolverMethod::global;
-  if (global) {
-    // Every constraint and surface contact of the tire at once (global_solver.h).
-    TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");
-    const GlobalSolverPool::Lease solver = ctx.global->lend();
-    solver->solve(t, ctx);
-    t.predicted_push = {};
-  } else {
-    if (t.grabbed) solve_grab(t, 1.0 / (ctx.h * ctx.h));
-    t.distance.solve(p.x.data());
-    const double inv_h2 = 1.0 / (ctx.h * ctx.h);
-    solve_area_constraint(t.area_constraint, t.area_lambda, p.x.data(), p.w.data(), inv_h2);
-    // The rim's area, once per substep (in its last iteration): it is there so that a heavy load
-    // cannot fold the rim, and a load builds over substeps, not within one. Its ring's edges, solved
-    // every iteration, keep its shape in between. (With one iteration, the default, that is every
-    // iteration anyway.)
-    if (last) solve_area_constraint(t.rim_area_constraint, t.rim_area_lambda, p.x.data(), p.w.data(), inv_h2);
-  }
+  const TireMethod& method = tire_method(ctx.config->method);
+  method.solve_constraints(t, ctx, last);
   // Where each ring is now: for the tread–rim contact, and for the contacts between tires that
   // follow this iteration.
   const auto bounds_of = [&](std::uint32_t first, Vec2& hub, double& reach) {
@@ -514,7 +328,7 @@ void solve_iteration(Tire& t, const SubstepContext& ctx, bool last) {
     bounds_of(t.n, t.rim_hub, t.rim_reach);
     keep_tread_outside_rim(t);
   }
-  if (!global) solve_contacts(t, ctx);
+  method.solve_surface_contacts(t, ctx);
   if (ctx.tire_pairs) bounds_of(0, t.tread_hub, t.tread_reach);
 }
 

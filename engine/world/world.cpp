@@ -10,6 +10,7 @@
 #include "tire/math/state_hash.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/soft_contact.h"
+#include "tire/tire/tire_method.h"
 #include "tire/tire/tire_solver.h"
 
 namespace tire {
@@ -335,15 +336,17 @@ void World::step(const TickInput& input) {
   // moving may reach woken; each awake tire's broad phase against obstacles and props, and its
   // jump; the broad phase between tires (a lone tire skips it), its pairs coloured for the
   // parallel solve.
-  // With the global method Box2D steps with the substeps (rigid_world.h): each of its steps is h,
-  // and the tick takes the refinement's substeps (SolverConfig::refine_turn).
-  const bool global = config_.method == SolverMethod::global;
-  if (!global) refine_ = 1;
+  // The method (tire_method.h) says whether Box2D steps with the substeps (rigid_world.h: each of
+  // its steps is then h) and whether the tick takes the refinement's substeps
+  // (SolverConfig::refine_turn).
+  const TireMethod& method = tire_method(config_.method);
+  if (!method.refines_substeps()) refine_ = 1;
   tick_config_ = config_;
   tick_config_.substeps = config_.substeps * refine_;
   const double h = config_.dt / tick_config_.substeps;
-  const bool rigid_substeps = global && !rigid_.props().empty();
-  rigid_.begin_tick(rigid_substeps ? h : config_.dt, global);
+  const bool substep_motion = method.steps_props_with_substeps();
+  const bool rigid_substeps = substep_motion && !rigid_.props().empty();
+  rigid_.begin_tick(rigid_substeps ? h : config_.dt, substep_motion);
   if (!config_.sleep && sleep_.asleep_count() > 0) wake_all();  // sleeping was turned off
   wake_for_props();
   if (sleep_.stale()) sleep_.refresh(tires_);
@@ -351,9 +354,9 @@ void World::step(const TickInput& input) {
   sleep_.clear_woken();
   find_tire_pairs();
   color_pairs();
-  // The global method solves the contacts between tires inside each tire's system instead
-  // (tire_neighbours.h): each tire's neighbours.
-  const bool neighbours = global && !tire_pairs_.empty();
+  // A method that couples tires in its solves takes each tire's neighbours (tire_neighbours.h)
+  // instead of solving the pairs after each iteration.
+  const bool neighbours = method.couples_tires_in_solve() && !tire_pairs_.empty();
   if (neighbours) neighbours_.set_pairs(tires_.size(), sleep_.awake(), tire_pairs_);
 
   SubstepContext ctx{h,        0.0,
@@ -361,7 +364,7 @@ void World::step(const TickInput& input) {
                      &rigid_,  !tire_pairs_.empty(),
                      &global_, neighbours ? &neighbours_ : nullptr};
   // (The fused schedule runs a substep's prediction and first iteration in one sweep; with the
-  // contacts between tires in the global solves, the tires take their turns by colour, each after
+  // contacts between tires in the tires' solves, the tires take their turns by colour, each after
   // every prediction, and with Box2D stepping between substeps: the plain loop.)
   if (schedule_ == StepSchedule::fused && !neighbours && !rigid_substeps) {
     fused_substeps(ctx);  // the loop below in fewer sweeps over the tires, to the same bits: see there
@@ -370,7 +373,7 @@ void World::step(const TickInput& input) {
       ctx.time = s * h;
       if (rigid_substeps && s > 0) {  // Box2D steps the last substep's pushes, then is read again
         rigid_.end_tick(h);
-        rigid_.begin_tick(h, global, ctx.time);
+        rigid_.begin_tick(h, substep_motion, ctx.time);
       }
       // Predict: v ← v + h f_ext/m;  x_prev ← x;  x ← x + h v.
       predict(ctx);
@@ -382,13 +385,13 @@ void World::step(const TickInput& input) {
   }
 
   // After the substeps: the impulses the tires gave props go to Box2D, which steps them (the last
-  // substep, with the global method); a tire that diverged is reset.
+  // substep, when it steps with the substeps); a tire that diverged is reset.
   rigid_.end_tick(rigid_substeps ? h : config_.dt);
   for (const std::uint32_t i : sleep_.awake()) {
     note_failed_solves(tires_[i]);
     guard_divergence(tires_[i]);
   }
-  if (global) update_refinement();
+  if (method.refines_substeps()) update_refinement();
   if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, tick_config_, held);
   if (sleep_.stale()) sleep_.refresh(tires_);
   sleep_.hold_props_near_awake_tires(tires_, rigid_);
@@ -472,7 +475,8 @@ void World::solve_positions(const SubstepContext& ctx, int iteration) {
   solve_tire_pairs();
 }
 
-// The global method with tires in contact: block Gauss–Seidel between tires (tire_neighbours.h).
+// A method that couples tires in its solves, with tires in contact: block Gauss–Seidel between
+// tires (tire_neighbours.h).
 // A colour at a time, its tires solved in parallel against their neighbours' treads as the colours
 // before left them; then the pushes they owe the neighbours, in tire order.
 //
@@ -585,7 +589,7 @@ void World::set_threads(unsigned threads) {
 }
 
 void World::reserve_global_solvers() {
-  if (config_.method != SolverMethod::global || tires_.empty()) return;
+  if (!tire_method(config_.method).needs_solver_pool() || tires_.empty()) return;
   std::uint32_t segments = 0;
   for (const Tire& t : tires_) segments = std::max(segments, t.n);
   global_.reserve(threads_, segments);

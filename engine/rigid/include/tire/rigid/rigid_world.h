@@ -8,20 +8,21 @@
 // tick, so a crate gives way as it is pushed. At the end of the tick the impulses go to Box2D and
 // Box2D steps (only if something can move).
 //
-// With the global method Box2D steps once per substep instead (World::step: end_tick(h), then
-// begin_tick(h, …, time) for the next): the props meet the tires at the substeps' rate, as the
-// tires' own constraints do, and a tire pushing a crate does to it what it does at any substep
-// count (a crate standing still for a whole tick took every substep's push as a collision: driven
-// into a 6 kg crate, the tire pushed it 2.45 m at 2 substeps and 8.62 m at 8 on average over ten
-// starts; now 2.07 and 2.11 m, docs/physics.md, "What the default does differently").
+// With substep motion (begin_tick's `substep_motion`, which the world asks for when its method says
+// so), Box2D steps once per substep instead (World::step: end_tick(h), then begin_tick(h, …, time)
+// for the next): the props meet the tires at the substeps' rate, as the tires' own constraints do,
+// and a tire pushing a crate does to it what it does at any substep count (a crate standing still
+// for a whole tick took every substep's push as a collision: driven into a 6 kg crate, the tire
+// pushed it 2.45 m at 2 substeps and 8.62 m at 8 on average over ten starts, against 2.07 and
+// 2.11 m with substep motion; docs/physics.md, "What the default does differently").
 //
-// With substep motion (the global method's; begin_tick), a prop that touches nothing in Box2D moves
+// With substep motion a prop that touches nothing in Box2D moves
 // within the tick as the tire's particles do (Macklin et al. 2019, Algorithm 1): gravity each
 // substep, and a push from the substep in which it acted, not from the tick's start. Box2D then
 // starts its step from where that motion leaves the prop less a step at its final velocity, so it
 // ends the tick where the tires last saw it. (Without it a crate lying on a tire feels its weight
 // once a tick and each push as if made at the tick's start: at 8 substeps it bounced on the tire
-// by 4 cm for ever.) Gauss–Seidel keeps the tick-long motion its recorded replays were made with.
+// by 4 cm for ever.) Without it the props keep the tick-long motion (the Gauss–Seidel method's).
 #pragma once
 
 #include <algorithm>
@@ -48,7 +49,7 @@ struct Prop {
   PropGeometry geometry;  // the shape the tires collide with; its Box2D body is RigidWorld's own
   bool alive = true;
 
-  // Tick state (doubles, read from Box2D at the start of the tick; with the global method, at the
+  // Tick state (doubles, read from Box2D at the start of the tick; with substep motion, at the
   // start of each substep, begin_tick's `time`).
   double start_time = 0.0;       // when it was read (s into the tick)
   Pose start_pose;               // body origin at the start of the tick
