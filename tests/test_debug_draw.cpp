@@ -35,7 +35,7 @@ class Recorder : public DebugDraw {
   void box(const Aabb& b, DebugShape kind) override {
     shapes.push_back({Primitive::box, kind, {b.min, b.max}});
   }
-  std::span<const Vec2> tire_positions(const Tire& t) override {
+  std::span<const Vec2> tire_positions(const TireView& t) override {
     ++position_calls;
     return DebugDraw::tire_positions(t);
   }
@@ -189,9 +189,9 @@ TEST_CASE("a drawer that says where tires and props are drawn gets everything th
   // As the game does, drawing between ticks: here everything one metre to the right.
   class Shifted : public Recorder {
    public:
-    std::span<const Vec2> tire_positions(const Tire& t) override {
+    std::span<const Vec2> tire_positions(const TireView& t) override {
       moved.clear();
-      for (const Vec2& p : t.particles.x) moved.push_back(p + Vec2{1.0, 0.0});
+      for (const Vec2& p : t.positions) moved.push_back(p + Vec2{1.0, 0.0});
       return moved;
     }
     Pose prop_pose(std::uint32_t, const Pose& now) override {

@@ -311,6 +311,12 @@ ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Re
   return out;
 }
 
+std::optional<std::string> level_changed(const ReplayLevel& level, const Replay& replay) {
+  if (level.sha256 == replay.level_sha256) return std::nullopt;
+  return level.path.string() + " has changed since this replay was recorded (SHA-256 " + level.sha256 +
+         ", recorded on " + replay.level_sha256 + ")";
+}
+
 std::string replay_to_json(const Replay& replay) {
   using ojson = nlohmann::ordered_json;
   const auto vec = [](Vec2 v) { return ojson::array({v.x, v.y}); };

@@ -10,11 +10,6 @@
 
 namespace tire {
 
-Pose Pose::make(Vec2 position, double angle) {
-  const CosSin cs = cos_sin(angle);
-  return {position, angle, cs.cos, cs.sin};
-}
-
 PropGeometry PropGeometry::from_spec(const PropSpec& spec) {
   PropGeometry g;
   g.shape = spec.shape;

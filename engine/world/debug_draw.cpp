@@ -22,9 +22,9 @@ Vec2 mean(std::span<const Vec2> points) {
   return sum / static_cast<double>(points.size());
 }
 
-void draw_tire(DebugDraw& draw, const Tire& t, const RigidWorld& rigid) {
+void draw_tire(DebugDraw& draw, const Tire& t, const TireView& view, const RigidWorld& rigid) {
   const unsigned flags = draw.flags();
-  const std::span<const Vec2> x = draw.tire_positions(t);
+  const std::span<const Vec2> x = draw.tire_positions(view);
   if (x.size() != t.particle_count()) return;  // nothing sensible to draw against
   const std::uint32_t n = t.segments();
   const Vec2 hub = mean(x);  // every particle weighs the same: the centroid (tire.h)
@@ -68,12 +68,12 @@ void draw_tire(DebugDraw& draw, const Tire& t, const RigidWorld& rigid) {
 
 }  // namespace
 
-std::span<const Vec2> DebugDraw::tire_positions(const Tire& t) { return t.particles.x; }
+std::span<const Vec2> DebugDraw::tire_positions(const TireView& t) { return t.positions; }
 
 void World::debug_draw(DebugDraw& draw) const {
   const unsigned flags = draw.flags();
   if (flags & kTireFlags)
-    for (const Tire& t : tires_) draw_tire(draw, t, rigid_);
+    for (const Tire& t : tires_) draw_tire(draw, t, *tire_view(t.id), rigid_);
   if (flags & DebugDraw::bounds) {
     const auto& props = rigid_.props();
     for (std::uint32_t i = 0; i < props.size(); ++i)

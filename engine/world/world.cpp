@@ -310,6 +310,41 @@ const Tire* World::player() const {
   return nullptr;
 }
 
+std::optional<TireView> World::tire_view(TireId id) const {
+  for (const Tire& t : tires_) {
+    if (t.id != id) continue;
+    const RigidMotion m = t.rigid_motion();
+    TireView v;
+    v.id = t.id;
+    v.player = player_ && *player_ == t.id;
+    v.asleep = t.asleep;
+    v.grounded = t.grounded();
+    v.centroid = m.centroid;
+    v.velocity = m.velocity;
+    v.spin = m.omega;
+    v.area_ratio = t.area_ratio();
+    v.pressure = t.spec.pressure;
+    v.segments = t.n;
+    v.positions = t.particles.x;
+    v.contacts = t.tick_contacts;
+    return v;
+  }
+  return std::nullopt;
+}
+
+std::optional<PropView> World::prop_view(PropId id) const {
+  const auto& props = rigid_.props();
+  if (id >= props.size()) return std::nullopt;
+  const Prop& p = props[id];
+  PropView v;
+  v.id = id;
+  v.type = p.spec.type;
+  v.shape = p.spec.shape;
+  v.alive = p.alive;
+  if (p.alive) v.state = rigid_.prop_state(id);
+  return v;
+}
+
 // One tick, as Macklin et al. 2019, "Small Steps in Physics Simulation", Algorithm 1 writes it:
 // collision detection once per tick, then n substeps of h = Δt/n, each of which predicts the
 // positions, solves them and updates the velocities from them. Each tire's share of a phase is in

@@ -1,9 +1,7 @@
 // The smallest program that uses the engine: load a level, roll the player right for two
 // seconds, print where it got to and the state hash.
 //   minimal LEVEL.json [TICKS]
-#include <tire/io/level.h>               // load_level_file, make_session
-#include <tire/math/state_hash.h>        // to_hex
-#include <tire/session/level_session.h>  // LevelSession: the World and the level's script
+#include <tire/engine.h>  // the whole public API
 
 #include <charconv>
 #include <cstdio>
@@ -26,28 +24,23 @@ int main(int argc, char** argv) {
   }
 
   // Read and validate the level: on failure, one message per problem.
-  const tire::LevelLoad load = tire::load_level_file(argv[1]);
-  if (!load.level) {
+  tire::SimulationLoad load = tire::Simulation::load(argv[1]);
+  if (!load.simulation) {
     for (const std::string& error : load.errors) std::cerr << error << "\n";
     return 2;
   }
+  tire::Simulation& sim = *load.simulation;
 
-  // The level ready to play: a World with its solver settings, gravity, obstacles, props and
-  // tires, and the level's script (goal, triggers) around it.
-  const std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
-  const tire::World& world = session->world();
+  // Fixed ticks of the level's dt, the player steering right throughout.
+  for (long i = 0; i < ticks; ++i) sim.step({.steer = 1.0});
 
-  // Fixed ticks of load.level->solver.dt, the player steering right throughout.
-  for (long i = 0; i < ticks; ++i) session->step({.steer = 1.0, .jump = false});
-
-  const tire::Tire* player = world.player();
+  const std::optional<tire::TireView> player = sim.player() ? sim.tire(*sim.player()) : std::nullopt;
   if (!player) {
     std::cerr << "minimal: the level has no player tire\n";
     return 1;
   }
-  const tire::Vec2 c = player->centroid();
-  std::printf("tick %llu  %s  player centroid (%.6f, %.6f) m  hash %s\n",
-              static_cast<unsigned long long>(world.tick()), tire::to_string(session->status()), c.x, c.y,
-              tire::to_hex(session->state_hash()).c_str());
+  std::printf("tick %llu  %s  player centroid (%.6f, %.6f) m  hash %016llx\n",
+              static_cast<unsigned long long>(sim.tick()), tire::to_string(sim.status()), player->centroid.x,
+              player->centroid.y, static_cast<unsigned long long>(sim.state_hash()));
   return 0;
 }

@@ -26,10 +26,9 @@ ReplayCheck check_replay_file(const std::filesystem::path& file) {
   if (!level.level) return unreadable(level.errors);
   out["ticks"] = replay.ticks;
   // As `tirectl replay` without --allow-level-change: a replay of another version of its level fails.
-  if (level.sha256 != replay.level_sha256) {
+  if (const auto changed = tire::level_changed(level, replay)) {
     out["pass"] = false;
-    out["failures"] = {level.path.string() + " has changed since this replay was recorded (SHA-256 " +
-                       level.sha256 + ", recorded on " + replay.level_sha256 + ")"};
+    out["failures"] = {*changed};
     return ReplayCheck{1, out.dump()};
   }
   const auto started = std::chrono::steady_clock::now();

@@ -104,9 +104,13 @@ void GameSession::step(const tire::TickInput& input) {
 
 void GameSession::interpolated_positions(const tire::Tire& t, double alpha,
                                          std::vector<tire::Vec2>& out) const {
-  const std::span<const tire::Vec2> now = t.particles.x;
+  interpolated_positions(t.id, t.particles.x, alpha, out);
+}
+
+void GameSession::interpolated_positions(tire::TireId id, std::span<const tire::Vec2> now, double alpha,
+                                         std::vector<tire::Vec2>& out) const {
   out.resize(now.size());
-  const auto it = previous_x_.find(t.id);
+  const auto it = previous_x_.find(id);
   if (it == previous_x_.end() || it->second.size() != now.size()) {
     std::copy(now.begin(), now.end(), out.begin());
     return;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -51,6 +52,9 @@ class GameSession {
   // Particle positions blended between the previous tick and the current one: alpha 0 is the
   // previous tick, 1 the current. A tire with no previous tick (just spawned) is drawn as it is.
   void interpolated_positions(const tire::Tire& tire, double alpha, std::vector<tire::Vec2>& out) const;
+  // The same for tire `id`, whose particles are at `now`.
+  void interpolated_positions(tire::TireId id, std::span<const tire::Vec2> now, double alpha,
+                              std::vector<tire::Vec2>& out) const;
   tire::Vec2 interpolated_centroid(const tire::Tire& tire, double alpha) const;
   // A live prop's pose, blended the same way.
   tire::Pose interpolated_pose(std::uint32_t prop, double alpha) const;

@@ -98,9 +98,9 @@ void SdlDebugDraw::box(const tire::Aabb& b, DebugShape kind) {
   }
 }
 
-std::span<const tire::Vec2> SdlDebugDraw::tire_positions(const tire::Tire& t) {
+std::span<const tire::Vec2> SdlDebugDraw::tire_positions(const tire::TireView& t) {
   asleep_ = t.asleep;
-  session_.interpolated_positions(t, alpha_, positions_);
+  session_.interpolated_positions(t.id, t.positions, alpha_, positions_);
   return positions_;
 }
 

@@ -32,7 +32,7 @@ class SdlDebugDraw final : public tire::DebugDraw {
   void vector(tire::Vec2 at, tire::Vec2 v, tire::DebugShape kind) override;
   void box(const tire::Aabb& box, tire::DebugShape kind) override;
 
-  std::span<const tire::Vec2> tire_positions(const tire::Tire& t) override;
+  std::span<const tire::Vec2> tire_positions(const tire::TireView& t) override;
   tire::Pose prop_pose(std::uint32_t prop, const tire::Pose& now) override;
 
  private:

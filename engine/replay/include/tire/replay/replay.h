@@ -105,6 +105,9 @@ struct ReplayLevel {
   std::vector<std::string> errors;  // "REPLAY: /level: ..."
 };
 ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Replay& replay);
+// Why the replay cannot be checked against its level as it is now: the level file changed since
+// it was recorded (its SHA-256 differs). Nothing when it is the level the replay was made on.
+std::optional<std::string> level_changed(const ReplayLevel& level, const Replay& replay);
 
 // Plays inputs into a level session. `held` is the tick's player input: its steer and inflate
 // carry over between ticks, its jump is for this tick only (the caller clears it after the step).

@@ -37,6 +37,7 @@
 #include "tire/rigid/obstacle.h"
 #include "tire/rigid/prop_geometry.h"
 #include "tire/rigid/prop_spec.h"
+#include "tire/rigid/prop_state.h"
 
 class b2World;
 class b2Body;
@@ -99,18 +100,6 @@ struct Prop {
   // Velocity of the body's material point at world position p, time t.
   Vec2 point_velocity(Vec2 p, double t) const { return velocity + perp(p - center_at(t)) * omega; }
   bool is_dynamic() const { return inverse_mass > 0.0; }
-};
-
-// A live prop as Box2D holds it between ticks (its floats widened to double): what a test or tool
-// measures (energy, finiteness), without reaching into Box2D.
-struct PropState {
-  Pose pose;                      // body origin and angle
-  Vec2 center;                    // centre of mass, world
-  Vec2 velocity;                  // of the centre of mass (m/s)
-  double angular_velocity = 0.0;  // rad/s, counter-clockwise
-  double mass = 0.0;              // kg; 0 for a static or kinematic prop
-  double inertia = 0.0;           // about the centre of mass (kg m²); 0 for a static or kinematic prop
-  bool awake = false;             // Box2D has not put it to sleep
 };
 
 class RigidWorld {

@@ -22,19 +22,9 @@
 #include "tire/math/state_hash.h"
 #include "tire/script/script_host.h"
 #include "tire/script/script_spec.h"
+#include "tire/script/script_status.h"
 
 namespace tire {
-
-enum class ScriptStatus : std::uint8_t { running, won, lost };
-
-const char* to_string(ScriptStatus status);  // "running", "won", "lost"
-
-// What ended a level. The script ends it by its goal, a win or lose action or the time limit; the
-// level session (tire/session/level_session.h) by the player leaving the level's bounds.
-enum class EndReason : std::uint8_t { none, goal, win_action, lose_action, time_limit, out_of_bounds };
-
-// "none", "goal", "win_action", "lose_action", "time_limit", "out_of_bounds"
-const char* to_string(EndReason reason);
 
 // The tick at which a time is reached: the first tick count n with n · dt ≥ seconds, with a
 // relative tolerance of 1e-9 so that 5 s at dt = 1/60 is tick 300 despite rounding:

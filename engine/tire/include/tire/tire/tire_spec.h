@@ -1,9 +1,14 @@
 // Everything that defines a tire as built: the level's tire object, with SI units and defaults.
 #pragma once
 
+#include <cstdint>
+
 #include "tire/math/vec2.h"
 
 namespace tire {
+
+// A tire's id in its world: given by the world when the tire is added, never reused.
+using TireId = std::uint32_t;
 
 // Which particle pairs the spokes join: "radial" joins inner i to outer i only (the prototype's
 // layout; the rings can shear against each other at first order), "cross" adds the diagonals

@@ -9,12 +9,11 @@
 #include <span>
 
 #include "tire/math/aabb.h"
+#include "tire/math/pose.h"
 #include "tire/math/vec2.h"
-#include "tire/rigid/prop_geometry.h"
+#include "tire/world/views.h"
 
 namespace tire {
-
-struct Tire;
 
 // What a shape stands for: one kind may come as several primitives (a contact is a point and a
 // vector), so the drawer styles by (primitive, kind).
@@ -57,10 +56,10 @@ class DebugDraw {
   virtual void vector(Vec2 at, Vec2 v, DebugShape kind) = 0;
   virtual void box(const Aabb& box, DebugShape kind) = 0;
 
-  // Where to draw tire t's particles (2N, as t.particles.x is laid out): by default where they
+  // Where to draw tire t's particles (2N, as t.positions lays them out): by default where they
   // are; a game that draws between ticks returns them blended. The span is read before the next
   // call. A tire's hub, contacts and pairs are drawn at these positions too.
-  virtual std::span<const Vec2> tire_positions(const Tire& t);
+  virtual std::span<const Vec2> tire_positions(const TireView& t);
   // Where to draw live prop `prop`, whose pose is `now`: by default there.
   virtual Pose prop_pose(std::uint32_t /*prop*/, const Pose& now) { return now; }
 

@@ -23,18 +23,13 @@
 #include "tire/tire/tire.h"
 #include "tire/tire/tire_neighbours.h"
 #include "tire/world/sleep_islands.h"
+#include "tire/world/tick_input.h"
+#include "tire/world/views.h"
 
 namespace tire {
 
 class DebugDraw;
 struct SubstepContext;  // tire/tire/tire_solver.h
-
-// The player's input for one tick.
-struct TickInput {
-  double steer = 0.0;  // [-1, 1]
-  bool jump = false;
-  double inflate = 0.0;  // [-1, 1]: +1 inflates the player at its inflate_rate, −1 deflates it
-};
 
 // How World::step orders the phases of a substep over the tires. Both run the same per-tire
 // phases in the same order with the same inputs, so they give the same bits (tests/
@@ -131,6 +126,10 @@ class World {
   std::span<const TirePair> tire_pairs() const { return tire_pairs_; }  // and which they are
   Tire* find_tire(TireId id);
   const Tire* player() const;
+  // What a library's user reads (views.h): the tire or prop with this id, nullopt for none.
+  std::optional<TireView> tire_view(TireId id) const;
+  std::optional<PropView> prop_view(PropId id) const;
+  std::optional<TireId> player_id() const { return player_; }
   const RigidWorld& rigid() const { return rigid_; }
   RigidWorld& rigid() { return rigid_; }
   const SolverConfig& config() const { return config_; }

@@ -1,0 +1,126 @@
+#include "tire/engine.h"
+
+#include "tire/io/level.h"
+#include "tire/replay/replay.h"
+#include "tire/session/level_session.h"
+
+namespace tire {
+
+Simulation::Simulation(const SolverConfig& config, Vec2 gravity)
+    : session_(std::make_unique<LevelSession>(config, gravity)) {}
+
+Simulation::Simulation(std::unique_ptr<LevelSession> session) : session_(std::move(session)) {}
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+SimulationLoad Simulation::load(const std::filesystem::path& level_file) {
+  LevelLoad load = load_level_file(level_file);
+  SimulationLoad out;
+  if (!load.level) {
+    out.errors = std::move(load.errors);
+    return out;
+  }
+  out.simulation.reset(new Simulation(make_session(*load.level)));
+  return out;
+}
+
+TireId Simulation::add_tire(const TireSpec& spec) { return session_->world().add_tire(spec); }
+PropId Simulation::add_prop(const PropSpec& spec) { return session_->world().add_prop(spec); }
+void Simulation::add_obstacle(const Obstacle& obstacle) { session_->world().add_obstacle(obstacle); }
+bool Simulation::remove_tire(TireId id) { return session_->world().remove_tire(id); }
+
+void Simulation::step(const TickInput& input) { session_->step(input); }
+
+std::uint64_t Simulation::tick() const { return session_->world().tick(); }
+double Simulation::time() const { return session_->world().time(); }
+ScriptStatus Simulation::status() const { return session_->status(); }
+EndReason Simulation::end_reason() const { return session_->end_reason(); }
+std::uint64_t Simulation::state_hash() const { return session_->state_hash(); }
+const SolverConfig& Simulation::config() const { return session_->world().config(); }
+Vec2 Simulation::gravity() const { return session_->world().gravity(); }
+std::optional<TireId> Simulation::player() const { return session_->world().player_id(); }
+
+std::vector<TireId> Simulation::tires() const {
+  std::vector<TireId> ids;
+  for (const Tire& t : session_->world().tires()) ids.push_back(t.id);
+  return ids;
+}
+
+std::optional<TireView> Simulation::tire(TireId id) const { return session_->world().tire_view(id); }
+std::size_t Simulation::prop_count() const { return session_->world().rigid().props().size(); }
+std::optional<PropView> Simulation::prop(PropId id) const { return session_->world().prop_view(id); }
+std::size_t Simulation::asleep_count() const { return session_->world().asleep_count(); }
+std::uint64_t Simulation::solver_failures() const { return session_->world().failed_solves(); }
+
+std::vector<std::string> Simulation::take_warnings() {
+  std::vector<std::string> out;
+  out.swap(session_->world().warnings());
+  return out;
+}
+
+bool Simulation::apply_impulse(TireId id, Vec2 impulse) {
+  if (!session_->world().find_tire(id)) return false;
+  session_->world().apply_impulse_to_tire(id, impulse);
+  return true;
+}
+
+bool Simulation::set_parameter(std::string_view key, double value) {
+  return session_->world().set_parameter(key, value);
+}
+
+std::optional<double> Simulation::parameter(std::string_view key) const {
+  return session_->world().parameter(key);
+}
+
+bool Simulation::grab(TireId id, std::uint32_t particle, Vec2 target) {
+  const Tire* t = session_->world().find_tire(id);
+  if (!t || particle >= t->particle_count()) return false;
+  session_->world().grab_particle(id, particle, target);
+  return true;
+}
+
+bool Simulation::move_grab(TireId id, Vec2 target) {
+  const Tire* t = session_->world().find_tire(id);
+  if (!t || !t->grabbed) return false;
+  session_->world().move_grabbed_particle(id, target);
+  return true;
+}
+
+bool Simulation::release(TireId id) {
+  const Tire* t = session_->world().find_tire(id);
+  if (!t || !t->grabbed) return false;
+  session_->world().release_particle(id);
+  return true;
+}
+
+void Simulation::set_threads(unsigned threads) { session_->world().set_threads(threads); }
+
+void Simulation::debug_draw(DebugDraw& draw) const { session_->world().debug_draw(draw); }
+
+ReplayCheck check_replay(const std::filesystem::path& replay_file) {
+  ReplayCheck out;
+  ReplayLoad load = load_replay_file(replay_file);
+  if (!load.replay) {
+    out.errors = std::move(load.errors);
+    return out;
+  }
+  ReplayLevel level = load_replay_level(replay_file, *load.replay);
+  if (!level.level) {
+    out.errors = std::move(level.errors);
+    return out;
+  }
+  out.ticks = load.replay->ticks;
+  if (auto changed = level_changed(level, *load.replay)) {
+    out.errors.push_back(std::move(*changed));
+    return out;
+  }
+  ReplayOutcome run = run_replay(*load.replay, *level.level);
+  out.status = run.status;
+  out.errors = std::move(run.failures);
+  out.passed = out.errors.empty();
+  return out;
+}
+
+}  // namespace tire

@@ -1,0 +1,113 @@
+// The engine as a program that embeds it sees it: a Simulation made from a level file or built in
+// code, stepped at its fixed tick, read through ids and views, and driven by commands that wake
+// what they move. The solver, its contacts and Box2D stay inside the engine's libraries; these
+// headers are all that `cmake --install` puts out (docs/engine.md, "Using the engine").
+//
+// One error style: what can fail returns its result with `errors`, each a line naming the file,
+// the JSON path and what was expected, empty on success; a command the simulation may refuse
+// returns false and changes nothing.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tire/math/vec2.h"
+#include "tire/rigid/obstacle.h"
+#include "tire/rigid/prop_spec.h"
+#include "tire/script/script_status.h"
+#include "tire/tire/solver_config.h"
+#include "tire/tire/tire_spec.h"
+#include "tire/world/debug_draw.h"
+#include "tire/world/tick_input.h"
+#include "tire/world/views.h"
+
+namespace tire {
+
+class LevelSession;
+class Simulation;
+
+struct SimulationLoad {
+  std::unique_ptr<Simulation> simulation;  // null when `errors` is not empty
+  std::vector<std::string> errors;
+};
+
+struct ReplayCheck {
+  bool passed = false;
+  std::string status;  // how the run ended: "running", "won" or "lost"
+  std::uint64_t ticks = 0;
+  std::vector<std::string> errors;  // the files' problems, or every expectation that broke
+};
+
+class Simulation {
+ public:
+  // An empty world with no script: status() stays running.
+  Simulation(const SolverConfig& config, Vec2 gravity);
+  // A level file (levels/README.md), validated, with its script: goal, triggers, time limit, bounds.
+  static SimulationLoad load(const std::filesystem::path& level_file);
+  ~Simulation();
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+
+  // Building, between ticks. The first tire, or one whose spec says player, becomes the player.
+  TireId add_tire(const TireSpec& spec);
+  PropId add_prop(const PropSpec& spec);
+  void add_obstacle(const Obstacle& obstacle);
+  bool remove_tire(TireId id);
+
+  // One fixed tick of config().dt, `input` driving the player; then the level's script.
+  void step(const TickInput& input = {});
+
+  // Reading, between ticks.
+  std::uint64_t tick() const;
+  double time() const;  // s
+  ScriptStatus status() const;
+  EndReason end_reason() const;
+  // The exact state's digest: the same binary and inputs give the same hash (docs/determinism.md).
+  std::uint64_t state_hash() const;
+  const SolverConfig& config() const;
+  Vec2 gravity() const;
+  std::optional<TireId> player() const;
+  std::vector<TireId> tires() const;  // in the order they were added
+  std::optional<TireView> tire(TireId id) const;
+  std::size_t prop_count() const;  // ids 0 .. prop_count() − 1
+  std::optional<PropView> prop(PropId id) const;
+  std::size_t asleep_count() const;
+  // Solves that failed (not finite) since the start; each is also a warning, and the tire is reset.
+  std::uint64_t solver_failures() const;
+  // What the world reported while stepping (a tire reset after diverging, a budget reached),
+  // oldest first; take_warnings() hands them over and forgets them.
+  std::vector<std::string> take_warnings();
+
+  // Commands, between ticks; each wakes what it moves.
+  bool apply_impulse(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
+  // A row of the parameter table that may change while the world runs (levels/README.md):
+  // "tires.<key>" on every tire, "player.<key>" on the player, "solver.<key>". False for a key not
+  // in the table or a value its row does not accept.
+  bool set_parameter(std::string_view key, double value);
+  std::optional<double> parameter(std::string_view key) const;
+  // Pulls one particle of a tire towards `target` every substep until released (a mouse drag).
+  bool grab(TireId id, std::uint32_t particle, Vec2 target);
+  bool move_grab(TireId id, Vec2 target);
+  bool release(TireId id);
+  // Threads for scenes of many tires; the results are the same for any count.
+  void set_threads(unsigned threads);
+
+  // Walks the tires, props and obstacles and calls `draw` back with what its flags ask for.
+  void debug_draw(DebugDraw& draw) const;
+
+ private:
+  explicit Simulation(std::unique_ptr<LevelSession> session);
+  std::unique_ptr<LevelSession> session_;
+};
+
+// Runs a replay file (docs/formats.md) headless against the level it names and checks every
+// expectation, as `tirectl replay` does.
+ReplayCheck check_replay(const std::filesystem::path& replay_file);
+
+}  // namespace tire

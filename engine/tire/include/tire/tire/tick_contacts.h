@@ -1,0 +1,23 @@
+// What a tire's contacts did over one tick, summed over its substeps.
+#pragma once
+
+namespace tire {
+
+// What a tire's contacts did over its last tick, for whoever listens between ticks (the game's
+// sound): filled while the tire is solved, never read by the solver, so it changes no result. The
+// normal impulses are the contacts' XPBD multipliers turned into N·s and summed over the tick's
+// substeps: J = m·λ_n/h for a surface contact (λ_n kept as a distance, contact.h) and λ/h for the
+// contact between treads (soft_contact.h, whose λ is already m·distance). A tire resting on the
+// ground reports its weight times dt; a landing, its change of momentum. A sleeping tire is not
+// solved and keeps the figures of its last awake tick.
+struct TickContacts {
+  double ground = 0.0;  // obstacles and static props (N·s)
+  double prop = 0.0;    // dynamic and kinematic props (N·s)
+  double tire = 0.0;    // other tires (N·s)
+  // The fastest slide of a contact with a surface under kinetic friction (static friction did not
+  // hold it): the tangential speed, relative to the surface, of the tire's rigid motion (hub and
+  // spin) at that contact, before friction acts (m/s); 0 when every contact held.
+  double slip_speed = 0.0;
+};
+
+}  // namespace tire

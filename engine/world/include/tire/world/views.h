@@ -1,0 +1,40 @@
+// What a world shows of its tires and props between ticks: read-only views, copied out or pointing
+// into the world's own arrays (valid until the next step, add or remove).
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "tire/math/vec2.h"
+#include "tire/rigid/prop_spec.h"
+#include "tire/rigid/prop_state.h"
+#include "tire/tire/tick_contacts.h"
+#include "tire/tire/tire_spec.h"
+
+namespace tire {
+
+struct TireView {
+  TireId id = 0;
+  bool player = false;
+  bool asleep = false;
+  bool grounded = false;    // a tread particle touched ground in the last substep
+  Vec2 centroid;            // of all particles: the hub (m)
+  Vec2 velocity;            // of the centroid (m/s)
+  double spin = 0.0;        // angular velocity about the hub (rad/s, counter-clockwise)
+  double area_ratio = 0.0;  // the tread's area over its rest area
+  double pressure = 0.0;    // the pressure in force (TireSpec::pressure, moved by inflating)
+  std::uint32_t segments = 0;
+  // The particles' positions: the tread's `segments` counter-clockwise, then the rim's.
+  std::span<const Vec2> positions;
+  TickContacts contacts;  // what its contacts did over the last tick
+};
+
+struct PropView {
+  PropId id = 0;
+  PropType type = PropType::static_body;
+  PropShape shape = PropShape::box;
+  bool alive = false;  // a removed prop stays, dead
+  PropState state;
+};
+
+}  // namespace tire
