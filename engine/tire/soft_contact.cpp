@@ -117,12 +117,16 @@ void TirePairFinder::keep_nearest_pairs(std::span<const std::uint32_t> which, st
     return [self](const Near& l, const Near& r) { return l.other(self) < r.other(self); };
   };
   for (const std::uint32_t i : which)
-    if (slot_[i] != kNotCrowded) std::ranges::sort(nearest_of(slot_[i]), by_other(i));
+    if (slot_[i] != kNotCrowded) {
+      const std::span<Near> nearest = nearest_of(slot_[i]);
+      std::sort(nearest.begin(), nearest.end(), by_other(i));
+    }
   for (const std::uint32_t i : which) {
     if (slot_[i] == kNotCrowded) continue;
     for (const Near& near : nearest_of(slot_[i])) {
       const std::uint32_t j = near.other(i);
-      if (i < j || !std::ranges::binary_search(nearest_of(slot_[j]), near, by_other(j)))
+      const std::span<Near> theirs = nearest_of(slot_[j]);
+      if (i < j || !std::binary_search(theirs.begin(), theirs.end(), near, by_other(j)))
         candidates_.push_back(near);
     }
   }
