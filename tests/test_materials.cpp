@@ -215,6 +215,26 @@ TEST_CASE("materials: a level names a preset, and the tire's own keys override i
   CHECK(bad.errors[1] == "m.json: /tires/0/max_pressure: must be at least min_pressure (2.0), got 1.0");
 }
 
+TEST_CASE("materials: a preset's value of a key is the one it gives a tire", "[unit][material]") {
+  // The editor shows value_of as the default of a key a tire with a preset leaves out.
+  for (const Material& m : kMaterials) {
+    TireSpec s;
+    m.apply_to(s);
+    CHECK(m.value_of(ParamId::tire_compliance_outer) == s.compliance.outer);
+    CHECK(m.value_of(ParamId::tire_compliance_inner) == s.compliance.inner);
+    CHECK(m.value_of(ParamId::tire_compliance_spoke) == s.compliance.spoke);
+    CHECK(m.value_of(ParamId::tire_compliance_pressure) == s.compliance.pressure);
+    CHECK(m.value_of(ParamId::tire_material_damping) == s.material_damping);
+    CHECK(m.value_of(ParamId::tire_friction) == s.friction);
+    CHECK(m.value_of(ParamId::tire_kinetic_friction) == s.kinetic_friction);
+    CHECK(m.value_of(ParamId::tire_rolling_resistance) == s.rolling_resistance);
+    CHECK(m.value_of(ParamId::tire_restitution) == s.restitution);
+    CHECK(m.value_of(ParamId::tire_pressure) == s.pressure);
+    CHECK_FALSE(m.value_of(ParamId::tire_mass));  // a key no preset sets
+    CHECK_FALSE(m.value_of(ParamId::solver_substeps));
+  }
+}
+
 TEST_CASE("materials: inflating moves the pressure at its rate between its bounds",
           "[unit][material][inflate]") {
   TireSpec t = made_of("soft");

@@ -76,7 +76,7 @@ std::optional<double> Simulation::parameter(std::string_view key) const {
 
 bool Simulation::grab(TireId id, std::uint32_t particle, Vec2 target) {
   const Tire* t = session_->world().find_tire(id);
-  if (!t || particle >= t->particle_count()) return false;
+  if (!t || particle >= t->segments()) return false;
   session_->world().grab_particle(id, particle, target);
   return true;
 }

@@ -10,6 +10,7 @@
 #include "editor/editor_mode.h"
 #include "editor/level_edits.h"
 #include "tire/io/level_schema.h"
+#include "tire/tire/parameters.h"
 
 namespace game {
 
@@ -60,7 +61,8 @@ std::string label_of(const LevelKey& key) {
   return key.key + (short_unit ? " (" + key.unit + ")" : "");
 }
 
-std::string tooltip(const LevelKey& key) {
+// `in_force`: the default as it stands for this object (a material preset's, a followed key's).
+std::string tooltip(const LevelKey& key, const Json& in_force) {
   std::string text = key.description;
   switch (key.type) {
     case KeyType::number:
@@ -73,10 +75,12 @@ std::string tooltip(const LevelKey& key) {
   }
   if (key.required)
     text += "\nrequired";
-  else if (!key.default_value.is_null())
-    text += "\ndefault " + key.default_value.dump();
+  else if (!in_force.is_null())
+    text += "\ndefault " + in_force.dump();
   return text;
 }
+
+std::string tooltip(const LevelKey& key) { return tooltip(key, key.default_value); }
 
 // The property panel is a table: each key's label in the first column, wrapped to it rather than
 // cut, and its field filling the second.
@@ -135,14 +139,15 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
   const Json& object = doc_.json().at(where);
   const auto it = object.find(key.key);
   const bool present = it != object.end();
-  const Json current = present ? *it : computed_default(pointer, key);
+  const Json in_force = computed_default(pointer, key);
+  const Json current = present ? *it : in_force;
   const std::string label = "##" + id;
   std::optional<Json> entered;
   const auto pending = pending_.find(id);
   // The label, in the first column; a key the level does not give is greyed, field and all.
   if (!present) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", label_of(key).c_str());
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key, in_force).c_str());
   if (ImGui::TableGetColumnCount() > 1) ImGui::TableSetColumnIndex(1);  // none: the panel is collapsed
   const bool resettable = present && !key.required && key.type != KeyType::points;
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -209,7 +214,7 @@ bool Editor::edit_property(const std::string& id, const std::string& pointer, co
     case KeyType::array: break;
   }
   if (!present) ImGui::PopStyleColor();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(key, in_force).c_str());
   if (resettable) {
     ImGui::SameLine();
     if (ImGui::SmallButton(("x##reset" + id).c_str())) {
@@ -331,15 +336,27 @@ Json Editor::computed_default(const std::string& pointer, const LevelKey& key) c
     const tire::Vec2 v = key.key == "min" ? box.min : box.max;
     return Json::array({v.x, v.y});
   }
-  // A default that follows another key (a tire's kinetic_friction: its friction) shows that key's.
-  if (key.parameter)
-    if (const char* follows = tire::parameter(*key.parameter).default_follows) {
-      const std::string_view field =
-          std::string_view(follows).substr(std::string_view(follows).rfind('.') + 1);
-      const Json& object = doc_.json().at(Json::json_pointer(pointer));
-      if (const auto it = object.find(std::string(field)); it != object.end()) return *it;
-      if (const tire::Parameter* p = tire::find_parameter(follows)) return p->default_value;
-    }
+  if (!key.parameter) return key.default_value;
+  // A default that follows another key (a tire's kinetic_friction: its friction) shows that key's,
+  // when the object gives it.
+  const char* follows = tire::parameter(*key.parameter).default_follows;
+  if (follows && doc_.json().contains(Json::json_pointer(pointer))) {
+    const std::string field(std::string_view(follows).substr(std::string_view(follows).rfind('.') + 1));
+    const Json& object = doc_.json().at(Json::json_pointer(pointer));
+    if (const auto it = object.find(field); it != object.end()) return *it;
+  }
+  // A tire that names a material preset: the preset's value, where it sets the key (as the level
+  // reader applies it: tire/tire/parameters.h).
+  if (pointer.starts_with("/tires/")) {
+    const Json::json_pointer tire_pointer(
+        pointer.substr(0, pointer.find('/', std::string_view("/tires/").size())));
+    if (doc_.json().contains(tire_pointer))
+      if (const tire::Material* m =
+              tire::find_material(editor::string_at(doc_.json().at(tire_pointer), "material", "")))
+        if (const std::optional<double> v = m->value_of(*key.parameter)) return *v;
+  }
+  if (follows)
+    if (const tire::Parameter* p = tire::find_parameter(follows)) return p->default_value;
   return key.default_value;
 }
 

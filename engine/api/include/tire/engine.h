@@ -91,7 +91,8 @@ class Simulation {
   // in the table or a value its row does not accept.
   bool set_parameter(std::string_view key, double value);
   std::optional<double> parameter(std::string_view key) const;
-  // Pulls one particle of a tire towards `target` every substep until released (a mouse drag).
+  // Pulls one particle of a tire's tread (0 .. segments − 1) towards `target` every substep until
+  // released (a mouse drag).
   bool grab(TireId id, std::uint32_t particle, Vec2 target);
   bool move_grab(TireId id, Vec2 target);
   bool release(TireId id);

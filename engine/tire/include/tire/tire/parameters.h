@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -255,6 +256,23 @@ struct Material {
   double restitution;
   double pressure;  // the air's target area ratio at rest: above 1 it carries load (tire_spec.h)
 
+  // The preset's value of a tire parameter it sets; nothing for one it leaves to TireSpec's
+  // default (the editor shows a preset's values as an unset key's default).
+  constexpr std::optional<double> value_of(ParamId id) const {
+    switch (id) {
+      case ParamId::tire_compliance_outer: return compliance.outer;
+      case ParamId::tire_compliance_inner: return compliance.inner;
+      case ParamId::tire_compliance_spoke: return compliance.spoke;
+      case ParamId::tire_compliance_pressure: return compliance.pressure;
+      case ParamId::tire_material_damping: return material_damping;
+      case ParamId::tire_friction: return friction;
+      case ParamId::tire_kinetic_friction: return kinetic_friction;
+      case ParamId::tire_rolling_resistance: return rolling_resistance;
+      case ParamId::tire_restitution: return restitution;
+      case ParamId::tire_pressure: return pressure;
+      default: return std::nullopt;
+    }
+  }
   constexpr void apply_to(TireSpec& t) const {
     t.compliance = compliance;
     t.material_damping = material_damping;
