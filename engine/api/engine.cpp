@@ -61,9 +61,7 @@ std::vector<std::string> Simulation::take_warnings() {
 }
 
 bool Simulation::apply_impulse(TireId id, Vec2 impulse) {
-  if (!session_->world().find_tire(id)) return false;
-  session_->world().apply_impulse_to_tire(id, impulse);
-  return true;
+  return session_->world().apply_impulse_to_tire(id, impulse);
 }
 
 bool Simulation::set_parameter(std::string_view key, double value) {
@@ -75,25 +73,12 @@ std::optional<double> Simulation::parameter(std::string_view key) const {
 }
 
 bool Simulation::grab(TireId id, std::uint32_t particle, Vec2 target) {
-  const Tire* t = session_->world().find_tire(id);
-  if (!t || particle >= t->segments()) return false;
-  session_->world().grab_particle(id, particle, target);
-  return true;
+  return session_->world().grab_particle(id, particle, target);
 }
-
 bool Simulation::move_grab(TireId id, Vec2 target) {
-  const Tire* t = session_->world().find_tire(id);
-  if (!t || !t->grabbed) return false;
-  session_->world().move_grabbed_particle(id, target);
-  return true;
+  return session_->world().move_grabbed_particle(id, target);
 }
-
-bool Simulation::release(TireId id) {
-  const Tire* t = session_->world().find_tire(id);
-  if (!t || !t->grabbed) return false;
-  session_->world().release_particle(id);
-  return true;
-}
+bool Simulation::release(TireId id) { return session_->world().release_particle(id); }
 
 void Simulation::set_threads(unsigned threads) { session_->world().set_threads(threads); }
 

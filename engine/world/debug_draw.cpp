@@ -73,7 +73,7 @@ std::span<const Vec2> DebugDraw::tire_positions(const TireView& t) { return t.po
 void World::debug_draw(DebugDraw& draw) const {
   const unsigned flags = draw.flags();
   if (flags & kTireFlags)
-    for (const Tire& t : tires_) draw_tire(draw, t, *tire_view(t.id), rigid_);
+    for (const Tire& t : tires_) draw_tire(draw, t, view_of(t), rigid_);
   if (flags & DebugDraw::bounds) {
     const auto& props = rigid_.props();
     for (std::uint32_t i = 0; i < props.size(); ++i)

@@ -32,12 +32,13 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-void World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
+bool World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   Tire* t = find_tire(id);
-  if (!t) return;
+  if (!t) return false;
   wake_island_of(*t);
   const Vec2 dv = impulse / t->total_mass();
   for (Vec2& v : t->particles.v) v += dv;
+  return true;
 }
 
 namespace {
@@ -199,21 +200,28 @@ void World::reset_tire(TireId id, std::optional<Vec2> position) {
   t->reset();
 }
 
-void World::grab_particle(TireId id, std::uint32_t particle, Vec2 target) {
+bool World::grab_particle(TireId id, std::uint32_t particle, Vec2 target) {
   Tire* t = find_tire(id);
-  if (!t || particle >= t->n) return;
+  if (!t || particle >= t->n) return false;
   wake_island_of(*t);
   t->grabbed = true;
   t->grab_particle = particle;
   t->grab_target = target;
+  return true;
 }
 
-void World::move_grabbed_particle(TireId id, Vec2 target) {
-  if (Tire* t = find_tire(id)) t->grab_target = target;
+bool World::move_grabbed_particle(TireId id, Vec2 target) {
+  Tire* t = find_tire(id);
+  if (!t || !t->grabbed) return false;
+  t->grab_target = target;
+  return true;
 }
 
-void World::release_particle(TireId id) {
-  if (Tire* t = find_tire(id)) t->grabbed = false;
+bool World::release_particle(TireId id) {
+  Tire* t = find_tire(id);
+  if (!t || !t->grabbed) return false;
+  t->grabbed = false;
+  return true;
 }
 
 TireId World::add_tire(const TireSpec& spec) {
@@ -311,25 +319,27 @@ const Tire* World::player() const {
 }
 
 std::optional<TireView> World::tire_view(TireId id) const {
-  for (const Tire& t : tires_) {
-    if (t.id != id) continue;
-    const RigidMotion m = t.rigid_motion();
-    TireView v;
-    v.id = t.id;
-    v.player = player_ && *player_ == t.id;
-    v.asleep = t.asleep;
-    v.grounded = t.grounded();
-    v.centroid = m.centroid;
-    v.velocity = m.velocity;
-    v.spin = m.omega;
-    v.area_ratio = t.area_ratio();
-    v.pressure = t.spec.pressure;
-    v.segments = t.n;
-    v.positions = t.particles.x;
-    v.contacts = t.tick_contacts;
-    return v;
-  }
+  for (const Tire& t : tires_)
+    if (t.id == id) return view_of(t);
   return std::nullopt;
+}
+
+TireView World::view_of(const Tire& t) const {
+  const RigidMotion m = t.rigid_motion();
+  TireView v;
+  v.id = t.id;
+  v.player = player_ && *player_ == t.id;
+  v.asleep = t.asleep;
+  v.grounded = t.grounded();
+  v.centroid = m.centroid;
+  v.velocity = m.velocity;
+  v.spin = m.omega;
+  v.area_ratio = t.area_ratio();
+  v.pressure = t.spec.pressure;
+  v.segments = t.n;
+  v.positions = t.particles.x;
+  v.contacts = t.tick_contacts;
+  return v;
 }
 
 std::optional<PropView> World::prop_view(PropId id) const {

@@ -75,8 +75,9 @@ class World {
   };
   const std::vector<BudgetReached>& budgets_reached() const { return budgets_reached_; }
 
-  // What scripts (and the game's tuning panel) can do between ticks.
-  void apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
+  // What scripts (and the game's tuning panel) can do between ticks. The commands on a tire return
+  // false, changing nothing, when there is no such tire (or nothing grabbed to move or release).
+  bool apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
   // Sets a parameter of the table (tire/parameters.h) that may change while the world runs (a
   // script, replay or panel key): "tires.<key>" on every tire, and on every tire added after it
   // (spawned by a script, a replay or the player), "player.<key>" on the player's.
@@ -89,10 +90,11 @@ class World {
   // Puts a tire back at rest in its spawn shape, at `position` from now on if given.
   void reset_tire(TireId id, std::optional<Vec2> position = std::nullopt);
 
-  // A grabbed particle is pulled towards its target every substep (tire_solver), until released.
-  void grab_particle(TireId id, std::uint32_t particle, Vec2 target);
-  void move_grabbed_particle(TireId id, Vec2 target);
-  void release_particle(TireId id);
+  // A grabbed particle of the tread (0 .. segments − 1) is pulled towards its target every substep
+  // (tire_solver), until released.
+  bool grab_particle(TireId id, std::uint32_t particle, Vec2 target);
+  bool move_grabbed_particle(TireId id, Vec2 target);
+  bool release_particle(TireId id);
 
   // Advances one fixed tick of config().dt, `input` driving the player.
   void step(const TickInput& input);
@@ -172,6 +174,7 @@ class World {
   void solve_tire_pairs();
   void solve_by_tire_colour(const SubstepContext& ctx, bool last);
   void note_failed_solves(const Tire& t);
+  TireView view_of(const Tire& t) const;  // tire_view's, and debug_draw's for each tire
   void guard_divergence(Tire& t);
   // After a tick: refine_ from how far the awake tires' solves turned their constraints.
   void update_refinement();
