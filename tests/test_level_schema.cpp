@@ -420,6 +420,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"divergence_area", s.divergence_area},
         {"divergence_speed", s.divergence_speed},
         {"tire_neighbours", s.tire_neighbours},
+        {"island_tires", s.island_tires},
         {"method", method_name(s.method)},
         {"sleep", s.sleep},
         {"restitution_threshold", s.restitution_threshold}}},

@@ -311,6 +311,8 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
   SolverConfig config;
   config.method = GENERATE(SolverMethod::gauss_seidel, SolverMethod::global);
   CAPTURE(method_name(config.method));
+  config.island_tires = GENERATE(0, 64);  // the global method's pile solved as one island
+  CAPTURE(config.island_tires);
   World world(config, {0, -9.81});
   world.set_schedule(schedule);
   world.set_threads(2);

@@ -192,6 +192,9 @@ std::vector<LevelKey> solver_keys() {
           P::solver_tire_neighbours,
           "{range}: the most tires one tire is in contact with in a tick; one with more candidates keeps "
           "its nearest"),
+      from_row(P::solver_island_tires,
+               "{range}: islands of tires in contact of up to this many tires have their contacts solved as "
+               "one problem, so that piles do not creep; 0 solves every island tire by tire"),
       Key("method", T::choice,
           "\"gauss-seidel\": each constraint on its own; \"global\": each tire solved as one system")
           .choices(methods)

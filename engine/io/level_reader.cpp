@@ -52,6 +52,7 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   s.restitution_threshold =
       read_number(r, j, path, level_key(O::solver, "restitution_threshold"), s.restitution_threshold);
   s.tire_neighbours = read_integer(r, j, path, level_key(O::solver, "tire_neighbours"), s.tire_neighbours);
+  s.island_tires = read_integer(r, j, path, level_key(O::solver, "island_tires"), s.island_tires);
   return s;
 }
 

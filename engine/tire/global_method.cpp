@@ -3,6 +3,7 @@
 
 #include "tire/math/check.h"
 #include "tire/tire/global_solver.h"
+#include "tire/tire/island_contacts.h"
 #include "tire/tire/tire_method.h"
 #include "tire/tire/tire_neighbours.h"
 #include "tire/tire/tire_solver.h"
@@ -111,9 +112,13 @@ class GlobalMethod final : public TireMethod {
 
   // Every constraint and surface contact of the tire at once (global_solver.h).
   void solve_constraints(Tire& t, const SubstepContext& ctx, bool) const override {
-    TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");
-    const GlobalSolverPool::Lease solver = ctx.global->lend();
-    solver->solve(t, ctx);
+    if (ctx.island) {
+      ctx.island->solver_of(t).solve(t, ctx);
+    } else {
+      TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");
+      const GlobalSolverPool::Lease solver = ctx.global->lend();
+      solver->solve(t, ctx);
+    }
     t.predicted_push = {};
   }
   void solve_surface_contacts(Tire&, const SubstepContext&) const override {}  // in the solve

@@ -703,6 +703,60 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   write_back(t, ctx);
 }
 
+std::size_t GlobalSolver::dof(std::uint32_t particle, std::uint32_t segments) {
+  return dof_of(particle, segments);
+}
+
+bool GlobalSolver::prepare_response() {
+  if (!bodies_.empty()) return false;
+  const std::size_t size = k_.size();
+  std::size_t m = 0;
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    if (rows_[r].live) response_live_[m++] = r;
+  response_rows_ = m;
+  auto& s = response_s_;
+  for (std::size_t r = 0; r < m; ++r) {
+    for (std::size_t q = 0; q <= r; ++q)
+      s[r][q] = dot_n(y_.data() + response_live_[r] * stride_, y_.data() + response_live_[q] * stride_, size);
+    s[r][r] += rows_[response_live_[r]].alpha_tilde;
+  }
+  for (std::size_t r = 0; r < m; ++r) {
+    for (std::size_t q = 0; q <= r; ++q) {
+      double v = s[r][q];
+      for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
+      if (q < r)
+        s[r][q] = v / s[q][q];
+      else if (v > 0.0)
+        s[r][r] = std::sqrt(v);
+      else
+        return false;
+    }
+  }
+  return true;
+}
+
+void GlobalSolver::respond(double* r) const {
+  const std::size_t size = k_.size();
+  const std::size_t m = response_rows_;
+  k_.forward(r);  // u = L⁻¹ r
+  double z[kMaxRows] = {};
+  for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(y_.data() + response_live_[q] * stride_, r, size);
+  const auto& s = response_s_;
+  for (std::size_t q = 0; q < m; ++q) {
+    for (std::size_t k = 0; k < q; ++k) z[q] -= s[q][k] * z[k];
+    z[q] /= s[q][q];
+  }
+  for (std::size_t q = m; q-- > 0;) {
+    for (std::size_t k = q + 1; k < m; ++k) z[q] -= s[k][q] * z[k];
+    z[q] /= s[q][q];
+  }
+  for (std::size_t q = 0; q < m; ++q) {
+    const double* y = y_.data() + response_live_[q] * stride_;
+    for (std::size_t k = 0; k < size; ++k) r[k] += z[q] * y[k];
+  }
+  k_.backward(r);
+}
+
 double GlobalSolver::largest_turn(const Tire& t) const {
   const Particles& p = t.particles;
   // The least cos θ between a constraint's d = x_b − x_a before the step and e = d + Δd after it,

@@ -82,6 +82,7 @@ bool set_tire_parameter(Tire& t, ParamId id, double value) {
     case ParamId::solver_divergence_speed:
     case ParamId::solver_restitution_threshold:
     case ParamId::solver_tire_neighbours:
+    case ParamId::solver_island_tires:
     case ParamId::gravity_x:
     case ParamId::gravity_y:
     case ParamId::budget_tires:
@@ -176,6 +177,7 @@ std::optional<double> World::parameter(std::string_view key) const {
     case ParamId::solver_divergence_speed: return config_.divergence_speed;
     case ParamId::solver_restitution_threshold: return config_.restitution_threshold;
     case ParamId::solver_tire_neighbours: return config_.tire_neighbours;
+    case ParamId::solver_island_tires: return config_.island_tires;
     case ParamId::gravity_x: return gravity_.x;
     case ParamId::gravity_y: return gravity_.y;
     case ParamId::budget_tires: return budgets_.tires;
@@ -402,7 +404,11 @@ void World::step(const TickInput& input) {
   // A method that couples tires in its solves takes each tire's neighbours (tire_neighbours.h)
   // instead of solving the pairs after each iteration.
   const bool neighbours = method.couples_tires_in_solve() && !tire_pairs_.empty();
-  if (neighbours) neighbours_.set_pairs(tires_.size(), sleep_.awake(), tire_pairs_);
+  if (neighbours) {
+    neighbours_.set_pairs(tires_.size(), sleep_.awake(), tire_pairs_);
+    island_.set_islands(tires_.size(), sleep_.awake(), tire_pairs_,
+                        static_cast<std::size_t>(std::max(0, config_.island_tires)));
+  }
 
   SubstepContext ctx{h,        0.0,
                      gravity_, &tick_config_,
@@ -511,6 +517,7 @@ void World::predict(const SubstepContext& ctx) {
 void World::solve_positions(const SubstepContext& ctx, int iteration) {
   const bool last = iteration + 1 == config_.iterations;
   if (ctx.neighbours) {
+    if (island_.any()) solve_islands(ctx, last);
     solve_by_tire_colour(ctx, last);
     hand_over_impulses();
     return;
@@ -520,8 +527,26 @@ void World::solve_positions(const SubstepContext& ctx, int iteration) {
   solve_tire_pairs();
 }
 
+// The islands of tires in contact that are solved as one problem (island_contacts.h), a group at a
+// time: the group's contacts found where its tires are predicted, each tire solved alone (in
+// parallel) by the solver that keeps its system, then the contacts between them together.
+void World::solve_islands(const SubstepContext& ctx, bool last) {
+  SubstepContext alone = ctx;
+  alone.neighbours = nullptr;
+  alone.island = &island_;
+  for (std::size_t g = 0; g < island_.groups(); ++g) {
+    island_.find(tires_, g);
+    const std::span<const std::uint32_t> tires = island_.group_tires(g);
+    if (!island_.solves(tires.front())) continue;  // its contacts did not fit: block Gauss–Seidel
+    for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t k = b; k < e; ++k) solve_iteration(tires_[tires[k]], alone, last);
+    });
+    island_.solve(tires_, g, ctx);
+  }
+}
+
 // A method that couples tires in its solves, with tires in contact: block Gauss–Seidel between
-// tires (tire_neighbours.h).
+// tires (tire_neighbours.h), for the tires no island solve takes.
 // A colour at a time, its tires solved in parallel against their neighbours' treads as the colours
 // before left them; then the pushes they owe the neighbours, in tire order.
 //
@@ -531,13 +556,15 @@ void World::solve_by_tire_colour(const SubstepContext& ctx, bool last) {
   neighbours_.begin_capture(tires_, ctx.h);
   const std::span<const std::uint32_t> members = neighbours_.members();
   for_tires(members.size(), [&](std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) neighbours_.capture_tire(tires_[members[k]], members[k]);
+    for (std::size_t k = b; k < e; ++k)
+      if (!island_.solves(members[k])) neighbours_.capture_tire(tires_[members[k]], members[k]);
   });
   for (std::size_t c = 0; c < neighbours_.colours(); ++c) {
     const std::span<const std::uint32_t> tires = neighbours_.tires_of_colour(c);
     const bool more = c + 1 < neighbours_.colours();  // a later colour reads the treads
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) {
+        if (island_.solves(tires[k])) continue;
         solve_iteration(tires_[tires[k]], ctx, last);
         if (more) neighbours_.capture_tire(tires_[tires[k]], tires[k]);
       }
@@ -639,6 +666,7 @@ void World::reserve_global_solvers() {
   for (const Tire& t : tires_) segments = std::max(segments, t.n);
   global_.reserve(threads_, segments);
   neighbours_.reserve(tires_, 4 * tires_.size());
+  island_.reserve(static_cast<std::size_t>(std::max(0, config_.island_tires)), segments, tires_.size());
 }
 
 template <typename F>

@@ -68,6 +68,27 @@ class GlobalSolver {
   // as the Gauss–Seidel contacts would.
   void solve(Tire& tire, const SubstepContext& ctx);
 
+  // The tire's response to a load, after solve(): w = K̂⁻¹ r, the displacement a force r (kg·m,
+  // force × h², in block order: dof()) adds to the solve's Δx, K̂ being the solve's last system with
+  // its rows (areas, grab, frictions) held as constraints, the Schur complement
+  //     w = L⁻ᵀ (u + Y δμ),  u = L⁻¹ r,  (Yᵀ Y + α̃) δμ = −Yᵀ u.
+  // prepare_response() factors the rows' system once; false when the tire's system holds a free prop
+  // (its border is not symmetric) or the factor fails. respond() works in place on r.
+  bool prepare_response();
+  void respond(double* r) const;
+  // The surface contacts (obstacles, props) the last solve found and then let go: f(particle,
+  // normal, plane, surface displacement over the substep, static friction, prop or −1). An island's
+  // solve (island_contacts.h) may press them in again.
+  template <class F>
+  void for_each_released(F&& f) const {
+    for (const Contact& c : contacts_)
+      if (!c.normal_active && c.tire < 0 && c.body < 0)
+        f(c.particle, c.normal, c.plane, c.surface_displacement, c.mu_static, c.prop);
+  }
+  // Where particle i's (x, y) sit in a vector of the tire's unknowns (respond's r and w).
+  static std::size_t dof(std::uint32_t particle, std::uint32_t segments);
+  std::size_t unknowns() const { return k_.size(); }
+
  private:
   // A row of the capacitance system, g·Δx + α̃ μ = b with K Δx = f + g μ: an area constraint, the
   // grab, or a contact's friction or normal (g the direction d at its particle, b its target
@@ -204,6 +225,10 @@ class GlobalSolver {
   std::vector<Link> links_;
   double rigid_alpha_tilde_ = 0.0;  // rigid_compliance / h²
   Tire::GlobalWork work_;           // the current solve's, added to the tire's at its end
+  // prepare_response's: the live rows and the Cholesky factor of their Yᵀ Y + α̃ (lower triangle).
+  std::size_t response_live_[kMaxRows] = {};
+  std::size_t response_rows_ = 0;
+  double response_s_[kMaxRows][kMaxRows] = {};
 };
 
 // One GlobalSolver per thread that may solve tires at once: lend() hands out one no other thread

@@ -50,6 +50,7 @@ enum class ParamId : std::uint8_t {
   solver_divergence_speed,
   solver_restitution_threshold,
   solver_tire_neighbours,
+  solver_island_tires,
   gravity_x,
   gravity_y,
   tire_angle,
@@ -134,7 +135,7 @@ inline constexpr std::array kParameters = [] {
   using P = ParamId;
   // One row a line or two, as a table reads: clang-format would put every field on a line of its own.
   // clang-format off
-  return std::array<Parameter, 43>{{
+  return std::array<Parameter, 44>{{
       {P::solver_dt, "solver.dt", "s", {1e-4, 0.1}, false, kSolver.dt, kLevelOnly,
        "The fixed tick (s), in {range}; default 1/60."},
       {P::solver_substeps, "solver.substeps", "", {1, 256}, true, kSolver.substeps, kEverywhere,
@@ -162,6 +163,9 @@ inline constexpr std::array kParameters = [] {
       {P::solver_tire_neighbours, "solver.tire_neighbours", "tires", {1, 64}, true, kSolver.tire_neighbours,
        kLevelOnly,
        "The most tires one tire is in contact with in a tick, in {range}: one with more candidates keeps its nearest."},
+      {P::solver_island_tires, "solver.island_tires", "tires", {0, 1024}, true, kSolver.island_tires, kLevelOnly,
+       "Islands of tires in contact of up to this many tires, in {range}, have their contacts solved as one "
+       "problem (piles do not creep); 0 solves every island tire by tire."},
       // The level's "gravity" [x, y], a script's set_gravity and a replay's gravity input take
       // each component in this range too.
       {P::gravity_x, "gravity.x", "m/s^2", kGravity, false, kDefaultGravity.x, by_panel,

@@ -120,6 +120,13 @@ struct SolverConfig {
   // and each tire pushes this many.
   int tire_neighbours = 32;
 
+  // The global method's islands (tires joined by contacts, island_contacts.h) of up to this many
+  // tires have the contacts between their tires solved as one problem, each tire through its exact
+  // response: a pile does not creep. Other islands are solved tire by tire against their
+  // neighbours (block Gauss–Seidel, tire_neighbours.h), which creeps. 0 (the default): never, as
+  // a few tires of an island so solved still ring in place and keep it awake (docs/at-rest.md).
+  int island_tires = 0;
+
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
   // method replaced it (docs/physics.md, "The default method"), and the method for piles of hundreds of
   // tires. Its speed limit, eight rest segments a tick, is the default's (2 substeps × 4).

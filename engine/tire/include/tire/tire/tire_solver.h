@@ -10,6 +10,8 @@
 
 namespace tire {
 
+class IslandContacts;
+
 struct SubstepContext {
   double h = 0.0;     // substep (s)
   double time = 0.0;  // of the substep's start, from the start of the tick (s)
@@ -20,6 +22,9 @@ struct SubstepContext {
   GlobalSolverPool* global = nullptr;  // the global method's solvers (SolverMethod::global only)
   // The global method's contacts between tires: the neighbours' treads (null: none, a lone tire).
   const TireNeighbours* neighbours = nullptr;
+  // The island's solve of the contacts between tires (island_contacts.h): each tire solved alone by
+  // its own solver, kept for it (null: solved by the pool's).
+  IslandContacts* island = nullptr;
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and

@@ -16,6 +16,7 @@
 #include "tire/math/worker_pool.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/global_solver.h"
+#include "tire/tire/island_contacts.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/run_budgets.h"
 #include "tire/tire/soft_contact.h"
@@ -147,6 +148,8 @@ class World {
   // (SolverConfig::refine_turn).
   int tick_substeps() const { return tick_config_.substeps; }
 
+  // The island solve's counts (island_contacts.h), since the start.
+  const IslandContacts::Work& island_work() const { return island_.work(); }
   std::uint64_t tick() const { return tick_; }
   double time() const { return static_cast<double>(tick_) * config_.dt; }
 
@@ -219,6 +222,8 @@ class World {
   // The global method's scratch, one solver a thread, sized for the largest tire (add_tire).
   GlobalSolverPool global_;
   TireNeighbours neighbours_;  // the global method's contacts between tires
+  IslandContacts island_;      // the islands whose contacts between tires are solved as one problem
+  void solve_islands(const SubstepContext& ctx, bool last);
   SleepIslands sleep_;
   std::uint64_t seen_removals_ = 0;  // RigidWorld::removals() when wake_for_props last looked
   void reserve_global_solvers();

@@ -1,0 +1,172 @@
+// The contacts between the tires of an island solved as one problem (issue 33, "one contact problem
+// per island"; route B of the pile oracle, docs/at-rest.md). Block Gauss–Seidel (tire_neighbours.h)
+// solves each tire against its neighbours held where a guess puts them, and a pile so solved creeps
+// for ever: static friction between two tires anchors to where the other was captured, not to
+// where it ends the substep.
+//
+// Here each tire of an island is first solved alone, with its own constraints and its contacts with
+// the world (GlobalSolver), which leaves its system K̂ factored. The contacts between the island's
+// tires, a tread particle p of tire a inside the tread of tire b against the edge (e₀, e₁) it
+// crossed, at s along it, are then rows on both tires,
+//     J_a = d at p,   J_b = −d (1 − s) at e₀ and −d s at e₁,
+// a normal (d = n, the edge's outward normal) that takes back the gap, and a static friction
+// (d = t) that takes back the particle's slip along the edge since its anchor was laid (Müller et
+// al. 2020, Sec. 3.5, on the two tires' relative motion; the anchor, kept while the friction holds,
+// makes it hold across substeps, as Box2D v3's friction anchors do). The world's contacts a tire's
+// solve let go, which its neighbours may press it back into, are rows on that tire alone. The
+// multipliers solve
+//     (D + α̃) λ = c,   D = Σ_t J_t K̂_t⁻¹ J_tᵀ,
+// D from each tire's exact response at its contact points (GlobalSolver::respond), with one active
+// set: a normal holds while λ_n ≥ 0, a friction while |λ_t| ≤ μ λ_n; a friction that lets go
+// takes kinetic friction, what stops its slip up to μ λ_n, after the solve. The system is solved
+// by conjugate gradients preconditioned by D's diagonal, warm-started from the last substep's
+// multipliers, and each tire moves by Δx_t = K̂_t⁻¹ J_tᵀ λ: the solve alone plus this is the
+// island's one linear system.
+//
+// An island of more tires than SolverConfig::island_tires, or with more contacts than the room
+// reserved, keeps block Gauss–Seidel; a contact on a tire whose own system holds a free prop is
+// left out (its response is not symmetric).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "tire/math/vec2.h"
+#include "tire/tire/global_solver.h"
+#include "tire/tire/soft_contact.h"
+
+namespace tire {
+
+struct SubstepContext;
+
+class IslandContacts {
+ public:
+  // Room for islands of up to `largest` tires of up to `segments` segments each, in a world of
+  // `tires` tires (allocates; outside the step).
+  void reserve(std::size_t largest, std::uint32_t segments, std::size_t tires);
+
+  // Once a tick: the awake tires in contact (`members`, joined by `pairs`) sorted into islands; an
+  // island of at most `largest` tires is solved here, in groups that fit the solvers reserved.
+  void set_islands(std::size_t tire_count, std::span<const std::uint32_t> members,
+                   const std::vector<TirePair>& pairs, std::size_t largest);
+  std::size_t groups() const { return group_begin_.empty() ? 0 : group_begin_.size() - 1; }
+  // The tires of group g, in tire order within each island, islands in order of their first tire.
+  std::span<const std::uint32_t> group_tires(std::size_t g) const {
+    return {tires_.data() + group_begin_[g], tires_.data() + group_begin_[g + 1]};
+  }
+  // Whether tire i is solved here this iteration (false for a tire of an island that overflowed).
+  bool solves(std::uint32_t tire) const {
+    return tire < solves_.size() && solves_[tire] != 0 && overflow_[group_of_[tire]] == 0;
+  }
+  bool any() const { return !tires_.empty(); }
+
+  // Each iteration, for each group: find() before its tires are solved (the candidates, where the
+  // tires are predicted); each tire solved alone by solver_of(tire), with no neighbours; then solve().
+  void find(const std::vector<Tire>& tires, std::size_t group);
+  GlobalSolver& solver_of(const Tire& t) { return *solvers_[slot_[static_cast<std::size_t>(&t - first_)]]; }
+  void solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx);
+
+  // Counts since the start, for tests and `tirectl bench`.
+  struct Work {
+    std::uint64_t solves = 0;      // islands solved
+    std::uint64_t rows = 0;        // contact rows
+    std::uint64_t passes = 0;      // active-set passes
+    std::uint64_t iterations = 0;  // conjugate-gradient iterations
+    std::uint64_t overflows = 0;   // islands left to block Gauss–Seidel for want of room
+    std::uint64_t failures = 0;    // solves given up (not positive definite, not finite)
+  };
+  const Work& work() const { return work_; }
+
+ private:
+  struct Row {
+    std::uint32_t a = 0, particle = 0;  // the particle of tire a
+    std::uint32_t b = 0, e0 = 0, e1 = 0;
+    double s = 0.0;  // along b's edge (e₀, e₁)
+    Vec2 d;          // the normal (out of b) or the tangent
+    double target = 0.0;
+    double mu = 0.0;
+    std::int32_t normal = -1;  // a friction row's normal row
+    double lambda = 0.0;
+    bool active = true;
+    bool dropped = false;  // a twin left out (add_contacts)
+    // Against a surface of the world (an obstacle, a static or kinematic prop) that tire a's solve
+    // let go: a row on tire a alone, its plane n·x = plane moving by surface_motion.
+    bool surface = false;
+    double plane = 0.0;
+    Vec2 surface_motion;
+    std::int32_t prop = -1;
+    std::size_t wa = 0, wb = 0;  // the two tires' responses in w_
+  };
+  // J_{row, side}·w: how far w moves the row's point of that tire along d.
+  static double along(const Row& r, bool side_a, const double* w, std::uint32_t n);
+  bool add_contacts(const Tire& ta, std::uint32_t a, const Tire& tb, std::uint32_t b,
+                    std::size_t first_of_pair);
+  void index_rows_by_tire(std::size_t tires_in_group);
+  bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
+                        const SubstepContext& ctx);
+  bool assemble(const std::vector<Tire>& tires);
+  bool solve_active(double alpha_tilde);
+  void write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const;
+
+  static constexpr std::uint32_t kSurfaceKey = 0xffffff;  // a surface row's b in its key
+  static std::uint64_t key(const Row& r) { return key(r.a, r.particle, r.surface ? kSurfaceKey : r.b); }
+  static std::uint64_t key(std::uint32_t a, std::uint32_t particle, std::uint32_t b) {
+    return (std::uint64_t{a} << 40) | (std::uint64_t{particle} << 24) | b;
+  }
+  bool held(std::uint32_t a, std::uint32_t particle, std::uint32_t b) const {
+    return std::binary_search(held_.begin(), held_.end(), key(a, particle, b));
+  }
+
+  const Tire* first_ = nullptr;  // the world's tires, as find() saw them
+  std::size_t largest_ = 0;      // tires the solvers were reserved for
+  std::size_t max_rows_ = 0;
+  std::size_t max_entries_ = 0;
+  std::vector<std::unique_ptr<GlobalSolver>> solvers_;
+  // set_islands': per tire its island's root (union–find), the islands' tires grouped, the pairs
+  // of each group, and per tire its solver's slot and whether it is solved here.
+  std::vector<std::uint32_t> root_;
+  std::vector<std::uint32_t> size_;
+  std::vector<std::uint32_t> tires_;
+  std::vector<std::uint32_t> group_begin_;
+  std::vector<std::uint32_t> cursor_;  // per island's root: where its next tire goes in tires_
+  std::vector<TirePair> pairs_;
+  std::vector<std::uint32_t> pair_begin_;  // per group
+  std::vector<std::uint32_t> slot_;
+  std::vector<std::uint8_t> solves_;
+  std::vector<std::uint32_t> group_of_;
+  std::vector<std::uint8_t> overflow_;  // per group: this iteration's contacts did not fit
+  // The group being solved.
+  std::vector<Row> rows_;
+  std::vector<std::uint32_t> rows_of_tire_begin_;  // per slot: its rows in rows_of_tire_
+  std::vector<std::uint32_t> rows_of_tire_;
+  std::vector<double> w_;
+  std::vector<std::uint32_t> entry_begin_;  // D by rows: its columns and values
+  std::vector<std::uint32_t> entry_column_;
+  std::vector<double> entry_value_;
+  std::vector<double> x_, r_, z_, p_, q_, diagonal_;
+  std::vector<std::uint8_t> live_;                             // per row: in this pass's system
+  std::vector<std::uint8_t> ready_;                            // per slot: its response is to be had
+  std::vector<std::pair<std::uint64_t, double>> last_lambda_;  // by key × 2 + friction, sorted
+  std::vector<std::uint64_t> held_;                            // normals that held, sorted
+  // Where a stuck contact's particle was laid on the other tread: at s along b's edge (e0, e0 + 1).
+  struct Anchor {
+    std::uint64_t key = 0;
+    std::uint32_t e0 = 0;
+    double s = 0.0;
+  };
+  std::vector<Anchor> anchors_, next_anchors_;  // by key, the last iteration's sorted
+  const Anchor* anchor_of(std::uint64_t k) const {
+    const auto it = std::lower_bound(anchors_.begin(), anchors_.end(), k,
+                                     [](const Anchor& a, std::uint64_t v) { return a.key < v; });
+    return it != anchors_.end() && it->key == k ? &*it : nullptr;
+  }
+  std::vector<std::pair<std::uint64_t, double>> next_lambda_;
+  std::vector<std::uint64_t> next_held_;
+  Work work_;
+};
+
+}  // namespace tire

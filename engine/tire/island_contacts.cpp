@@ -1,0 +1,665 @@
+#include "tire/tire/island_contacts.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tire/math/reserve_doubling.h"
+#include "tire/tire/tire_solver.h"
+#include "tire/xpbd/contact.h"
+
+namespace tire {
+
+namespace {
+
+// How far outside a neighbour's tread a particle may be where the tires are predicted and still be
+// a candidate: solved alone, a tire springs back from what its neighbours pressed in.
+constexpr double kCandidateMargin = 0.01;  // m
+// Room per tire of an island: contact rows (a soft tire in a pile has about 9, a stiff one 4) and
+// entries of D per row (the rows of its two tires).
+constexpr std::size_t kRowsPerTire = 32;
+constexpr std::size_t kEntriesPerRow = 96;
+constexpr int kPasses = 8;  // active-set passes
+// Two rows of one touch seen from either tire are twins (nearly dependent) when their normals are
+// this close to opposite (within 26°); edges that cross at a larger angle make two contacts.
+constexpr double kTwinCos = 0.9;
+// Conjugate gradients: until the residual is this small against the right-hand side, or
+// kMaxIterations.
+constexpr double kTolerance = 1e-10;
+constexpr std::size_t kMaxIterations = 1000;
+
+}  // namespace
+
+void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::size_t tires) {
+  largest_ = std::min(largest, tires);
+  while (solvers_.size() < largest_) solvers_.push_back(std::make_unique<GlobalSolver>());
+  for (auto& s : solvers_) s->reserve(segments);
+  max_rows_ = largest_ * kRowsPerTire;
+  max_entries_ = max_rows_ * kEntriesPerRow;
+  reserve_doubling(root_, tires);
+  reserve_doubling(size_, tires);
+  reserve_doubling(tires_, tires);
+  reserve_doubling(group_begin_, tires + 1);
+  reserve_doubling(cursor_, tires);
+  reserve_doubling(pairs_, 4 * tires);
+  reserve_doubling(pair_begin_, tires + 1);
+  reserve_doubling(slot_, tires);
+  reserve_doubling(solves_, tires);
+  reserve_doubling(group_of_, tires);
+  reserve_doubling(overflow_, tires);
+  reserve_doubling(rows_, max_rows_);
+  reserve_doubling(rows_of_tire_begin_, largest_ + 1);
+  reserve_doubling(rows_of_tire_, 2 * max_rows_);
+  reserve_doubling(w_, 2 * max_rows_ * CyclicBlockCholesky::kBlock * segments);
+  reserve_doubling(entry_begin_, max_rows_ + 1);
+  reserve_doubling(entry_column_, max_entries_);
+  reserve_doubling(entry_value_, max_entries_);
+  for (auto* v : {&x_, &r_, &z_, &p_, &q_, &diagonal_}) reserve_doubling(*v, max_rows_);
+  reserve_doubling(live_, max_rows_);
+  reserve_doubling(ready_, largest_);
+  for (auto* v : {&last_lambda_, &next_lambda_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
+  for (auto* v : {&anchors_, &next_anchors_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
+  for (auto* v : {&held_, &next_held_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
+}
+
+void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::uint32_t> members,
+                                 const std::vector<TirePair>& pairs, std::size_t largest) {
+  tires_.clear();
+  pairs_.clear();
+  group_begin_.clear();
+  pair_begin_.clear();
+  solves_.assign(tire_count, 0);
+  if (pairs.empty() || largest < 2 || largest_ < 2) return;
+  largest = std::min(largest, largest_);
+  // Union–find over the pairs, the smaller index the root (the same islands in any pair order).
+  root_.resize(tire_count);
+  size_.assign(tire_count, 0);
+  for (const std::uint32_t i : members) root_[i] = i;
+  const auto find_root = [&](std::uint32_t i) {
+    while (root_[i] != i) {
+      root_[i] = root_[root_[i]];
+      i = root_[i];
+    }
+    return i;
+  };
+  for (const TirePair& p : pairs) {
+    const std::uint32_t a = find_root(p.a), b = find_root(p.b);
+    if (a != b) root_[std::max(a, b)] = std::min(a, b);
+  }
+  for (const std::uint32_t i : members) ++size_[find_root(i)];
+  // The islands of 2 … largest tires, in order of their first tire (a root is its island's first
+  // tire, and members are in tire order), batched into groups of at most `largest` tires; each
+  // island's tires in tire order.
+  constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  cursor_.assign(tire_count, kNone);
+  std::uint32_t in_group = 0;
+  for (const std::uint32_t i : members) {
+    if (find_root(i) != i || size_[i] < 2 || size_[i] > largest) continue;
+    if (group_begin_.empty() || in_group + size_[i] > largest) {
+      group_begin_.push_back(static_cast<std::uint32_t>(tires_.size()));
+      in_group = 0;
+    }
+    cursor_[i] = static_cast<std::uint32_t>(tires_.size());
+    tires_.resize(tires_.size() + size_[i]);
+    in_group += size_[i];
+  }
+  if (group_begin_.empty()) return;
+  group_begin_.push_back(static_cast<std::uint32_t>(tires_.size()));
+  for (const std::uint32_t i : members) {
+    const std::uint32_t r = find_root(i);
+    if (cursor_[r] == kNone) continue;
+    tires_[cursor_[r]++] = i;
+    solves_[i] = 1;
+  }
+  // Each group's pairs, in pair order.
+  group_of_.resize(tire_count);
+  for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g)
+    for (std::uint32_t k = group_begin_[g]; k < group_begin_[g + 1]; ++k) {
+      group_of_[tires_[k]] = static_cast<std::uint32_t>(g);
+      slot_[tires_[k]] = k - group_begin_[g];
+    }
+  pair_begin_.assign(groups() + 1, 0);
+  for (const TirePair& p : pairs)
+    if (solves_[p.a]) ++pair_begin_[group_of_[p.a] + 1];
+  for (std::size_t g = 0; g < groups(); ++g) pair_begin_[g + 1] += pair_begin_[g];
+  pairs_.resize(pair_begin_.back());
+  for (const TirePair& p : pairs)
+    if (solves_[p.a]) pairs_[pair_begin_[group_of_[p.a]]++] = p;
+  for (std::size_t g = groups(); g > 0; --g) pair_begin_[g] = pair_begin_[g - 1];
+  pair_begin_[0] = 0;
+  overflow_.assign(groups(), 0);
+}
+
+double IslandContacts::along(const Row& r, bool side_a, const double* w, std::uint32_t n) {
+  const auto at = [&](std::uint32_t i) {
+    const std::size_t k = GlobalSolver::dof(i, n);
+    return Vec2{w[k], w[k + 1]};
+  };
+  if (side_a) return dot(r.d, at(r.particle));
+  return -dot(r.d, at(r.e0) * (1.0 - r.s) + at(r.e1) * r.s);
+}
+
+// A tread particle of ta inside (or within kCandidateMargin of) tb's tread, against the edge it
+// crossed, as GlobalSolver::find_tire_contacts finds it: a normal row, and a friction row after it.
+// False when the rows do not fit.
+bool IslandContacts::add_contacts(const Tire& ta, std::uint32_t a, const Tire& tb, std::uint32_t b,
+                                  std::size_t first_of_pair) {
+  const Vec2* xb = tb.particles.x.data();
+  Vec2 hub;
+  for (std::uint32_t k = 0; k < tb.n; ++k) hub += xb[k];
+  hub = hub / static_cast<double>(tb.n);
+  double reach2 = 0.0;
+  for (std::uint32_t k = 0; k < tb.n; ++k) reach2 = std::max(reach2, length_squared(xb[k] - hub));
+  const double reach = std::sqrt(reach2) + kCandidateMargin;
+  const double mu = mix_friction(ta.spec.friction, tb.spec.friction);
+  for (std::uint32_t i = 0; i < ta.n; ++i) {
+    const Vec2 x = ta.particles.x[i];
+    const Vec2 d = x - hub;
+    if (length_squared(d) >= reach * reach) continue;
+    const std::uint32_t k = tread_edge_towards(xb, tb.n, hub, d);
+    const std::uint32_t k1 = k + 1 == tb.n ? 0 : k + 1;
+    const Vec2 e = xb[k1] - xb[k];
+    const double e2 = length_squared(e);
+    if (!(e2 > 0.0)) continue;
+    const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));  // outward: treads run counter-clockwise
+    const double depth = -dot(normal, x - xb[k]);
+    if (!(depth > -kCandidateMargin)) continue;
+    // The same touch seen from the other tire (its particle, an end of this edge, inside ta against
+    // an edge that ends at this particle) gives a nearly dependent row: D nearly singular, λ runs
+    // away. One of the two is kept (pile_oracle's rule): the one that held last substep, else the
+    // deeper. (Twins that took turns turned the load's path every substep, and a pile crept.)
+    bool twin = false;
+    for (std::size_t q = first_of_pair; q < rows_.size(); ++q) {
+      Row& o = rows_[q];
+      if (o.normal >= 0 || o.dropped || o.a != b || o.b != a) continue;
+      if ((o.particle != k && o.particle != k1) || (o.e0 != i && o.e1 != i)) continue;
+      if (dot(o.d, normal) > -kTwinCos) continue;  // edges that cross: two contacts, both kept
+      const bool mine_held = held(a, i, b), its_held = held(b, o.particle, a);
+      if (mine_held != its_held ? its_held : o.target >= depth) {
+        twin = true;
+      } else {
+        o.dropped = true;
+        if (q + 1 < rows_.size() && rows_[q + 1].normal == static_cast<std::int32_t>(q))
+          rows_[q + 1].dropped = true;
+      }
+    }
+    if (twin) continue;
+    if (rows_.size() + 2 > max_rows_) return false;
+    Row r;
+    r.a = a;
+    r.particle = i;
+    r.b = b;
+    r.e0 = k;
+    r.e1 = k1;
+    r.s = std::clamp(dot(x - xb[k], e) / e2, 0.0, 1.0);
+    r.d = normal;
+    r.target = depth;
+    r.mu = mu;
+    rows_.push_back(r);
+    if (!(mu > 0.0)) continue;
+    r.normal = static_cast<std::int32_t>(rows_.size() - 1);
+    rows_.push_back(r);
+  }
+  return true;
+}
+
+void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
+  if (group == 0) {  // what held, and the multipliers, in the last iteration of every group
+    held_.swap(next_held_);
+    next_held_.clear();
+    std::sort(held_.begin(), held_.end());
+    last_lambda_.swap(next_lambda_);
+    next_lambda_.clear();
+    std::sort(last_lambda_.begin(), last_lambda_.end());
+    anchors_.swap(next_anchors_);
+    next_anchors_.clear();
+    std::sort(anchors_.begin(), anchors_.end(),
+              [](const Anchor& x, const Anchor& y) { return x.key < y.key; });
+  }
+  first_ = tires.data();
+  rows_.clear();
+  overflow_[group] = 0;
+  bool fits = true;
+  for (std::uint32_t k = pair_begin_[group]; k < pair_begin_[group + 1] && fits; ++k) {
+    const TirePair& p = pairs_[k];
+    const std::size_t first = rows_.size();
+    fits = add_contacts(tires[p.a], p.a, tires[p.b], p.b, first) &&
+           add_contacts(tires[p.b], p.b, tires[p.a], p.a, first);
+  }
+  // The twins left out; the friction rows' normals renumbered.
+  std::size_t kept = 0;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    if (rows_[r].dropped) continue;
+    Row row = rows_[r];
+    if (row.normal >= 0) row.normal = static_cast<std::int32_t>(kept - 1);
+    rows_[kept++] = row;
+  }
+  rows_.resize(kept);
+  // D's entries: a row's columns are the rows of its two tires.
+  std::size_t entries = 0;
+  if (fits) {
+    rows_of_tire_begin_.assign(group_tires(group).size() + 1, 0);
+    for (const Row& r : rows_) {
+      ++rows_of_tire_begin_[slot_[r.a] + 1];
+      ++rows_of_tire_begin_[slot_[r.b] + 1];
+    }
+    for (std::size_t t = 0; t + 1 < rows_of_tire_begin_.size(); ++t)
+      rows_of_tire_begin_[t + 1] += rows_of_tire_begin_[t];
+    for (const Row& r : rows_) {
+      const auto count = [&](std::uint32_t tire) {
+        return rows_of_tire_begin_[slot_[tire] + 1] - rows_of_tire_begin_[slot_[tire]];
+      };
+      entries += count(r.a) + count(r.b);
+    }
+  }
+  if (!fits || entries > max_entries_) {
+    overflow_[group] = 1;
+    rows_.clear();
+    ++work_.overflows;
+  }
+}
+
+// The surface contacts each tire's solve let go (its neighbours were not there to press it in):
+// rows on that tire alone, so that the island's solve may hold them again (one active set for
+// every contact). False when they do not all fit.
+bool IslandContacts::add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
+                                      const SubstepContext& ctx) {
+  bool fits = true;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    if (!ready_[k]) continue;
+    const std::uint32_t a = members[k];
+    const Tire& t = tires[a];
+    solvers_[k]->for_each_released(
+        [&](std::uint32_t particle, Vec2 normal, double plane, Vec2 motion, double mu, std::int32_t prop) {
+          if (prop >= 0 && ctx.rigid->props()[static_cast<std::size_t>(prop)].is_dynamic()) return;
+          if (rows_.size() + 2 > max_rows_) {
+            fits = false;
+            return;
+          }
+          const Vec2 x = t.particles.x[particle];
+          Row r;
+          r.surface = true;
+          r.a = r.b = a;
+          r.particle = particle;
+          r.plane = plane;
+          r.surface_motion = motion;
+          r.prop = prop;
+          r.mu = mu;
+          r.d = normal;
+          r.target = plane - dot(normal, x);
+          rows_.push_back(r);
+          if (!(mu > 0.0)) return;
+          const Vec2 tangent = perp(normal);
+          r.normal = static_cast<std::int32_t>(rows_.size() - 1);
+          r.d = tangent;
+          r.target = -dot(tangent, x - t.particles.x_prev[particle] - motion);
+          rows_.push_back(r);
+        });
+  }
+  return fits;
+}
+
+void IslandContacts::index_rows_by_tire(std::size_t tires_in_group) {
+  rows_of_tire_begin_.assign(tires_in_group + 1, 0);
+  for (const Row& r : rows_) {
+    ++rows_of_tire_begin_[slot_[r.a] + 1];
+    if (!r.surface) ++rows_of_tire_begin_[slot_[r.b] + 1];
+  }
+  for (std::size_t t = 0; t < tires_in_group; ++t) rows_of_tire_begin_[t + 1] += rows_of_tire_begin_[t];
+  rows_of_tire_.resize(rows_of_tire_begin_.back());
+  for (std::uint32_t r = 0; r < rows_.size(); ++r) {
+    rows_of_tire_[rows_of_tire_begin_[slot_[rows_[r].a]]++] = r;
+    if (!rows_[r].surface) rows_of_tire_[rows_of_tire_begin_[slot_[rows_[r].b]]++] = r;
+  }
+  for (std::size_t t = tires_in_group; t > 0; --t) rows_of_tire_begin_[t] = rows_of_tire_begin_[t - 1];
+  rows_of_tire_begin_[0] = 0;
+}
+
+// D_qr = Σ over the tires rows q and r share of J_q · K̂⁻¹ J_rᵀ, by rows (its columns in order).
+bool IslandContacts::assemble(const std::vector<Tire>& tires) {
+  entry_begin_.assign(1, 0);
+  entry_column_.clear();
+  entry_value_.clear();
+  for (std::size_t q = 0; q < rows_.size(); ++q) {
+    const Row& rq = rows_[q];
+    const auto list = [&](std::uint32_t tire) {
+      const std::uint32_t slot = slot_[tire];
+      return std::span<const std::uint32_t>(rows_of_tire_.data() + rows_of_tire_begin_[slot],
+                                            rows_of_tire_begin_[slot + 1] - rows_of_tire_begin_[slot]);
+    };
+    const std::span<const std::uint32_t> la = list(rq.a);
+    const std::span<const std::uint32_t> lb = rq.surface ? std::span<const std::uint32_t>() : list(rq.b);
+    if (entry_column_.size() + la.size() + lb.size() > max_entries_) return false;
+    std::size_t i = 0, j = 0;
+    while (i < la.size() || j < lb.size()) {  // the union of the two sorted lists
+      std::uint32_t r;
+      if (j == lb.size() || (i < la.size() && la[i] < lb[j])) {
+        r = la[i++];
+      } else if (i == la.size() || lb[j] < la[i]) {
+        r = lb[j++];
+      } else {
+        r = la[i++];
+        ++j;
+      }
+      const Row& rr = rows_[r];
+      const double* wa = w_.data() + rr.wa;
+      const double* wb = w_.data() + rr.wb;
+      double v = 0.0;
+      if (rq.a == rr.a) v += along(rq, true, wa, tires[rq.a].n);
+      if (!rr.surface && rq.a == rr.b) v += along(rq, true, wb, tires[rq.a].n);
+      if (!rq.surface && rq.b == rr.a) v += along(rq, false, wa, tires[rq.b].n);
+      if (!rq.surface && !rr.surface && rq.b == rr.b) v += along(rq, false, wb, tires[rq.b].n);
+      entry_column_.push_back(r);
+      entry_value_.push_back(v);
+    }
+    entry_begin_.push_back(static_cast<std::uint32_t>(entry_column_.size()));
+  }
+  return true;
+}
+
+// (D + α̃) λ = c on the live rows, by conjugate gradients preconditioned by the diagonal, from the
+// multipliers the rows have (the last pass's, or the last substep's). D is symmetric (each tire's
+// K̂⁻¹ is) and positive definite on rows that are not dependent (twins are left out; α̃ > 0 keeps it
+// definite). False when it is not (a direction of no positive curvature) or not finite.
+bool IslandContacts::solve_active(double alpha_tilde) {
+  const std::size_t m = rows_.size();
+  const auto product = [&](const std::vector<double>& v, std::vector<double>& out) {
+    for (std::size_t i = 0; i < m; ++i) {
+      if (!live_[i]) {
+        out[i] = 0.0;
+        continue;
+      }
+      double sum = alpha_tilde * v[i];
+      for (std::uint32_t k = entry_begin_[i]; k < entry_begin_[i + 1]; ++k)
+        if (live_[entry_column_[k]]) sum += entry_value_[k] * v[entry_column_[k]];
+      out[i] = sum;
+    }
+  };
+  x_.resize(m);
+  r_.resize(m);
+  z_.resize(m);
+  p_.resize(m);
+  q_.resize(m);
+  diagonal_.resize(m);
+  double rhs2 = 0.0;
+  for (std::size_t i = 0; i < m; ++i) {
+    x_[i] = live_[i] ? rows_[i].lambda : 0.0;
+    diagonal_[i] = alpha_tilde;
+    for (std::uint32_t k = entry_begin_[i]; k < entry_begin_[i + 1]; ++k)
+      if (entry_column_[k] == i) diagonal_[i] += entry_value_[k];
+  }
+  product(x_, q_);
+  double rz = 0.0;
+  for (std::size_t i = 0; i < m; ++i) {
+    const double c = live_[i] ? rows_[i].target : 0.0;
+    rhs2 += c * c;
+    r_[i] = c - q_[i];
+    z_[i] = live_[i] ? r_[i] / diagonal_[i] : 0.0;
+    p_[i] = z_[i];
+    rz += r_[i] * z_[i];
+  }
+  const double stop = kTolerance * kTolerance * rhs2;
+  for (std::size_t it = 0; it < kMaxIterations; ++it) {
+    double rr = 0.0;
+    for (std::size_t i = 0; i < m; ++i) rr += r_[i] * r_[i];
+    if (!(rr > stop)) break;
+    ++work_.iterations;
+    product(p_, q_);
+    double pq = 0.0;
+    for (std::size_t i = 0; i < m; ++i) pq += p_[i] * q_[i];
+    if (!(pq > 0.0) || !std::isfinite(pq)) return false;
+    const double alpha = rz / pq;
+    double rz_next = 0.0;
+    for (std::size_t i = 0; i < m; ++i) {
+      x_[i] += alpha * p_[i];
+      r_[i] -= alpha * q_[i];
+      z_[i] = live_[i] ? r_[i] / diagonal_[i] : 0.0;
+      rz_next += r_[i] * z_[i];
+    }
+    const double beta = rz_next / rz;
+    rz = rz_next;
+    for (std::size_t i = 0; i < m; ++i) p_[i] = z_[i] + beta * p_[i];
+  }
+  for (std::size_t i = 0; i < m; ++i) rows_[i].lambda = x_[i];
+  return true;
+}
+
+void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx) {
+  if (overflow_[group] || rows_.empty()) return;
+  const std::span<const std::uint32_t> members = group_tires(group);
+  ready_.resize(members.size());
+  for (std::size_t k = 0; k < members.size(); ++k) ready_[k] = solvers_[k]->prepare_response() ? 1 : 0;
+  // Each candidate where the tires are now: a normal row's direction and gap, a friction row's slip
+  // over the substep. A row on a tire whose response is not to be had (a free prop in its system)
+  // is left out, with its friction.
+  std::size_t kept = 0;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    Row row = rows_[r];
+    if (row.surface) {  // added below, after the tires' rows
+      continue;
+    }
+    if (!ready_[slot_[row.a]] || !ready_[slot_[row.b]]) {
+      ++work_.failures;
+      continue;
+    }
+    if (row.normal >= 0) {  // its normal is the row kept just before, or was left out
+      if (kept == 0) continue;
+      const Row& n = rows_[kept - 1];
+      if (n.normal >= 0 || n.a != row.a || n.particle != row.particle || n.b != row.b) continue;
+      row.normal = static_cast<std::int32_t>(kept - 1);
+    }
+    const Tire& ta = tires[row.a];
+    const Tire& tb = tires[row.b];
+    const Vec2* xb = tb.particles.x.data();
+    const Vec2* pb = tb.particles.x_prev.data();
+    const Vec2 x = ta.particles.x[row.particle];
+    const Vec2 e = xb[row.e1] - xb[row.e0];
+    const double e2 = length_squared(e);
+    if (!(e2 > 0.0)) continue;
+    const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));
+    if (row.normal < 0) {
+      row.d = normal;
+      row.target = -dot(normal, x - (xb[row.e0] * (1.0 - row.s) + xb[row.e1] * row.s));
+    } else {
+      const Vec2 tangent = perp(normal);
+      row.d = tangent;
+      if (const Anchor* anchor = anchor_of(key(row.a, row.particle, row.b))) {
+        // Stuck since the anchor was laid: back to it, so that what slid in earlier substeps is
+        // taken back too (a pile whose frictions each let go a little each substep crept).
+        const std::uint32_t a1 = anchor->e0 + 1 == tb.n ? 0 : anchor->e0 + 1;
+        row.target = -dot(tangent, x - (xb[anchor->e0] * (1.0 - anchor->s) + xb[a1] * anchor->s));
+      } else {
+        const Vec2 edge_motion =
+            (xb[row.e0] - pb[row.e0]) * (1.0 - row.s) + (xb[row.e1] - pb[row.e1]) * row.s;
+        row.target = -dot(tangent, (x - ta.particles.x_prev[row.particle]) - edge_motion);
+      }
+    }
+    rows_[kept++] = row;
+  }
+  rows_.resize(kept);
+  if (rows_.empty()) return;
+  if (!add_surface_rows(tires, members, ctx)) ++work_.overflows;
+  ++work_.solves;
+  work_.rows += rows_.size();
+  index_rows_by_tire(members.size());
+  // Each row's response on its two tires, w = K̂⁻¹ Jᵀ.
+  std::size_t total = 0;
+  for (Row& r : rows_) {
+    r.wa = total;
+    total += CyclicBlockCholesky::kBlock * tires[r.a].n;
+    r.wb = total;
+    if (!r.surface) total += CyclicBlockCholesky::kBlock * tires[r.b].n;
+  }
+  w_.assign(total, 0.0);
+  for (Row& r : rows_) {
+    const std::uint32_t na = tires[r.a].n, nb = tires[r.b].n;
+    double* wa = w_.data() + r.wa;
+    const std::size_t p = GlobalSolver::dof(r.particle, na);
+    wa[p] = r.d.x;
+    wa[p + 1] = r.d.y;
+    solvers_[slot_[r.a]]->respond(wa);
+    if (r.surface) continue;
+    double* wb = w_.data() + r.wb;
+    const std::size_t e0 = GlobalSolver::dof(r.e0, nb), e1 = GlobalSolver::dof(r.e1, nb);
+    wb[e0] -= r.d.x * (1.0 - r.s);
+    wb[e0 + 1] -= r.d.y * (1.0 - r.s);
+    wb[e1] -= r.d.x * r.s;
+    wb[e1 + 1] -= r.d.y * r.s;
+    solvers_[slot_[r.b]]->respond(wb);
+  }
+  if (!assemble(tires)) {  // more entries than reserved: the tires stay as their solves left them
+    ++work_.overflows;
+    return;
+  }
+  // The active set, from the last substep's multipliers: a normal starts in while it is pressed in.
+  for (Row& r : rows_) {
+    r.active = r.normal >= 0 || r.target > 0.0;
+    const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
+    const auto it = std::lower_bound(last_lambda_.begin(), last_lambda_.end(),
+                                     std::pair<std::uint64_t, double>{k, -HUGE_VAL});
+    r.lambda = it != last_lambda_.end() && it->first == k ? it->second : 0.0;
+  }
+  const double alpha_tilde = ctx.config->rigid_compliance / (ctx.h * ctx.h);
+  live_.resize(rows_.size());
+  bool solved = false;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    ++work_.passes;
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      const Row& row = rows_[r];
+      live_[r] = row.active && (row.normal < 0 || rows_[static_cast<std::size_t>(row.normal)].active);
+    }
+    solved = solve_active(alpha_tilde);
+    if (!solved) break;
+    bool changed = false;
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      Row& row = rows_[r];
+      if (!live_[r]) row.lambda = 0.0;
+      if (row.normal < 0) {
+        if (row.active && row.lambda < 0.0) {  // it would pull: let go
+          row.active = false;
+          changed = true;
+        } else if (!row.active) {  // back in if the solve pushes it into the other tire
+          double moved = 0.0;
+          for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k)
+            moved += entry_value_[k] * rows_[entry_column_[k]].lambda;
+          if (row.target - moved > ctx.config->contact_slop) {
+            row.active = true;
+            changed = true;
+          }
+        }
+      } else if (row.active && live_[r]) {  // Coulomb: static while |λ_t| ≤ μ λ_n
+        if (std::abs(row.lambda) > row.mu * rows_[static_cast<std::size_t>(row.normal)].lambda) {
+          row.active = false;  // sliding, from now on this substep: kinetic friction below
+          row.lambda = 0.0;
+          changed = true;
+        }
+      }
+    }
+    if (!changed) break;
+  }
+  if (!solved) {
+    ++work_.failures;
+    for (Row& r : rows_) r.lambda = 0.0;
+  }
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    if (!live_[r]) rows_[r].lambda = 0.0;
+  // Kinetic friction at the contacts that slide (Coulomb, μ_k = μ between tires): what stops the
+  // slip the solve left them, through both tires' response, at most μ λ_n, one sweep in row order.
+  // In the solve, not the velocity pass: there, handed to the neighbour as a push for its next
+  // prediction, it passed a velocity between two tires at rest back and forth for ever.
+  if (solved) {
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      Row& row = rows_[r];
+      if (row.normal < 0 || row.active) continue;
+      const Row& n = rows_[static_cast<std::size_t>(row.normal)];
+      if (!n.active || !(n.lambda > 0.0)) continue;
+      double moved = 0.0, self = 0.0;
+      for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k) {
+        moved += entry_value_[k] * rows_[entry_column_[k]].lambda;
+        if (entry_column_[k] == r) self = entry_value_[k];
+      }
+      if (!(self > 0.0)) continue;
+      const double bound = row.mu * n.lambda;
+      row.lambda = std::clamp(row.lambda + (row.target - moved) / (self + alpha_tilde), -bound, bound);
+    }
+  }
+  // Δx_t = Σ_r K̂_t⁻¹ J_{r,t}ᵀ λ_r.
+  for (const Row& r : rows_) {
+    if (r.lambda == 0.0) continue;
+    for (const bool side_a : {true, false}) {
+      if (!side_a && r.surface) break;
+      Tire& t = tires[side_a ? r.a : r.b];
+      const double* w = w_.data() + (side_a ? r.wa : r.wb);
+      for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
+        const std::size_t k = GlobalSolver::dof(i, t.n);
+        t.particles.x[i] += Vec2{w[k], w[k + 1]} * r.lambda;
+      }
+    }
+  }
+  write_records(tires, ctx);
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    const Row& r = rows_[i];
+    const std::uint64_t k = key(r);
+    next_lambda_.push_back({k * 2 + (r.normal >= 0 ? 1 : 0), r.lambda});
+    if (r.normal < 0 && r.lambda > 0.0) next_held_.push_back(k);
+    // A held contact's friction anchor: kept while its friction holds, else laid where the
+    // particle is now along the edge.
+    if (r.normal < 0 || r.surface || !(rows_[static_cast<std::size_t>(r.normal)].lambda > 0.0)) continue;
+    const Anchor* anchor = anchor_of(k);
+    if (anchor != nullptr && r.active) {
+      next_anchors_.push_back(*anchor);
+      continue;
+    }
+    const Vec2* xb = tires[r.b].particles.x.data();
+    const Vec2 e = xb[r.e1] - xb[r.e0];
+    const double e2 = length_squared(e);
+    if (e2 > 0.0)
+      next_anchors_.push_back({k, r.e0, dot(tires[r.a].particles.x[r.particle] - xb[r.e0], e) / e2});
+  }
+}
+
+// The particle's contact record, as the velocity pass (kinetic friction against the neighbour's
+// tread) and the rest of the engine (grounded, on_tire) read them; λ as distances (contact.h). A
+// particle held by a surface keeps that record.
+void IslandContacts::write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const {
+  const double g = ctx.config->ground_normal_y;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const Row& row = rows_[r];
+    if (row.normal >= 0 || !(row.lambda > 0.0)) continue;
+    Tire& ta = tires[row.a];
+    if (ta.contacts[row.particle].active && ta.contacts[row.particle].tire < 0) continue;
+    if (row.surface) {  // held again: the surface's record, as the tire's solve writes one
+      ContactRecord& rec = ta.touch_contact(row.particle);
+      rec = ContactRecord{};
+      rec.normal = row.d;
+      rec.surface_velocity = row.surface_motion * (1.0 / ctx.h);
+      rec.lambda_n = ta.particles.w[row.particle] * row.lambda;
+      rec.mu_static = rec.mu_kinetic = row.mu;
+      rec.prop = row.prop;
+      rec.plane = row.plane;
+      rec.active = true;
+      rec.stuck = true;
+      continue;
+    }
+    Tire& tb = tires[row.b];
+    const Row* friction =
+        r + 1 < rows_.size() && rows_[r + 1].normal == static_cast<std::int32_t>(r) ? &rows_[r + 1] : nullptr;
+    const double w = ta.particles.w[row.particle];
+    const Vec2 m0 = tb.particles.x[row.e0] - tb.particles.x_prev[row.e0];
+    const Vec2 m1 = tb.particles.x[row.e1] - tb.particles.x_prev[row.e1];
+    ContactRecord& rec = ta.touch_contact(row.particle);
+    rec = ContactRecord{};
+    rec.normal = row.d;
+    rec.surface_velocity = (m0 * (1.0 - row.s) + m1 * row.s) * (1.0 / ctx.h);
+    rec.lambda_n = w * row.lambda;
+    rec.lambda_t = friction ? w * friction->lambda : 0.0;
+    rec.mu_static = rec.mu_kinetic = row.mu;
+    rec.active = true;
+    rec.stuck = true;  // its friction, static or kinetic, is the solve's: not the velocity pass's
+    rec.tire = static_cast<std::int32_t>(row.b);
+    rec.other_give_t = 1.0 / tb.total_mass();
+    if (row.d.y >= g) ta.on_tire[row.particle] = 1;                  // resting on the neighbour
+    if (row.d.y <= -g) tb.on_tire[row.e0] = tb.on_tire[row.e1] = 1;  // carrying it
+  }
+}
+
+}  // namespace tire
