@@ -31,6 +31,7 @@ constexpr std::size_t kMaxIterations = 1000;
 
 void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::size_t tires) {
   largest_ = std::min(largest, tires);
+  if (largest_ < 2) return;  // no island is solved here: nothing to make room for
   while (solvers_.size() < largest_) solvers_.push_back(std::make_unique<GlobalSolver>());
   for (auto& s : solvers_) s->reserve(segments);
   max_rows_ = largest_ * kRowsPerTire;
@@ -67,8 +68,9 @@ void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::ui
   pairs_.clear();
   group_begin_.clear();
   pair_begin_.clear();
-  solves_.assign(tire_count, 0);
+  std::fill(solves_.begin(), solves_.end(), 0);
   if (pairs.empty() || largest < 2 || largest_ < 2) return;
+  solves_.assign(tire_count, 0);
   largest = std::min(largest, largest_);
   // Union–find over the pairs, the smaller index the root (the same islands in any pair order).
   root_.resize(tire_count);
