@@ -114,6 +114,7 @@ void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::ui
   }
   // Each group's pairs, in pair order.
   group_of_.resize(tire_count);
+  slot_.resize(tire_count);
   for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g)
     for (std::uint32_t k = group_begin_[g]; k < group_begin_[g + 1]; ++k) {
       group_of_[tires_[k]] = static_cast<std::uint32_t>(g);
