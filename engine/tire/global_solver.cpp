@@ -58,6 +58,38 @@ double dot_n(const double* a, const double* b, std::size_t n) {
 
 Vec2 at(const double* v, std::size_t dof) { return {v[dof], v[dof + 1]}; }
 
+// S = L Lᵀ in place, for the m × m symmetric positive definite S in the lower triangle of s: false
+// when a pivot is not positive.
+template <std::size_t N>
+bool cholesky(double (&s)[N][N], std::size_t m) {
+  for (std::size_t r = 0; r < m; ++r) {
+    for (std::size_t q = 0; q <= r; ++q) {
+      double v = s[r][q];
+      for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
+      if (q < r)
+        s[r][q] = v / s[q][q];
+      else if (v > 0.0)
+        s[r][r] = std::sqrt(v);
+      else
+        return false;
+    }
+  }
+  return true;
+}
+
+// z ← S⁻¹ z with cholesky's factor: L y = z, then Lᵀ z = y.
+template <std::size_t N>
+void cholesky_solve(const double (&s)[N][N], std::size_t m, double* z) {
+  for (std::size_t r = 0; r < m; ++r) {
+    for (std::size_t k = 0; k < r; ++k) z[r] -= s[r][k] * z[k];
+    z[r] /= s[r][r];
+  }
+  for (std::size_t r = m; r-- > 0;) {
+    for (std::size_t k = r + 1; k < m; ++k) z[r] -= s[k][r] * z[k];
+    z[r] /= s[r][r];
+  }
+}
+
 }  // namespace
 
 void GlobalSolver::reserve(std::uint32_t segments) {
@@ -541,26 +573,8 @@ bool GlobalSolver::solve_system(const Tire& t) {
       s[r][r] += rows_[live[r]].alpha_tilde;
       z[r] = rows_[live[r]].b - rows_[live[r]].yf;
     }
-    for (std::size_t r = 0; r < m; ++r) {  // Cholesky of S, in its lower triangle
-      for (std::size_t q = 0; q <= r; ++q) {
-        double v = s[r][q];
-        for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
-        if (q < r)
-          s[r][q] = v / s[q][q];
-        else if (v > 0.0)
-          s[r][r] = std::sqrt(v);
-        else
-          return false;
-      }
-    }
-    for (std::size_t r = 0; r < m; ++r) {
-      for (std::size_t k = 0; k < r; ++k) z[r] -= s[r][k] * z[k];
-      z[r] /= s[r][r];
-    }
-    for (std::size_t r = m; r-- > 0;) {
-      for (std::size_t k = r + 1; k < m; ++k) z[r] -= s[k][r] * z[k];
-      z[r] /= s[r][r];
-    }
+    if (!cholesky(s, m)) return false;
+    cholesky_solve(s, m, z);
   } else {
     for (std::size_t r = 0; r < unknowns; ++r) {
       const double* yr = column(r);
@@ -720,19 +734,7 @@ bool GlobalSolver::prepare_response() {
       s[r][q] = dot_n(y_.data() + response_live_[r] * stride_, y_.data() + response_live_[q] * stride_, size);
     s[r][r] += rows_[response_live_[r]].alpha_tilde;
   }
-  for (std::size_t r = 0; r < m; ++r) {
-    for (std::size_t q = 0; q <= r; ++q) {
-      double v = s[r][q];
-      for (std::size_t k = 0; k < q; ++k) v -= s[r][k] * s[q][k];
-      if (q < r)
-        s[r][q] = v / s[q][q];
-      else if (v > 0.0)
-        s[r][r] = std::sqrt(v);
-      else
-        return false;
-    }
-  }
-  return true;
+  return cholesky(s, m);
 }
 
 void GlobalSolver::respond(double* r) const {
@@ -741,15 +743,7 @@ void GlobalSolver::respond(double* r) const {
   k_.forward(r);  // u = L⁻¹ r
   double z[kMaxRows] = {};
   for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(y_.data() + response_live_[q] * stride_, r, size);
-  const auto& s = response_s_;
-  for (std::size_t q = 0; q < m; ++q) {
-    for (std::size_t k = 0; k < q; ++k) z[q] -= s[q][k] * z[k];
-    z[q] /= s[q][q];
-  }
-  for (std::size_t q = m; q-- > 0;) {
-    for (std::size_t k = q + 1; k < m; ++k) z[q] -= s[k][q] * z[k];
-    z[q] /= s[q][q];
-  }
+  cholesky_solve(response_s_, m, z);
   for (std::size_t q = 0; q < m; ++q) {
     const double* y = y_.data() + response_live_[q] * stride_;
     for (std::size_t k = 0; k < size; ++k) r[k] += z[q] * y[k];
