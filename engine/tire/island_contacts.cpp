@@ -240,19 +240,11 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
   // D's entries: a row's columns are the rows of its two tires.
   std::size_t entries = 0;
   if (fits) {
-    rows_of_tire_begin_.assign(group_tires(group).size() + 1, 0);
-    for (const Row& r : rows_) {
-      ++rows_of_tire_begin_[slot_[r.a] + 1];
-      ++rows_of_tire_begin_[slot_[r.b] + 1];
-    }
-    for (std::size_t t = 0; t + 1 < rows_of_tire_begin_.size(); ++t)
-      rows_of_tire_begin_[t + 1] += rows_of_tire_begin_[t];
-    for (const Row& r : rows_) {
-      const auto count = [&](std::uint32_t tire) {
-        return rows_of_tire_begin_[slot_[tire] + 1] - rows_of_tire_begin_[slot_[tire]];
-      };
-      entries += count(r.a) + count(r.b);
-    }
+    index_rows_by_tire(group_tires(group).size());
+    const auto count = [&](std::uint32_t tire) {
+      return rows_of_tire_begin_[slot_[tire] + 1] - rows_of_tire_begin_[slot_[tire]];
+    };
+    for (const Row& r : rows_) entries += count(r.a) + count(r.b);
   }
   if (!fits || entries > max_entries_) {
     overflow_[group] = 1;
