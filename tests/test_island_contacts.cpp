@@ -164,6 +164,50 @@ TEST_CASE("island: a pile of 35 tires does not creep", "[unit][island][rest]") {
   CHECK(world.island_work().overflows == 0);
 }
 
+TEST_CASE("island: a pile of 60 tires falls asleep", "[unit][island][rest][sleep]") {
+  // test_at_rest.cpp's pile of 60 in a 6 m box. Each tire solved alone with no load sprang back
+  // from what its neighbours pressed in, and tires between the pile and a wall rang at half the
+  // substep rate: 0 of 60 asleep after 30 s. Loaded with their neighbours' last forces, all sleep
+  // at 3.0 s (docs/at-rest.md).
+  World world(island_config(), {0, -9.81});
+  world.add_obstacle({{{-100, -10}, {100, 0}}});
+  world.add_obstacle({{{-4, 0}, {-3, 40}}});
+  world.add_obstacle({{{3, 0}, {4, 40}}});
+  for (int k = 0; k < 60; ++k)
+    world.add_tire(tire_at({-2.4 + 1.1 * (k % 5) + 0.25 * (k / 5 % 2), 0.5 + 1.2 * (k / 5)}));
+  int ticks = 0;
+  while (ticks < 10 * 60 && world.asleep_count() < world.tires().size()) {
+    world.step({});
+    ++ticks;
+  }
+  INFO(world.asleep_count() << " of 60 asleep after " << ticks / 60.0 << " s");
+  CHECK(world.asleep_count() == world.tires().size());
+  CHECK(world.island_work().solves > 0);
+  CHECK(world.island_work().overflows == 0);
+  CHECK(world.island_work().failures == 0);
+}
+
+TEST_CASE("island: small tires raining onto a pile at 10 m/s are not thrown", "[unit][island][physics]") {
+  // Level 08's rain of 300 small tires (R 0.14-0.17 m, 8.5 cm a substep at 10 m/s) onto its pile,
+  // the islands of up to 64 tires solved as one problem. A landing's multiplier put back on the
+  // tires as the next substep's load, far from where the tires then are, threw a tire up at
+  // 29 m/s at 5.8 s; the load is now the smaller of the last two multipliers, which a landing's
+  // one substep does not set (island_contacts.cpp, load_tires).
+  LevelLoad load = load_level_file(source_path("levels/08-three-hundred.json"), {"solver.island_tires=64"});
+  REQUIRE(load.level);
+  const auto session = make_session(*load.level);
+  const World& world = session->world();
+  double fastest = 0.0;
+  for (int i = 0; i < 8 * 60; ++i) {
+    session->step({});
+    for (const Tire& t : world.tires()) fastest = std::max(fastest, length(t.velocity()));
+  }
+  INFO("fastest tire " << fastest << " m/s");
+  // The rain is spawned at most 6.4 m above the ground: no tire may be faster than that fall.
+  CHECK(fastest < std::sqrt(2.0 * 9.81 * 6.4));
+  CHECK(world.island_work().solves > 0);
+}
+
 TEST_CASE("island: contacts between tires keep momentum", "[unit][island][physics]") {
   // Two tires meet in the air with no gravity, head on and spinning: only their contacts act.
   SolverConfig config = island_config();

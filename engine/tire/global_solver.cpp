@@ -668,6 +668,10 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   std::fill(contact_of_.begin(), contact_of_.begin() + 2 * static_cast<std::ptrdiff_t>(n), -1);
   rigid_alpha_tilde_ = ctx.config->rigid_compliance / (ctx.h * ctx.h);
   assemble(t, ctx, gamma);
+  if (load_ != nullptr) {
+    for (std::size_t k = 0; k < CyclicBlockCholesky::kBlock * n; ++k) base_f_[k] += load_[k];
+    load_ = nullptr;
+  }
   add_ring_area_row(t, ctx, false, gamma);
   add_ring_area_row(t, ctx, true, gamma);
   if (t.grabbed) {

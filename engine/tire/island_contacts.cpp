@@ -51,13 +51,16 @@ void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::s
   reserve_doubling(rows_of_tire_begin_, largest_ + 1);
   reserve_doubling(rows_of_tire_, 2 * max_rows_);
   reserve_doubling(w_, 2 * max_rows_ * CyclicBlockCholesky::kBlock * segments);
+  reserve_doubling(load_, largest_ * CyclicBlockCholesky::kBlock * segments);
+  reserve_doubling(load_begin_, largest_ + 1);
   reserve_doubling(entry_begin_, max_rows_ + 1);
   reserve_doubling(entry_column_, max_entries_);
   reserve_doubling(entry_value_, max_entries_);
   for (auto* v : {&x_, &r_, &z_, &p_, &q_, &diagonal_}) reserve_doubling(*v, max_rows_);
   reserve_doubling(live_, max_rows_);
   reserve_doubling(ready_, largest_);
-  for (auto* v : {&last_lambda_, &next_lambda_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
+  for (auto* v : {&older_lambda_, &last_lambda_, &next_lambda_})
+    reserve_doubling(*v, 4 * tires * kRowsPerTire);
   for (auto* v : {&anchors_, &next_anchors_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
   for (auto* v : {&held_, &next_held_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
 }
@@ -200,6 +203,7 @@ bool IslandContacts::add_contacts(const Tire& ta, std::uint32_t a, const Tire& t
     rows_.push_back(r);
     if (!(mu > 0.0)) continue;
     r.normal = static_cast<std::int32_t>(rows_.size() - 1);
+    r.d = perp(normal);
     rows_.push_back(r);
   }
   return true;
@@ -210,6 +214,7 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
     held_.swap(next_held_);
     next_held_.clear();
     std::sort(held_.begin(), held_.end());
+    older_lambda_.swap(last_lambda_);
     last_lambda_.swap(next_lambda_);
     next_lambda_.clear();
     std::sort(last_lambda_.begin(), last_lambda_.end());
@@ -250,7 +255,44 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
     overflow_[group] = 1;
     rows_.clear();
     ++work_.overflows;
+    return;
   }
+  load_tires(tires, group_tires(group));
+}
+
+// Each row's last multiplier, put on its two tires as a load for their solves: each tire is then
+// solved as its neighbours push it, and the island's solve adds only what changed. Solved alone with
+// no load, a tire pressed against a wall by the pile let the wall go and sprang back, the island's
+// solve pressed it in again through a response that did not hold the wall, and tires between a
+// pile and a wall rang at half the substep rate (docs/at-rest.md).
+void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members) {
+  constexpr std::size_t B = CyclicBlockCholesky::kBlock;
+  load_begin_.assign(1, 0);
+  for (const std::uint32_t i : members) load_begin_.push_back(load_begin_.back() + B * tires[i].n);
+  load_.assign(load_begin_.back(), 0.0);
+  for (Row& r : rows_) {
+    const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
+    const auto it = std::lower_bound(last_lambda_.begin(), last_lambda_.end(),
+                                     std::pair<std::uint64_t, double>{k, -HUGE_VAL});
+    r.lambda = it != last_lambda_.end() && it->first == k ? it->second : 0.0;
+    const auto before = std::lower_bound(older_lambda_.begin(), older_lambda_.end(),
+                                         std::pair<std::uint64_t, double>{k, -HUGE_VAL});
+    const double older = before != older_lambda_.end() && before->first == k ? before->second : 0.0;
+    r.applied =
+        r.lambda * older > 0.0 ? std::copysign(std::min(std::abs(r.lambda), std::abs(older)), older) : 0.0;
+    if (r.applied == 0.0) continue;
+    const auto add = [&](std::uint32_t tire, std::uint32_t particle, Vec2 f) {
+      double* load = load_.data() + load_begin_[slot_[tire]];
+      const std::size_t d = GlobalSolver::dof(particle, tires[tire].n);
+      load[d] += f.x;
+      load[d + 1] += f.y;
+    };
+    add(r.a, r.particle, r.d * r.applied);  // Jᵀ λ (island_contacts.h)
+    add(r.b, r.e0, r.d * (-(1.0 - r.s) * r.applied));
+    add(r.b, r.e1, r.d * (-r.s * r.applied));
+  }
+  for (std::size_t k = 0; k < members.size(); ++k)
+    solvers_[k]->load_next_solve(load_.data() + load_begin_[k]);
 }
 
 // The surface contacts each tire's solve let go (its neighbours were not there to press it in):
@@ -385,7 +427,7 @@ bool IslandContacts::solve_active(double alpha_tilde) {
   product(x_, q_);
   double rz = 0.0;
   for (std::size_t i = 0; i < m; ++i) {
-    const double c = live_[i] ? rows_[i].target : 0.0;
+    const double c = live_[i] ? rows_[i].rhs : 0.0;
     rhs2 += c * c;
     r_[i] = c - q_[i];
     z_[i] = live_[i] ? r_[i] / diagonal_[i] : 0.0;
@@ -446,17 +488,12 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     const Tire& tb = tires[row.b];
     const Vec2* xb = tb.particles.x.data();
     const Vec2* pb = tb.particles.x_prev.data();
+    // The directions are find()'s, which the loads were put on with: the tires feel Jᵀ λ in all.
     const Vec2 x = ta.particles.x[row.particle];
-    const Vec2 e = xb[row.e1] - xb[row.e0];
-    const double e2 = length_squared(e);
-    if (!(e2 > 0.0)) continue;
-    const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / std::sqrt(e2));
     if (row.normal < 0) {
-      row.d = normal;
-      row.target = -dot(normal, x - (xb[row.e0] * (1.0 - row.s) + xb[row.e1] * row.s));
+      row.target = -dot(row.d, x - (xb[row.e0] * (1.0 - row.s) + xb[row.e1] * row.s));
     } else {
-      const Vec2 tangent = perp(normal);
-      row.d = tangent;
+      const Vec2 tangent = row.d;
       if (const Anchor* anchor = anchor_of(key(row.a, row.particle, row.b))) {
         // Stuck since the anchor was laid: back to it, so that what slid in earlier substeps is
         // taken back too (a pile whose frictions each let go a little each substep crept).
@@ -505,13 +542,22 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     ++work_.overflows;
     return;
   }
-  // The active set, from the last substep's multipliers: a normal starts in while it is pressed in.
+  // The active set, from the last iteration's multipliers: a normal starts in while it held or is
+  // pressed in. A surface row starts from its last multiplier (a tire row from the one it applied).
   for (Row& r : rows_) {
-    r.active = r.normal >= 0 || r.target > 0.0;
+    r.active = r.normal >= 0 || r.target > 0.0 || r.applied > 0.0;
+    if (!r.surface) continue;
     const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
     const auto it = std::lower_bound(last_lambda_.begin(), last_lambda_.end(),
                                      std::pair<std::uint64_t, double>{k, -HUGE_VAL});
     r.lambda = it != last_lambda_.end() && it->first == k ? it->second : 0.0;
+  }
+  // c + D applied: what the rows ask of the multipliers' totals.
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    double pushed = 0.0;
+    for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k)
+      pushed += entry_value_[k] * rows_[entry_column_[k]].applied;
+    rows_[r].rhs = rows_[r].target + pushed;
   }
   const double alpha_tilde = ctx.config->rigid_compliance / (ctx.h * ctx.h);
   live_.resize(rows_.size());
@@ -536,7 +582,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
           double moved = 0.0;
           for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k)
             moved += entry_value_[k] * rows_[entry_column_[k]].lambda;
-          if (row.target - moved > ctx.config->contact_slop) {
+          if (row.rhs - moved > ctx.config->contact_slop) {
             row.active = true;
             changed = true;
           }
@@ -574,19 +620,20 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
       }
       if (!(self > 0.0)) continue;
       const double bound = row.mu * n.lambda;
-      row.lambda = std::clamp(row.lambda + (row.target - moved) / (self + alpha_tilde), -bound, bound);
+      row.lambda = std::clamp(row.lambda + (row.rhs - moved) / (self + alpha_tilde), -bound, bound);
     }
   }
-  // Δx_t = Σ_r K̂_t⁻¹ J_{r,t}ᵀ λ_r.
+  // Δx_t = Σ_r K̂_t⁻¹ J_{r,t}ᵀ (λ_r − applied_r).
   for (const Row& r : rows_) {
-    if (r.lambda == 0.0) continue;
+    const double change = r.lambda - r.applied;
+    if (change == 0.0) continue;
     for (const bool side_a : {true, false}) {
       if (!side_a && r.surface) break;
       Tire& t = tires[side_a ? r.a : r.b];
       const double* w = w_.data() + (side_a ? r.wa : r.wb);
       for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
         const std::size_t k = GlobalSolver::dof(i, t.n);
-        t.particles.x[i] += Vec2{w[k], w[k + 1]} * r.lambda;
+        t.particles.x[i] += Vec2{w[k], w[k + 1]} * change;
       }
     }
   }

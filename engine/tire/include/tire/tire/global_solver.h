@@ -76,6 +76,10 @@ class GlobalSolver {
   // (its border is not symmetric) or the factor fails. respond() works in place on r.
   bool prepare_response();
   void respond(double* r) const;
+  // A load on the next solve only: a force r (kg·m, force × h², in block order: dof()) added to its
+  // f, as the tire's neighbours push it (an island's last multipliers, island_contacts.h). The
+  // solve reads it and forgets it; r must live until then.
+  void load_next_solve(const double* r) { load_ = r; }
   // The surface contacts (obstacles, props) the last solve found and then let go: f(particle,
   // normal, plane, surface displacement over the substep, static friction, prop or −1). An island's
   // solve (island_contacts.h) may press them in again.
@@ -197,9 +201,10 @@ class GlobalSolver {
   CyclicBlockCholesky k_;
   std::vector<Block4> base_diagonal_;  // K without the contacts
   std::vector<Block4> base_coupling_;
-  std::vector<double> base_f_;  // f without the contacts
-  std::vector<double> f_;       // f with them, then L⁻¹ f
-  std::vector<double> dx_;      // the last pass's Δx, in block order
+  std::vector<double> base_f_;    // f without the contacts
+  const double* load_ = nullptr;  // load_next_solve's, until the solve adds it to base_f_
+  std::vector<double> f_;         // f with them, then L⁻¹ f
+  std::vector<double> dx_;        // the last pass's Δx, in block order
   std::vector<Row> rows_;
   std::size_t base_rows_ = 0;  // the areas' and the grab's, first in rows_
   std::vector<double> g_;      // column r: the gradient g_r

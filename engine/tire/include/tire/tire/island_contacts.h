@@ -91,6 +91,10 @@ class IslandContacts {
     double mu = 0.0;
     std::int32_t normal = -1;  // a friction row's normal row
     double lambda = 0.0;
+    // The last iteration's multiplier, put on the tires as a load before their solves (find()): the
+    // solve adds K̂⁻¹ Jᵀ (λ − applied), and its right-hand side is c + D applied.
+    double applied = 0.0;
+    double rhs = 0.0;
     bool active = true;
     bool dropped = false;  // a twin left out (add_contacts)
     // Against a surface of the world (an obstacle, a static or kinematic prop) that tire a's solve
@@ -106,6 +110,7 @@ class IslandContacts {
   bool add_contacts(const Tire& ta, std::uint32_t a, const Tire& tb, std::uint32_t b,
                     std::size_t first_of_pair);
   void index_rows_by_tire(std::size_t tires_in_group);
+  void load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
   bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
                         const SubstepContext& ctx);
   bool assemble(const std::vector<Tire>& tires);
@@ -144,14 +149,17 @@ class IslandContacts {
   std::vector<std::uint32_t> rows_of_tire_begin_;  // per slot: its rows in rows_of_tire_
   std::vector<std::uint32_t> rows_of_tire_;
   std::vector<double> w_;
+  std::vector<double> load_;  // per slot, from load_begin_: Σ Jᵀ applied over its rows
+  std::vector<std::size_t> load_begin_;
   std::vector<std::uint32_t> entry_begin_;  // D by rows: its columns and values
   std::vector<std::uint32_t> entry_column_;
   std::vector<double> entry_value_;
   std::vector<double> x_, r_, z_, p_, q_, diagonal_;
-  std::vector<std::uint8_t> live_;                             // per row: in this pass's system
-  std::vector<std::uint8_t> ready_;                            // per slot: its response is to be had
-  std::vector<std::pair<std::uint64_t, double>> last_lambda_;  // by key × 2 + friction, sorted
-  std::vector<std::uint64_t> held_;                            // normals that held, sorted
+  std::vector<std::uint8_t> live_;                              // per row: in this pass's system
+  std::vector<std::uint8_t> ready_;                             // per slot: its response is to be had
+  std::vector<std::pair<std::uint64_t, double>> last_lambda_;   // by key × 2 + friction, sorted
+  std::vector<std::pair<std::uint64_t, double>> older_lambda_;  // the iteration's before, sorted
+  std::vector<std::uint64_t> held_;                             // normals that held, sorted
   // Where a stuck contact's particle was laid on the other tread: at s along b's edge (e0, e0 + 1).
   struct Anchor {
     std::uint64_t key = 0;

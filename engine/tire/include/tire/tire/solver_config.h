@@ -122,9 +122,11 @@ struct SolverConfig {
 
   // The global method's islands (tires joined by contacts, island_contacts.h) of up to this many
   // tires have the contacts between their tires solved as one problem, each tire through its exact
-  // response: a pile does not creep. Other islands are solved tire by tire against their
-  // neighbours (block Gauss–Seidel, tire_neighbours.h), which creeps. 0 (the default): never, as
-  // a few tires of an island so solved still ring in place and keep it awake (docs/at-rest.md).
+  // response: a pile does not creep. Larger islands are solved tire by tire against their
+  // neighbours (block Gauss–Seidel, tire_neighbours.h), which creeps; 0 solves every island so.
+  // 0 (the default) until it passes what block Gauss–Seidel passes (docs/at-rest.md); a bound is
+  // then the cost's: conjugate gradients take about 150 iterations a substep on a pile of 60 and
+  // over 500 on one of 150.
   int island_tires = 0;
 
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
