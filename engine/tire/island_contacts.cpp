@@ -177,7 +177,11 @@ bool IslandContacts::add_contacts(const Tire& ta, std::uint32_t a, const Tire& t
     for (std::size_t q = first_of_pair; q < rows_.size(); ++q) {
       Row& o = rows_[q];
       if (o.normal >= 0 || o.dropped || o.a != b || o.b != a) continue;
-      if ((o.particle != k && o.particle != k1) || (o.e0 != i && o.e1 != i)) continue;
+      // One touch: its particle the end of this edge nearer to ours, and ours the end of its edge
+      // nearer to its. (Two tires face to face, two edges overlapping, touch at both ends: a row
+      // at each end, or the upper one balanced on a point and rolled off.)
+      const std::uint32_t nearer = dot(x - xb[k], e) < 0.5 * e2 ? k : k1;
+      if (o.particle != nearer || (o.s < 0.5 ? o.e0 : o.e1) != i) continue;
       if (dot(o.d, normal) > -kTwinCos) continue;  // edges that cross: two contacts, both kept
       const bool mine_held = held(a, i, b), its_held = held(b, o.particle, a);
       if (mine_held != its_held ? its_held : o.target >= depth) {
