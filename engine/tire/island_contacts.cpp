@@ -30,23 +30,22 @@ constexpr std::size_t kMaxIterations = 1000;
 }  // namespace
 
 void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::size_t tires) {
-  largest_ = std::min(largest, tires);
+  // Room for the largest island the option allows, made once, when a second tire makes an island
+  // possible: a solver per tire made as tires are added cost each added tire some twenty allocations.
+  largest_ = tires >= 2 ? largest : 0;
   if (largest_ < 2) return;  // no island is solved here: nothing to make room for
   while (solvers_.size() < largest_) solvers_.push_back(std::make_unique<GlobalSolver>());
   for (auto& s : solvers_) s->reserve(segments);
   max_rows_ = largest_ * kRowsPerTire;
   max_entries_ = max_rows_ * kEntriesPerRow;
-  reserve_doubling(root_, tires);
-  reserve_doubling(size_, tires);
-  reserve_doubling(tires_, tires);
-  reserve_doubling(group_begin_, tires + 1);
-  reserve_doubling(cursor_, tires);
-  reserve_doubling(pairs_, 4 * tires);
-  reserve_doubling(pair_begin_, tires + 1);
-  reserve_doubling(slot_, tires);
-  reserve_doubling(solves_, tires);
-  reserve_doubling(group_of_, tires);
-  reserve_doubling(overflow_, tires);
+  // The lists sized by the world's tires: for as many as the largest island at once, then doubling.
+  const std::size_t room = std::max(largest_, tires);
+  reserve_doubling(per_tire_, room);
+  reserve_doubling(tires_, room);
+  reserve_doubling(group_begin_, room + 1);
+  reserve_doubling(pairs_, 4 * room);
+  reserve_doubling(pair_begin_, room + 1);
+  reserve_doubling(overflow_, room);
   reserve_doubling(rows_, max_rows_);
   reserve_doubling(rows_of_tire_begin_, largest_ + 1);
   reserve_doubling(rows_of_tire_, 2 * max_rows_);
@@ -60,9 +59,8 @@ void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::s
   reserve_doubling(live_, max_rows_);
   reserve_doubling(ready_, largest_);
   for (auto* v : {&older_lambda_, &last_lambda_, &next_lambda_})
-    reserve_doubling(*v, 4 * tires * kRowsPerTire);
-  for (auto* v : {&anchors_, &next_anchors_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
-  for (auto* v : {&held_, &next_held_}) reserve_doubling(*v, 4 * tires * kRowsPerTire);
+    reserve_doubling(*v, 4 * room * kRowsPerTire);
+  for (auto* v : {&anchors_, &next_anchors_}) reserve_doubling(*v, 4 * room * kRowsPerTire);
 }
 
 void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::uint32_t> members,
@@ -71,65 +69,61 @@ void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::ui
   pairs_.clear();
   group_begin_.clear();
   pair_begin_.clear();
-  std::fill(solves_.begin(), solves_.end(), 0);
+  for (Member& m : per_tire_) m.solves = 0;
   if (pairs.empty() || largest < 2 || largest_ < 2) return;
-  solves_.assign(tire_count, 0);
+  per_tire_.assign(tire_count, Member{});
   largest = std::min(largest, largest_);
   // Union–find over the pairs, the smaller index the root (the same islands in any pair order).
-  root_.resize(tire_count);
-  size_.assign(tire_count, 0);
-  for (const std::uint32_t i : members) root_[i] = i;
+  for (const std::uint32_t i : members) per_tire_[i].root = i;
   const auto find_root = [&](std::uint32_t i) {
-    while (root_[i] != i) {
-      root_[i] = root_[root_[i]];
-      i = root_[i];
+    while (per_tire_[i].root != i) {
+      per_tire_[i].root = per_tire_[per_tire_[i].root].root;
+      i = per_tire_[i].root;
     }
     return i;
   };
   for (const TirePair& p : pairs) {
     const std::uint32_t a = find_root(p.a), b = find_root(p.b);
-    if (a != b) root_[std::max(a, b)] = std::min(a, b);
+    if (a != b) per_tire_[std::max(a, b)].root = std::min(a, b);
   }
-  for (const std::uint32_t i : members) ++size_[find_root(i)];
+  for (const std::uint32_t i : members) ++per_tire_[find_root(i)].size;
   // The islands of 2 … largest tires, in order of their first tire (a root is its island's first
   // tire, and members are in tire order), batched into groups of at most `largest` tires; each
   // island's tires in tire order.
   constexpr std::uint32_t kNone = ~std::uint32_t{0};
-  cursor_.assign(tire_count, kNone);
+  for (Member& m : per_tire_) m.cursor = kNone;
   std::uint32_t in_group = 0;
   for (const std::uint32_t i : members) {
-    if (find_root(i) != i || size_[i] < 2 || size_[i] > largest) continue;
-    if (group_begin_.empty() || in_group + size_[i] > largest) {
+    if (find_root(i) != i || per_tire_[i].size < 2 || per_tire_[i].size > largest) continue;
+    if (group_begin_.empty() || in_group + per_tire_[i].size > largest) {
       group_begin_.push_back(static_cast<std::uint32_t>(tires_.size()));
       in_group = 0;
     }
-    cursor_[i] = static_cast<std::uint32_t>(tires_.size());
-    tires_.resize(tires_.size() + size_[i]);
-    in_group += size_[i];
+    per_tire_[i].cursor = static_cast<std::uint32_t>(tires_.size());
+    tires_.resize(tires_.size() + per_tire_[i].size);
+    in_group += per_tire_[i].size;
   }
   if (group_begin_.empty()) return;
   group_begin_.push_back(static_cast<std::uint32_t>(tires_.size()));
   for (const std::uint32_t i : members) {
     const std::uint32_t r = find_root(i);
-    if (cursor_[r] == kNone) continue;
-    tires_[cursor_[r]++] = i;
-    solves_[i] = 1;
+    if (per_tire_[r].cursor == kNone) continue;
+    tires_[per_tire_[r].cursor++] = i;
+    per_tire_[i].solves = 1;
   }
   // Each group's pairs, in pair order.
-  group_of_.resize(tire_count);
-  slot_.resize(tire_count);
   for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g)
     for (std::uint32_t k = group_begin_[g]; k < group_begin_[g + 1]; ++k) {
-      group_of_[tires_[k]] = static_cast<std::uint32_t>(g);
-      slot_[tires_[k]] = k - group_begin_[g];
+      per_tire_[tires_[k]].group = static_cast<std::uint32_t>(g);
+      per_tire_[tires_[k]].slot = k - group_begin_[g];
     }
   pair_begin_.assign(groups() + 1, 0);
   for (const TirePair& p : pairs)
-    if (solves_[p.a]) ++pair_begin_[group_of_[p.a] + 1];
+    if (per_tire_[p.a].solves) ++pair_begin_[per_tire_[p.a].group + 1];
   for (std::size_t g = 0; g < groups(); ++g) pair_begin_[g + 1] += pair_begin_[g];
   pairs_.resize(pair_begin_.back());
   for (const TirePair& p : pairs)
-    if (solves_[p.a]) pairs_[pair_begin_[group_of_[p.a]]++] = p;
+    if (per_tire_[p.a].solves) pairs_[pair_begin_[per_tire_[p.a].group]++] = p;
   for (std::size_t g = groups(); g > 0; --g) pair_begin_[g] = pair_begin_[g - 1];
   pair_begin_[0] = 0;
   overflow_.assign(groups(), 0);
@@ -215,9 +209,6 @@ bool IslandContacts::add_contacts(const Tire& ta, std::uint32_t a, const Tire& t
 
 void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
   if (group == 0) {  // what held, and the multipliers, in the last iteration of every group
-    held_.swap(next_held_);
-    next_held_.clear();
-    std::sort(held_.begin(), held_.end());
     older_lambda_.swap(last_lambda_);
     last_lambda_.swap(next_lambda_);
     next_lambda_.clear();
@@ -251,7 +242,7 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
   if (fits) {
     index_rows_by_tire(group_tires(group).size());
     const auto count = [&](std::uint32_t tire) {
-      return rows_of_tire_begin_[slot_[tire] + 1] - rows_of_tire_begin_[slot_[tire]];
+      return rows_of_tire_begin_[per_tire_[tire].slot + 1] - rows_of_tire_begin_[per_tire_[tire].slot];
     };
     for (const Row& r : rows_) entries += count(r.a) + count(r.b);
   }
@@ -276,17 +267,13 @@ void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const 
   load_.assign(load_begin_.back(), 0.0);
   for (Row& r : rows_) {
     const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
-    const auto it = std::lower_bound(last_lambda_.begin(), last_lambda_.end(),
-                                     std::pair<std::uint64_t, double>{k, -HUGE_VAL});
-    r.lambda = it != last_lambda_.end() && it->first == k ? it->second : 0.0;
-    const auto before = std::lower_bound(older_lambda_.begin(), older_lambda_.end(),
-                                         std::pair<std::uint64_t, double>{k, -HUGE_VAL});
-    const double older = before != older_lambda_.end() && before->first == k ? before->second : 0.0;
+    r.lambda = lambda_in(last_lambda_, k);
+    const double older = lambda_in(older_lambda_, k);
     r.applied =
         r.lambda * older > 0.0 ? std::copysign(std::min(std::abs(r.lambda), std::abs(older)), older) : 0.0;
     if (r.applied == 0.0) continue;
     const auto add = [&](std::uint32_t tire, std::uint32_t particle, Vec2 f) {
-      double* load = load_.data() + load_begin_[slot_[tire]];
+      double* load = load_.data() + load_begin_[per_tire_[tire].slot];
       const std::size_t d = GlobalSolver::dof(particle, tires[tire].n);
       load[d] += f.x;
       load[d + 1] += f.y;
@@ -342,14 +329,14 @@ bool IslandContacts::add_surface_rows(const std::vector<Tire>& tires, std::span<
 void IslandContacts::index_rows_by_tire(std::size_t tires_in_group) {
   rows_of_tire_begin_.assign(tires_in_group + 1, 0);
   for (const Row& r : rows_) {
-    ++rows_of_tire_begin_[slot_[r.a] + 1];
-    if (!r.surface) ++rows_of_tire_begin_[slot_[r.b] + 1];
+    ++rows_of_tire_begin_[per_tire_[r.a].slot + 1];
+    if (!r.surface) ++rows_of_tire_begin_[per_tire_[r.b].slot + 1];
   }
   for (std::size_t t = 0; t < tires_in_group; ++t) rows_of_tire_begin_[t + 1] += rows_of_tire_begin_[t];
   rows_of_tire_.resize(rows_of_tire_begin_.back());
   for (std::uint32_t r = 0; r < rows_.size(); ++r) {
-    rows_of_tire_[rows_of_tire_begin_[slot_[rows_[r].a]]++] = r;
-    if (!rows_[r].surface) rows_of_tire_[rows_of_tire_begin_[slot_[rows_[r].b]]++] = r;
+    rows_of_tire_[rows_of_tire_begin_[per_tire_[rows_[r].a].slot]++] = r;
+    if (!rows_[r].surface) rows_of_tire_[rows_of_tire_begin_[per_tire_[rows_[r].b].slot]++] = r;
   }
   for (std::size_t t = tires_in_group; t > 0; --t) rows_of_tire_begin_[t] = rows_of_tire_begin_[t - 1];
   rows_of_tire_begin_[0] = 0;
@@ -363,7 +350,7 @@ bool IslandContacts::assemble(const std::vector<Tire>& tires) {
   for (std::size_t q = 0; q < rows_.size(); ++q) {
     const Row& rq = rows_[q];
     const auto list = [&](std::uint32_t tire) {
-      const std::uint32_t slot = slot_[tire];
+      const std::uint32_t slot = per_tire_[tire].slot;
       return std::span<const std::uint32_t>(rows_of_tire_.data() + rows_of_tire_begin_[slot],
                                             rows_of_tire_begin_[slot + 1] - rows_of_tire_begin_[slot]);
     };
@@ -478,7 +465,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     if (row.surface) {  // added below, after the tires' rows
       continue;
     }
-    if (!ready_[slot_[row.a]] || !ready_[slot_[row.b]]) {
+    if (!ready_[per_tire_[row.a].slot] || !ready_[per_tire_[row.b].slot]) {
       ++work_.failures;
       continue;
     }
@@ -532,7 +519,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     const std::size_t p = GlobalSolver::dof(r.particle, na);
     wa[p] = r.d.x;
     wa[p + 1] = r.d.y;
-    solvers_[slot_[r.a]]->respond(wa);
+    solvers_[per_tire_[r.a].slot]->respond(wa);
     if (r.surface) continue;
     double* wb = w_.data() + r.wb;
     const std::size_t e0 = GlobalSolver::dof(r.e0, nb), e1 = GlobalSolver::dof(r.e1, nb);
@@ -540,7 +527,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     wb[e0 + 1] -= r.d.y * (1.0 - r.s);
     wb[e1] -= r.d.x * r.s;
     wb[e1 + 1] -= r.d.y * r.s;
-    solvers_[slot_[r.b]]->respond(wb);
+    solvers_[per_tire_[r.b].slot]->respond(wb);
   }
   if (!assemble(tires)) {  // more entries than reserved: the tires stay as their solves left them
     ++work_.overflows;
@@ -552,9 +539,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     r.active = r.normal >= 0 || r.target > 0.0 || r.applied > 0.0;
     if (!r.surface) continue;
     const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
-    const auto it = std::lower_bound(last_lambda_.begin(), last_lambda_.end(),
-                                     std::pair<std::uint64_t, double>{k, -HUGE_VAL});
-    r.lambda = it != last_lambda_.end() && it->first == k ? it->second : 0.0;
+    r.lambda = lambda_in(last_lambda_, k);
   }
   // c + D applied: what the rows ask of the multipliers' totals.
   for (std::size_t r = 0; r < rows_.size(); ++r) {
@@ -646,7 +631,6 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     const Row& r = rows_[i];
     const std::uint64_t k = key(r);
     next_lambda_.push_back({k * 2 + (r.normal >= 0 ? 1 : 0), r.lambda});
-    if (r.normal < 0 && r.lambda > 0.0) next_held_.push_back(k);
     // A held contact's friction anchor: kept while its friction holds, else laid where the
     // particle is now along the edge.
     if (r.normal < 0 || r.surface || !(rows_[static_cast<std::size_t>(r.normal)].lambda > 0.0)) continue;

@@ -29,6 +29,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -60,14 +61,16 @@ class IslandContacts {
   }
   // Whether tire i is solved here this iteration (false for a tire of an island that overflowed).
   bool solves(std::uint32_t tire) const {
-    return tire < solves_.size() && solves_[tire] != 0 && overflow_[group_of_[tire]] == 0;
+    return tire < per_tire_.size() && per_tire_[tire].solves != 0 && overflow_[per_tire_[tire].group] == 0;
   }
   bool any() const { return !tires_.empty(); }
 
   // Each iteration, for each group: find() before its tires are solved (the candidates, where the
   // tires are predicted); each tire solved alone by solver_of(tire), with no neighbours; then solve().
   void find(const std::vector<Tire>& tires, std::size_t group);
-  GlobalSolver& solver_of(const Tire& t) { return *solvers_[slot_[static_cast<std::size_t>(&t - first_)]]; }
+  GlobalSolver& solver_of(const Tire& t) {
+    return *solvers_[per_tire_[static_cast<std::size_t>(&t - first_)].slot];
+  }
   void solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx);
 
   // Counts since the start, for tests and `tirectl bench`.
@@ -122,8 +125,15 @@ class IslandContacts {
   static std::uint64_t key(std::uint32_t a, std::uint32_t particle, std::uint32_t b) {
     return (std::uint64_t{a} << 40) | (std::uint64_t{particle} << 24) | b;
   }
+  // The multiplier of row key k (× 2, + 1 for a friction) in a list of them sorted, or 0.
+  static double lambda_in(const std::vector<std::pair<std::uint64_t, double>>& list, std::uint64_t k) {
+    const auto it =
+        std::lower_bound(list.begin(), list.end(), std::pair<std::uint64_t, double>{k, -HUGE_VAL});
+    return it != list.end() && it->first == k ? it->second : 0.0;
+  }
+  // Whether the normal of particle's contact on tire b held in the last iteration.
   bool held(std::uint32_t a, std::uint32_t particle, std::uint32_t b) const {
-    return std::binary_search(held_.begin(), held_.end(), key(a, particle, b));
+    return lambda_in(last_lambda_, key(a, particle, b) * 2) > 0.0;
   }
 
   const Tire* first_ = nullptr;  // the world's tires, as find() saw them
@@ -133,17 +143,20 @@ class IslandContacts {
   std::vector<std::unique_ptr<GlobalSolver>> solvers_;
   // set_islands': per tire its island's root (union–find), the islands' tires grouped, the pairs
   // of each group, and per tire its solver's slot and whether it is solved here.
-  std::vector<std::uint32_t> root_;
-  std::vector<std::uint32_t> size_;
+  struct Member {
+    std::uint32_t root = 0;    // union–find's
+    std::uint32_t size = 0;    // a root's: its island's tires
+    std::uint32_t cursor = 0;  // a root's: where its island's next tire goes in tires_
+    std::uint32_t slot = 0;    // its solver's, in its group
+    std::uint32_t group = 0;
+    std::uint8_t solves = 0;  // whether it is solved here
+  };
+  std::vector<Member> per_tire_;
   std::vector<std::uint32_t> tires_;
   std::vector<std::uint32_t> group_begin_;
-  std::vector<std::uint32_t> cursor_;  // per island's root: where its next tire goes in tires_
   std::vector<TirePair> pairs_;
   std::vector<std::uint32_t> pair_begin_;  // per group
-  std::vector<std::uint32_t> slot_;
-  std::vector<std::uint8_t> solves_;
-  std::vector<std::uint32_t> group_of_;
-  std::vector<std::uint8_t> overflow_;  // per group: this iteration's contacts did not fit
+  std::vector<std::uint8_t> overflow_;     // per group: this iteration's contacts did not fit
   // The group being solved.
   std::vector<Row> rows_;
   std::vector<std::uint32_t> rows_of_tire_begin_;  // per slot: its rows in rows_of_tire_
@@ -159,7 +172,6 @@ class IslandContacts {
   std::vector<std::uint8_t> ready_;                             // per slot: its response is to be had
   std::vector<std::pair<std::uint64_t, double>> last_lambda_;   // by key × 2 + friction, sorted
   std::vector<std::pair<std::uint64_t, double>> older_lambda_;  // the iteration's before, sorted
-  std::vector<std::uint64_t> held_;                             // normals that held, sorted
   // Where a stuck contact's particle was laid on the other tread: at s along b's edge (e0, e0 + 1).
   struct Anchor {
     std::uint64_t key = 0;
@@ -173,7 +185,6 @@ class IslandContacts {
     return it != anchors_.end() && it->key == k ? &*it : nullptr;
   }
   std::vector<std::pair<std::uint64_t, double>> next_lambda_;
-  std::vector<std::uint64_t> next_held_;
   Work work_;
 };
 
