@@ -124,9 +124,10 @@ struct SolverConfig {
   // tires have the contacts between their tires solved as one problem, each tire through its exact
   // response: a pile does not creep. Larger islands are solved tire by tire against their
   // neighbours (block Gauss–Seidel, tire_neighbours.h), which creeps; 0 solves every island so.
-  // 0 (the default) until it passes what block Gauss–Seidel passes (docs/at-rest.md); a bound is
-  // then the cost's: conjugate gradients take about 150 iterations a substep on a pile of 60 and
-  // over 500 on one of 150.
+  // 0 (the default) for now: a tire's own contacts with the world are held as its solve left them
+  // while the island is solved, so a blow between tires on the ground loses its momentum to the
+  // ground, and the cost grows with the pile (about 400 iterations of conjugate gradients a solve
+  // on a pile of 60, 600 on one of 150; docs/at-rest.md).
   int island_tires = 0;
 
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
