@@ -11,17 +11,6 @@ using namespace tire::test;
 
 namespace {
 
-// 60 default tires dropped in rows of five into a 6 m box.
-World pile_of_60(const SolverConfig& config) {
-  World world(config, {0, -9.81});
-  world.add_obstacle({{{-100, -10}, {100, 0}}});
-  world.add_obstacle({{{-4, 0}, {-3, 40}}});
-  world.add_obstacle({{{3, 0}, {4, 40}}});
-  for (int k = 0; k < 60; ++k)
-    world.add_tire(tire_at({-2.4 + 1.1 * (k % 5) + 0.25 * (k / 5 % 2), 0.5 + 1.2 * (k / 5)}));
-  return world;
-}
-
 // A 1.2 m × 0.4 m crate of 9.6 kg lying on the ground (prop 0), sleeping off.
 PropSpec ground_crate() {
   PropSpec crate;

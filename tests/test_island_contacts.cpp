@@ -166,16 +166,11 @@ TEST_CASE("island: a pile of 35 tires does not creep", "[unit][island][rest]") {
 }
 
 TEST_CASE("island: a pile of 60 tires falls asleep", "[unit][island][rest][sleep]") {
-  // test_at_rest.cpp's pile of 60 in a 6 m box. Each tire solved alone with no load sprang back
+  // The pile of 60 in a 6 m box (tire_fixtures.h). Each tire solved alone with no load sprang back
   // from what its neighbours pressed in, and tires between the pile and a wall rang at half the
   // substep rate: 0 of 60 asleep after 30 s. Loaded with their neighbours' last forces, all sleep
-  // at 3.0 s (docs/at-rest.md).
-  World world(island_config(), {0, -9.81});
-  world.add_obstacle({{{-100, -10}, {100, 0}}});
-  world.add_obstacle({{{-4, 0}, {-3, 40}}});
-  world.add_obstacle({{{3, 0}, {4, 40}}});
-  for (int k = 0; k < 60; ++k)
-    world.add_tire(tire_at({-2.4 + 1.1 * (k % 5) + 0.25 * (k / 5 % 2), 0.5 + 1.2 * (k / 5)}));
+  // at 3.2 s (docs/at-rest.md).
+  World world = pile_of_60(island_config());
   int ticks = 0;
   while (ticks < 10 * 60 && world.asleep_count() < world.tires().size()) {
     world.step({});
