@@ -138,6 +138,27 @@ double IslandContacts::along(const Row& r, bool side_a, const double* w, std::ui
   return -dot(r.d, at(r.e0) * (1.0 - r.s) + at(r.e1) * r.s);
 }
 
+void IslandContacts::spread(const Row& r, bool side_a, double scale, double* v, std::uint32_t n) {
+  if (side_a) {
+    const std::size_t p = GlobalSolver::dof(r.particle, n);
+    v[p] += r.d.x * scale;
+    v[p + 1] += r.d.y * scale;
+    return;
+  }
+  const std::size_t e0 = GlobalSolver::dof(r.e0, n), e1 = GlobalSolver::dof(r.e1, n);
+  v[e0] -= r.d.x * ((1.0 - r.s) * scale);
+  v[e0 + 1] -= r.d.y * ((1.0 - r.s) * scale);
+  v[e1] -= r.d.x * (r.s * scale);
+  v[e1 + 1] -= r.d.y * (r.s * scale);
+}
+
+double IslandContacts::d_times(std::size_t row, double Row::*multiplier) const {
+  double sum = 0.0;
+  for (std::uint32_t k = entry_begin_[row]; k < entry_begin_[row + 1]; ++k)
+    sum += entry_value_[k] * (rows_[entry_column_[k]].*multiplier);
+  return sum;
+}
+
 // A tread particle of ta inside (or within kCandidateMargin of) tb's tread, against the edge it
 // crossed, as GlobalSolver::find_tire_contacts finds it: a normal row, and a friction row after it.
 // False when the rows do not fit.
@@ -266,21 +287,15 @@ void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const 
   for (const std::uint32_t i : members) load_begin_.push_back(load_begin_.back() + B * tires[i].n);
   load_.assign(load_begin_.back(), 0.0);
   for (Row& r : rows_) {
-    const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
-    r.lambda = lambda_in(last_lambda_, k);
-    const double older = lambda_in(older_lambda_, k);
+    r.lambda = lambda_in(last_lambda_, lambda_key(r));
+    const double older = lambda_in(older_lambda_, lambda_key(r));
     r.applied =
         r.lambda * older > 0.0 ? std::copysign(std::min(std::abs(r.lambda), std::abs(older)), older) : 0.0;
     if (r.applied == 0.0) continue;
-    const auto add = [&](std::uint32_t tire, std::uint32_t particle, Vec2 f) {
-      double* load = load_.data() + load_begin_[per_tire_[tire].slot];
-      const std::size_t d = GlobalSolver::dof(particle, tires[tire].n);
-      load[d] += f.x;
-      load[d + 1] += f.y;
-    };
-    add(r.a, r.particle, r.d * r.applied);  // Jᵀ λ (island_contacts.h)
-    add(r.b, r.e0, r.d * (-(1.0 - r.s) * r.applied));
-    add(r.b, r.e1, r.d * (-r.s * r.applied));
+    for (const bool side_a : {true, false}) {  // Jᵀ λ (island_contacts.h)
+      const std::uint32_t tire = side_a ? r.a : r.b;
+      spread(r, side_a, r.applied, load_.data() + load_begin_[per_tire_[tire].slot], tires[tire].n);
+    }
   }
   for (std::size_t k = 0; k < members.size(); ++k)
     solvers_[k]->load_next_solve(load_.data() + load_begin_[k]);
@@ -516,17 +531,11 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   for (Row& r : rows_) {
     const std::uint32_t na = tires[r.a].n, nb = tires[r.b].n;
     double* wa = w_.data() + r.wa;
-    const std::size_t p = GlobalSolver::dof(r.particle, na);
-    wa[p] = r.d.x;
-    wa[p + 1] = r.d.y;
+    spread(r, true, 1.0, wa, na);
     solvers_[per_tire_[r.a].slot]->respond(wa);
     if (r.surface) continue;
     double* wb = w_.data() + r.wb;
-    const std::size_t e0 = GlobalSolver::dof(r.e0, nb), e1 = GlobalSolver::dof(r.e1, nb);
-    wb[e0] -= r.d.x * (1.0 - r.s);
-    wb[e0 + 1] -= r.d.y * (1.0 - r.s);
-    wb[e1] -= r.d.x * r.s;
-    wb[e1 + 1] -= r.d.y * r.s;
+    spread(r, false, 1.0, wb, nb);
     solvers_[per_tire_[r.b].slot]->respond(wb);
   }
   if (!assemble(tires)) {  // more entries than reserved: the tires stay as their solves left them
@@ -537,17 +546,10 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   // pressed in. A surface row starts from its last multiplier (a tire row from the one it applied).
   for (Row& r : rows_) {
     r.active = r.normal >= 0 || r.target > 0.0 || r.applied > 0.0;
-    if (!r.surface) continue;
-    const std::uint64_t k = key(r) * 2 + (r.normal >= 0 ? 1 : 0);
-    r.lambda = lambda_in(last_lambda_, k);
+    if (r.surface) r.lambda = lambda_in(last_lambda_, lambda_key(r));
   }
   // c + D applied: what the rows ask of the multipliers' totals.
-  for (std::size_t r = 0; r < rows_.size(); ++r) {
-    double pushed = 0.0;
-    for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k)
-      pushed += entry_value_[k] * rows_[entry_column_[k]].applied;
-    rows_[r].rhs = rows_[r].target + pushed;
-  }
+  for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r].rhs = rows_[r].target + d_times(r, &Row::applied);
   const double alpha_tilde = ctx.config->rigid_compliance / (ctx.h * ctx.h);
   live_.resize(rows_.size());
   bool solved = false;
@@ -568,10 +570,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
           row.active = false;
           changed = true;
         } else if (!row.active) {  // back in if the solve pushes it into the other tire
-          double moved = 0.0;
-          for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k)
-            moved += entry_value_[k] * rows_[entry_column_[k]].lambda;
-          if (row.rhs - moved > ctx.config->contact_slop) {
+          if (row.rhs - d_times(r, &Row::lambda) > ctx.config->contact_slop) {
             row.active = true;
             changed = true;
           }
@@ -630,7 +629,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   for (std::size_t i = 0; i < rows_.size(); ++i) {
     const Row& r = rows_[i];
     const std::uint64_t k = key(r);
-    next_lambda_.push_back({k * 2 + (r.normal >= 0 ? 1 : 0), r.lambda});
+    next_lambda_.push_back({lambda_key(r), r.lambda});
     // A held contact's friction anchor: kept while its friction holds, else laid where the
     // particle is now along the edge.
     if (r.normal < 0 || r.surface || !(rows_[static_cast<std::size_t>(r.normal)].lambda > 0.0)) continue;

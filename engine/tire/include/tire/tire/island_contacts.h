@@ -110,6 +110,10 @@ class IslandContacts {
   };
   // J_{row, side}·w: how far w moves the row's point of that tire along d.
   static double along(const Row& r, bool side_a, const double* w, std::uint32_t n);
+  // v += J_{row, side}ᵀ scale: the row's force on that tire, in block order (GlobalSolver::dof).
+  static void spread(const Row& r, bool side_a, double scale, double* v, std::uint32_t n);
+  // Σ over the row's entries of D times the other rows' `multiplier` (λ, or the applied loads).
+  double d_times(std::size_t row, double Row::*multiplier) const;
   bool add_contacts(const Tire& ta, std::uint32_t a, const Tire& tb, std::uint32_t b,
                     std::size_t first_of_pair);
   void index_rows_by_tire(std::size_t tires_in_group);
@@ -125,6 +129,8 @@ class IslandContacts {
   static std::uint64_t key(std::uint32_t a, std::uint32_t particle, std::uint32_t b) {
     return (std::uint64_t{a} << 40) | (std::uint64_t{particle} << 24) | b;
   }
+  // A row's multiplier's key in the lists of them: its contact's, × 2, + 1 for a friction.
+  static std::uint64_t lambda_key(const Row& r) { return key(r) * 2 + (r.normal >= 0 ? 1 : 0); }
   // The multiplier of row key k (× 2, + 1 for a friction) in a list of them sorted, or 0.
   static double lambda_in(const std::vector<std::pair<std::uint64_t, double>>& list, std::uint64_t k) {
     const auto it =
