@@ -97,6 +97,8 @@ void GlobalSolver::reserve(std::uint32_t segments) {
   segments_ = segments;
   stride_ = CyclicBlockCholesky::kBlock * segments;
   k_.reserve(segments);
+  k0_.reserve(segments);
+  y0_.assign(kBaseRows * stride_, 0.0);
   base_diagonal_.resize(segments);
   base_coupling_.resize(segments);
   base_f_.assign(stride_, 0.0);
@@ -241,9 +243,11 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
   c.mu_static = pair.mu_static;
   c.mu_kinetic = pair.mu_kinetic;
   c.friction_active = c.mu_static > 0.0;
+  c.fixed = true;
   double give_n = 0.0, give_t = 0.0;
   if (prop >= 0) {
     const Prop& body = ctx.rigid->props()[static_cast<std::size_t>(prop)];
+    c.fixed = !body.is_dynamic();
     if (body.is_dynamic() && body.support_count == 0 && body.inverse_inertia > 0.0) {
       c.body = body_of(static_cast<std::uint32_t>(prop), body);
       c.arm = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
@@ -715,7 +719,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   if (!solve_pass(t)) return failed();
   for (int pass = 1; pass <= passes && update_active_set(t, ctx); ++pass)
     if (!(ctx.config->reuse_factor && solve_changes(t)) && !solve_pass(t)) return failed();
-  t.newton_turn = std::max(t.newton_turn, largest_turn(t));
+  t.newton_turn = std::max(t.newton_turn, largest_turn(t, dx_.data()));
   t.global_work += work_;
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
   write_back(t, ctx);
@@ -727,42 +731,63 @@ std::size_t GlobalSolver::dof(std::uint32_t particle, std::uint32_t segments) {
 
 bool GlobalSolver::prepare_response() {
   if (!bodies_.empty()) return false;
+  const std::uint32_t n = static_cast<std::uint32_t>(k_.size() / CyclicBlockCholesky::kBlock);
   const std::size_t size = k_.size();
+  // K₀: the base K (mass and links), the normals of the contacts held, and the static frictions
+  // of those with dynamic props (their give in their stiffness), as solve_pass puts them in K.
+  k0_.reset(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    k0_.diagonal(k) = base_diagonal_[k];
+    k0_.coupling(k) = base_coupling_[k];
+  }
+  for (const Contact& c : contacts_) {
+    if (!c.normal_active) continue;
+    Block4& block = k0_.diagonal(block_of(c.particle, n));
+    const std::size_t o = offset_of(c.particle, n);
+    add_outer(block, o, o, outer(c.normal, c.stiffness_n));
+    if (c.friction_active && !c.fixed) add_outer(block, o, o, outer(perp(c.normal), c.stiffness_t));
+  }
+  if (!k0_.factor()) return false;
   std::size_t m = 0;
-  for (std::size_t r = 0; r < rows_.size(); ++r)
-    if (rows_[r].live) response_live_[m++] = r;
+  for (std::size_t r = 0; r < base_rows_; ++r) {
+    if (!rows_[r].live) continue;
+    double* y = y0_.data() + m * stride_;
+    std::copy(g_.data() + r * stride_, g_.data() + r * stride_ + size, y);
+    k0_.forward(y);
+    response_live_[m++] = r;
+  }
   response_rows_ = m;
   auto& s = response_s_;
   for (std::size_t r = 0; r < m; ++r) {
     for (std::size_t q = 0; q <= r; ++q)
-      s[r][q] = dot_n(y_.data() + response_live_[r] * stride_, y_.data() + response_live_[q] * stride_, size);
+      s[r][q] = dot_n(y0_.data() + r * stride_, y0_.data() + q * stride_, size);
     s[r][r] += rows_[response_live_[r]].alpha_tilde;
   }
   return cholesky(s, m);
 }
 
 void GlobalSolver::respond(double* r) const {
-  const std::size_t size = k_.size();
+  const std::size_t size = k0_.size();
   const std::size_t m = response_rows_;
-  k_.forward(r);  // u = L⁻¹ r
-  double z[kMaxRows] = {};
-  for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(y_.data() + response_live_[q] * stride_, r, size);
+  k0_.forward(r);  // u = L₀⁻¹ r
+  double z[kBaseRows] = {};
+  for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(y0_.data() + q * stride_, r, size);
   cholesky_solve(response_s_, m, z);
   for (std::size_t q = 0; q < m; ++q) {
-    const double* y = y_.data() + response_live_[q] * stride_;
+    const double* y = y0_.data() + q * stride_;
     for (std::size_t k = 0; k < size; ++k) r[k] += z[q] * y[k];
   }
-  k_.backward(r);
+  k0_.backward(r);
 }
 
-double GlobalSolver::largest_turn(const Tire& t) const {
+double GlobalSolver::largest_turn(const Tire& t, const double* dx) const {
   const Particles& p = t.particles;
   // The least cos θ between a constraint's d = x_b − x_a before the step and e = d + Δd after it,
   // kept as the fraction (d·e)|d·e| / (|d|²|e|²) = ±cos²θ, compared without dividing.
   double num = 1.0, den = 1.0;
   for (const Link& c : links_) {
     const Vec2 d = p.x[c.b] - p.x[c.a];
-    const Vec2 e = d + at(dx_.data(), c.dof_b) - at(dx_.data(), c.dof_a);
+    const Vec2 e = d + at(dx, c.dof_b) - at(dx, c.dof_a);
     const double de = dot(d, e), lengths2 = length_squared(d) * length_squared(e);
     if (lengths2 > 0.0 && de * std::abs(de) * den < num * lengths2) {
       num = de * std::abs(de);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tire/math/reserve_doubling.h"
+#include "tire/rigid/rigid_world.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/xpbd/contact.h"
 
@@ -14,11 +15,14 @@ namespace {
 // How far outside a neighbour's tread a particle may be where the tires are predicted and still be
 // a candidate: solved alone, a tire springs back from what its neighbours pressed in.
 constexpr double kCandidateMargin = 0.01;  // m
+// A particle this close to a surface at the substep's start was on it (m).
+constexpr double kTouching = 1e-4;
 // Room per tire of an island: contact rows (a soft tire in a pile has about 9, a stiff one 4) and
 // entries of D per row (the rows of its two tires).
 constexpr std::size_t kRowsPerTire = 32;
 constexpr std::size_t kEntriesPerRow = 96;
-constexpr int kPasses = 8;  // active-set passes
+constexpr int kPasses = 8;         // active-set passes
+constexpr int kPolishSweeps = 32;  // projected Gauss–Seidel sweeps when they run out
 // Two rows of one touch seen from either tire are twins (nearly dependent) when their normals are
 // this close to opposite (within 26°); edges that cross at a larger angle make two contacts.
 constexpr double kTwinCos = 0.9;
@@ -51,6 +55,7 @@ void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::s
   reserve_doubling(rows_of_tire_, 2 * max_rows_);
   reserve_doubling(w_, 2 * max_rows_ * CyclicBlockCholesky::kBlock * segments);
   reserve_doubling(load_, largest_ * CyclicBlockCholesky::kBlock * segments);
+  reserve_doubling(correction_, largest_ * CyclicBlockCholesky::kBlock * segments);
   reserve_doubling(load_begin_, largest_ + 1);
   reserve_doubling(entry_begin_, max_rows_ + 1);
   reserve_doubling(entry_column_, max_entries_);
@@ -63,8 +68,10 @@ void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::s
   for (auto* v : {&anchors_, &next_anchors_}) reserve_doubling(*v, 4 * room * kRowsPerTire);
 }
 
-void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::uint32_t> members,
-                                 const std::vector<TirePair>& pairs, std::size_t largest) {
+void IslandContacts::set_islands(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
+                                 const std::vector<TirePair>& pairs, std::size_t largest,
+                                 const RigidWorld& rigid) {
+  const std::size_t tire_count = tires.size();
   tires_.clear();
   pairs_.clear();
   group_begin_.clear();
@@ -86,7 +93,11 @@ void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::ui
     const std::uint32_t a = find_root(p.a), b = find_root(p.b);
     if (a != b) per_tire_[std::max(a, b)].root = std::min(a, b);
   }
-  for (const std::uint32_t i : members) ++per_tire_[find_root(i)].size;
+  for (const std::uint32_t i : members) {
+    Member& root = per_tire_[find_root(i)];
+    ++root.size;
+    for (const PropFrame& f : tires[i].prop_frames) root.near_prop |= rigid.props()[f.prop].is_dynamic();
+  }
   // The islands of 2 … largest tires, in order of their first tire (a root is its island's first
   // tire, and members are in tire order), batched into groups of at most `largest` tires; each
   // island's tires in tire order.
@@ -94,7 +105,8 @@ void IslandContacts::set_islands(std::size_t tire_count, std::span<const std::ui
   for (Member& m : per_tire_) m.cursor = kNone;
   std::uint32_t in_group = 0;
   for (const std::uint32_t i : members) {
-    if (find_root(i) != i || per_tire_[i].size < 2 || per_tire_[i].size > largest) continue;
+    if (find_root(i) != i || per_tire_[i].size < 2 || per_tire_[i].size > largest || per_tire_[i].near_prop)
+      continue;
     if (group_begin_.empty() || in_group + per_tire_[i].size > largest) {
       group_begin_.push_back(static_cast<std::uint32_t>(tires_.size()));
       in_group = 0;
@@ -157,6 +169,17 @@ double IslandContacts::d_times(std::size_t row, double Row::*multiplier) const {
   for (std::uint32_t k = entry_begin_[row]; k < entry_begin_[row + 1]; ++k)
     sum += entry_value_[k] * (rows_[entry_column_[k]].*multiplier);
   return sum;
+}
+
+double IslandContacts::relaxed(std::size_t row, double alpha_tilde) const {
+  double moved = 0.0, self = 0.0;
+  for (std::uint32_t k = entry_begin_[row]; k < entry_begin_[row + 1]; ++k) {
+    moved += entry_value_[k] * rows_[entry_column_[k]].lambda;
+    if (entry_column_[k] == row) self = entry_value_[k];
+  }
+  const Row& r = rows_[row];
+  if (!(self > 0.0)) return r.lambda;
+  return r.lambda + (r.rhs - moved - alpha_tilde * r.lambda) / (self + alpha_tilde);
 }
 
 // A tread particle of ta inside (or within kCandidateMargin of) tb's tread, against the edge it
@@ -301,42 +324,56 @@ void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const 
     solvers_[k]->load_next_solve(load_.data() + load_begin_[k]);
 }
 
-// The surface contacts each tire's solve let go (its neighbours were not there to press it in):
-// rows on that tire alone, so that the island's solve may hold them again (one active set for
-// every contact). False when they do not all fit.
-bool IslandContacts::add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
-                                      const SubstepContext& ctx) {
+// Each tire's contacts with fixed surfaces (obstacles, static and kinematic props): rows on that
+// tire alone, applied as its solve held them (its μ). Of a contact the solve holds, the static
+// friction (its normal stays in the response, GlobalSolver::respond), bounded by μ μ_n of the
+// solve; of one it let go, the normal and the friction, so that the island may press it in again.
+// One active set for every contact. False when they do not all fit.
+bool IslandContacts::add_surface_rows(const std::vector<Tire>& tires,
+                                      std::span<const std::uint32_t> members) {
   bool fits = true;
   for (std::size_t k = 0; k < members.size(); ++k) {
     if (!ready_[k]) continue;
     const std::uint32_t a = members[k];
     const Tire& t = tires[a];
-    solvers_[k]->for_each_released(
-        [&](std::uint32_t particle, Vec2 normal, double plane, Vec2 motion, double mu, std::int32_t prop) {
-          if (prop >= 0 && ctx.rigid->props()[static_cast<std::size_t>(prop)].is_dynamic()) return;
-          if (rows_.size() + 2 > max_rows_) {
-            fits = false;
-            return;
-          }
-          const Vec2 x = t.particles.x[particle];
-          Row r;
-          r.surface = true;
-          r.a = r.b = a;
-          r.particle = particle;
-          r.plane = plane;
-          r.surface_motion = motion;
-          r.prop = prop;
-          r.mu = mu;
-          r.d = normal;
-          r.target = plane - dot(normal, x);
-          rows_.push_back(r);
-          if (!(mu > 0.0)) return;
-          const Vec2 tangent = perp(normal);
-          r.normal = static_cast<std::int32_t>(rows_.size() - 1);
-          r.d = tangent;
-          r.target = -dot(tangent, x - t.particles.x_prev[particle] - motion);
-          rows_.push_back(r);
-        });
+    solvers_[k]->for_each_fixed_contact([&](std::uint32_t particle, Vec2 normal, double plane, Vec2 motion,
+                                            double mu, std::int32_t prop, bool held, double mu_n,
+                                            double mu_t) {
+      if (rows_.size() + 2 > max_rows_) {
+        fits = false;
+        return;
+      }
+      const Vec2 x = t.particles.x[particle];
+      Row r;
+      r.surface = true;
+      r.a = r.b = a;
+      r.particle = particle;
+      r.plane = plane;
+      r.surface_motion = motion;
+      r.prop = prop;
+      r.mu = mu;
+      r.d = normal;
+      r.target = plane - dot(normal, x);
+      r.applied = r.lambda = mu_n;
+      if (held) {  // its normal stays in the tire's response: its friction alone, bounded by μ μ_n
+        if (!(mu > 0.0 && mu_n > 0.0)) return;
+        r.bound = mu * mu_n;
+      } else {
+        rows_.push_back(r);
+        if (!(mu > 0.0)) return;
+        // Its friction kinetic unless the particle was on the surface at the substep's start: its
+        // motion over the substep was not slip while it was off it, and a static row taking all of
+        // it back (12 cm for a tire rolling at 5 m/s at one substep) yanked the tread back and
+        // deformed it (the pair's energy up by half).
+        r.kinetic = plane - dot(normal, t.particles.x_prev[particle] + motion) < -kTouching;
+      }
+      const Vec2 tangent = perp(normal);
+      r.normal = static_cast<std::int32_t>(held ? rows_.size() : rows_.size() - 1);
+      r.d = tangent;
+      r.target = -dot(tangent, x - t.particles.x_prev[particle] - motion);
+      r.applied = r.lambda = mu_t;
+      rows_.push_back(r);
+    });
   }
   return fits;
 }
@@ -515,7 +552,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   }
   rows_.resize(kept);
   if (rows_.empty()) return;
-  if (!add_surface_rows(tires, members, ctx)) ++work_.overflows;
+  if (!add_surface_rows(tires, members)) ++work_.overflows;
   ++work_.solves;
   work_.rows += rows_.size();
   index_rows_by_tire(members.size());
@@ -542,17 +579,14 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     ++work_.overflows;
     return;
   }
-  // The active set, from the last iteration's multipliers: a normal starts in while it held or is
-  // pressed in. A surface row starts from its last multiplier (a tire row from the one it applied).
-  for (Row& r : rows_) {
-    r.active = r.normal >= 0 || r.target > 0.0 || r.applied > 0.0;
-    if (r.surface) r.lambda = lambda_in(last_lambda_, lambda_key(r));
-  }
+  // The active set: a normal starts in while it is applied or pressed in. Each row starts from its
+  // last multiplier (a surface row from what its tire's solve applied).
+  for (Row& r : rows_) r.active = r.normal >= 0 ? !r.kinetic : r.target > 0.0 || r.applied > 0.0;
   // c + D applied: what the rows ask of the multipliers' totals.
   for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r].rhs = rows_[r].target + d_times(r, &Row::applied);
   const double alpha_tilde = ctx.config->rigid_compliance / (ctx.h * ctx.h);
   live_.resize(rows_.size());
-  bool solved = false;
+  bool solved = false, settled = false;
   for (int pass = 0; pass < kPasses; ++pass) {
     ++work_.passes;
     for (std::size_t r = 0; r < rows_.size(); ++r) {
@@ -576,21 +610,48 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
           }
         }
       } else if (row.active && live_[r]) {  // Coulomb: static while |λ_t| ≤ μ λ_n
-        if (std::abs(row.lambda) > row.mu * rows_[static_cast<std::size_t>(row.normal)].lambda) {
+        if (std::abs(row.lambda) > coulomb_bound(row)) {
           row.active = false;  // sliding, from now on this substep: kinetic friction below
           row.lambda = 0.0;
           changed = true;
         }
       }
     }
-    if (!changed) break;
+    if (!changed) {
+      settled = true;
+      break;
+    }
   }
-  if (!solved) {
+  if (!solved) {  // the tires stay as their solves left them
     ++work_.failures;
-    for (Row& r : rows_) r.lambda = 0.0;
+    for (Row& r : rows_) r.lambda = r.applied;
+  } else {
+    for (std::size_t r = 0; r < rows_.size(); ++r)
+      if (!live_[r]) rows_[r].lambda = 0.0;
   }
-  for (std::size_t r = 0; r < rows_.size(); ++r)
-    if (!live_[r]) rows_[r].lambda = 0.0;
+  // When the passes ran out with the active set still changing, the multipliers are made feasible
+  // (λ_n ≥ 0, |λ_t| ≤ μ λ_n) and polished by projected Gauss–Seidel sweeps on (D + α̃) λ = rhs over
+  // all rows: each sweep lowers the problem's quadratic energy, so what the passes left is not
+  // handed on half-solved.
+  if (solved && !settled) {
+    ++work_.unsettled;
+    const auto project = [&](std::size_t r) {
+      Row& row = rows_[r];
+      if (row.normal < 0) {
+        row.lambda = std::max(row.lambda, 0.0);
+      } else {
+        const double bound = std::max(coulomb_bound(row), 0.0);
+        row.lambda = std::clamp(row.lambda, -bound, bound);
+      }
+    };
+    for (std::size_t r = 0; r < rows_.size(); ++r) project(r);
+    for (int sweep = 0; sweep < kPolishSweeps; ++sweep)
+      for (std::size_t r = 0; r < rows_.size(); ++r) {
+        rows_[r].lambda = relaxed(r, alpha_tilde);
+        project(r);
+      }
+    for (Row& r : rows_) r.active = r.normal < 0 ? r.lambda > 0.0 : true;
+  }
   // Kinetic friction at the contacts that slide (Coulomb, μ_k = μ between tires): what stops the
   // slip the solve left them, through both tires' response, at most μ λ_n, one sweep in row order.
   // In the solve, not the velocity pass: there, handed to the neighbour as a push for its next
@@ -599,30 +660,37 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     for (std::size_t r = 0; r < rows_.size(); ++r) {
       Row& row = rows_[r];
       if (row.normal < 0 || row.active) continue;
-      const Row& n = rows_[static_cast<std::size_t>(row.normal)];
-      if (!n.active || !(n.lambda > 0.0)) continue;
-      double moved = 0.0, self = 0.0;
-      for (std::uint32_t k = entry_begin_[r]; k < entry_begin_[r + 1]; ++k) {
-        moved += entry_value_[k] * rows_[entry_column_[k]].lambda;
-        if (entry_column_[k] == r) self = entry_value_[k];
+      if (row.bound < 0.0) {
+        const Row& n = rows_[static_cast<std::size_t>(row.normal)];
+        if (!n.active || !(n.lambda > 0.0)) continue;
       }
-      if (!(self > 0.0)) continue;
-      const double bound = row.mu * n.lambda;
-      row.lambda = std::clamp(row.lambda + (row.rhs - moved) / (self + alpha_tilde), -bound, bound);
+      const double bound = coulomb_bound(row);
+      row.lambda = std::clamp(relaxed(r, alpha_tilde), -bound, bound);
     }
   }
-  // Δx_t = Σ_r K̂_t⁻¹ J_{r,t}ᵀ (λ_r − applied_r).
+  // Δx_t = Σ_r K̂₀_t⁻¹ J_{r,t}ᵀ (λ_r − applied_r), part of the substep's linearised step: a tire it
+  // turns far asks for the refinement as its own solve would (a blow at 10 m/s at one substep,
+  // corrected in one linear step, ended with the pair's energy up by half).
+  correction_.assign(load_begin_.back(), 0.0);
   for (const Row& r : rows_) {
     const double change = r.lambda - r.applied;
     if (change == 0.0) continue;
     for (const bool side_a : {true, false}) {
       if (!side_a && r.surface) break;
-      Tire& t = tires[side_a ? r.a : r.b];
+      const std::uint32_t tire = side_a ? r.a : r.b;
       const double* w = w_.data() + (side_a ? r.wa : r.wb);
-      for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
-        const std::size_t k = GlobalSolver::dof(i, t.n);
-        t.particles.x[i] += Vec2{w[k], w[k + 1]} * change;
-      }
+      double* dx = correction_.data() + load_begin_[per_tire_[tire].slot];
+      for (std::size_t k = 0; k < CyclicBlockCholesky::kBlock * tires[tire].n; ++k) dx[k] += w[k] * change;
+    }
+  }
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    if (!ready_[k]) continue;
+    Tire& t = tires[members[k]];
+    const double* dx = correction_.data() + load_begin_[k];
+    t.newton_turn = std::max(t.newton_turn, solvers_[k]->largest_turn(t, dx));
+    for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
+      const std::size_t d = GlobalSolver::dof(i, t.n);
+      t.particles.x[i] += Vec2{dx[d], dx[d + 1]};
     }
   }
   write_records(tires, ctx);
@@ -647,31 +715,47 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
 }
 
 // The particle's contact record, as the velocity pass (kinetic friction against the neighbour's
-// tread) and the rest of the engine (grounded, on_tire) read them; λ as distances (contact.h). A
-// particle held by a surface keeps that record.
+// tread) and the rest of the engine (grounded, on_tire) read them; λ as distances (contact.h). The
+// surface rows first: a contact the island held again gets a record, one its tire's solve holds
+// the island's friction; a particle held by a surface keeps that record.
 void IslandContacts::write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const {
   const double g = ctx.config->ground_normal_y;
+  const auto friction_of = [&](std::size_t r) {
+    return r + 1 < rows_.size() && rows_[r + 1].normal == static_cast<std::int32_t>(r) ? &rows_[r + 1]
+                                                                                       : nullptr;
+  };
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     const Row& row = rows_[r];
-    if (row.normal >= 0 || !(row.lambda > 0.0)) continue;
+    if (!row.surface) continue;
     Tire& ta = tires[row.a];
-    if (ta.contacts[row.particle].active && ta.contacts[row.particle].tire < 0) continue;
-    if (row.surface) {  // held again: the surface's record, as the tire's solve writes one
-      ContactRecord& rec = ta.touch_contact(row.particle);
-      rec = ContactRecord{};
-      rec.normal = row.d;
-      rec.surface_velocity = row.surface_motion * (1.0 / ctx.h);
-      rec.lambda_n = ta.particles.w[row.particle] * row.lambda;
-      rec.mu_static = rec.mu_kinetic = row.mu;
-      rec.prop = row.prop;
-      rec.plane = row.plane;
-      rec.active = true;
-      rec.stuck = true;
+    const double w = ta.particles.w[row.particle];
+    if (row.bound >= 0.0) {  // the friction of a contact the tire's solve holds, in its record
+      ContactRecord& rec = ta.contacts[row.particle];
+      rec.lambda_t = w * row.lambda;
+      rec.stuck = true;  // static or kinetic, the island's: not the velocity pass's
       continue;
     }
+    if (row.normal >= 0 || !(row.lambda > 0.0)) continue;
+    const Row* friction = friction_of(r);
+    ContactRecord& rec = ta.touch_contact(row.particle);
+    rec = ContactRecord{};
+    rec.normal = row.d;
+    rec.surface_velocity = row.surface_motion * (1.0 / ctx.h);
+    rec.lambda_n = w * row.lambda;
+    rec.lambda_t = friction ? w * friction->lambda : 0.0;
+    rec.mu_static = rec.mu_kinetic = row.mu;
+    rec.prop = row.prop;
+    rec.plane = row.plane;
+    rec.active = true;
+    rec.stuck = true;  // its friction, static or kinetic, is the solve's: not the velocity pass's
+  }
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const Row& row = rows_[r];
+    if (row.surface || row.normal >= 0 || !(row.lambda > 0.0)) continue;
+    Tire& ta = tires[row.a];
+    if (ta.contacts[row.particle].active && ta.contacts[row.particle].tire < 0) continue;
     Tire& tb = tires[row.b];
-    const Row* friction =
-        r + 1 < rows_.size() && rows_[r + 1].normal == static_cast<std::int32_t>(r) ? &rows_[r + 1] : nullptr;
+    const Row* friction = friction_of(r);
     const double w = ta.particles.w[row.particle];
     const Vec2 m0 = tb.particles.x[row.e0] - tb.particles.x_prev[row.e0];
     const Vec2 m1 = tb.particles.x[row.e1] - tb.particles.x_prev[row.e1];

@@ -406,8 +406,8 @@ void World::step(const TickInput& input) {
   const bool neighbours = method.couples_tires_in_solve() && !tire_pairs_.empty();
   if (neighbours) {
     neighbours_.set_pairs(tires_.size(), sleep_.awake(), tire_pairs_);
-    island_.set_islands(tires_.size(), sleep_.awake(), tire_pairs_,
-                        static_cast<std::size_t>(std::max(0, config_.island_tires)));
+    island_.set_islands(tires_, sleep_.awake(), tire_pairs_,
+                        static_cast<std::size_t>(std::max(0, config_.island_tires)), rigid_);
   }
 
   SubstepContext ctx{h,        0.0,

@@ -68,27 +68,38 @@ class GlobalSolver {
   // as the Gauss–Seidel contacts would.
   void solve(Tire& tire, const SubstepContext& ctx);
 
-  // The tire's response to a load, after solve(): w = K̂⁻¹ r, the displacement a force r (kg·m,
-  // force × h², in block order: dof()) adds to the solve's Δx, K̂ being the solve's last system with
-  // its rows (areas, grab, frictions) held as constraints, the Schur complement
-  //     w = L⁻ᵀ (u + Y δμ),  u = L⁻¹ r,  (Yᵀ Y + α̃) δμ = −Yᵀ u.
-  // prepare_response() factors the rows' system once; false when the tire's system holds a free prop
-  // (its border is not symmetric) or the factor fails. respond() works in place on r.
+  // The tire's response to a load, after solve(): w = K̂₀⁻¹ r, the displacement a force r (kg·m,
+  // force × h², in block order: dof()) adds to the solve's Δx. K̂₀ is the solve's last system with
+  // the normals of the contacts it holds, but without the static frictions of its contacts with
+  // fixed surfaces (obstacles, static and kinematic props): an island's solve takes those as rows
+  // of its own, with their Coulomb limit (island_contacts.h). Held in K̂₀ as equalities, they let
+  // the island push a tire as if glued to the ground. Its areas and grab are held as constraints,
+  // the Schur complement
+  //     w = L₀⁻ᵀ (u + Y₀ δμ),  u = L₀⁻¹ r,  (Y₀ᵀ Y₀ + α̃) δμ = −Y₀ᵀ u.
+  // prepare_response() factors K₀ and the rows' system once (one factorisation); false when the
+  // tire's system holds a free prop (its border is not symmetric) or a factor fails. respond()
+  // works in place on r.
   bool prepare_response();
   void respond(double* r) const;
   // A load on the next solve only: a force r (kg·m, force × h², in block order: dof()) added to its
   // f, as the tire's neighbours push it (an island's last multipliers, island_contacts.h). The
   // solve reads it and forgets it; r must live until then.
   void load_next_solve(const double* r) { load_ = r; }
-  // The surface contacts (obstacles, props) the last solve found and then let go: f(particle,
-  // normal, plane, surface displacement over the substep, static friction, prop or −1). An island's
-  // solve (island_contacts.h) may press them in again.
+  // The last solve's contacts with fixed surfaces, held or let go: f(particle, normal, plane,
+  // surface displacement over the substep, static friction, prop or −1, held, μ_n, μ_t), the
+  // multipliers (kg·m) its Δx holds of them (0 for what it did not hold). respond() holds the
+  // normals of those held, and none of their frictions.
   template <class F>
-  void for_each_released(F&& f) const {
+  void for_each_fixed_contact(F&& f) const {
     for (const Contact& c : contacts_)
-      if (!c.normal_active && c.tire < 0 && c.body < 0)
-        f(c.particle, c.normal, c.plane, c.surface_displacement, c.mu_static, c.prop);
+      if (c.fixed)
+        f(c.particle, c.normal, c.plane, c.surface_displacement, c.mu_static, c.prop, c.normal_active, c.mu_n,
+          c.mu_t);
   }
+  // The largest angle (rad) by which a displacement dx (in block order: dof()) of the tire's
+  // particles from where they are turns one of its distance constraints, as assembled by the last
+  // solve: past SolverConfig::refine_turn the linearised step no longer holds.
+  double largest_turn(const Tire& t, const double* dx) const;
   // Where particle i's (x, y) sit in a vector of the tire's unknowns (respond's r and w).
   static std::size_t dof(std::uint32_t particle, std::uint32_t segments);
   std::size_t unknowns() const { return k_.size(); }
@@ -125,6 +136,7 @@ class GlobalSolver {
     double stiffness_n = 0.0;  // 1/(α̃ + D): D a dynamic prop's generalised inverse mass along n
     double stiffness_t = 0.0;  // the same along the tangent
     double give_t = 0.0;       // a neighbour tire's give along the tangent (tire_neighbours.h)
+    bool fixed = false;        // against an obstacle or a prop that is not dynamic: it gives nothing
     bool normal_active = true;
     bool friction_active = true;
     bool normal_in_k = false;  // what K holds of it since it was last factored
@@ -186,8 +198,6 @@ class GlobalSolver {
   // would push into their surface. True when anything changed.
   bool update_active_set(const Tire& t, const SubstepContext& ctx);
   void write_back(Tire& t, const SubstepContext& ctx);
-  // The largest angle (rad) by which Δx turns one of the tire's distance constraints.
-  double largest_turn(const Tire& t) const;
 
   static constexpr std::size_t kBaseRows = 3;         // the two areas and the grab
   static constexpr std::size_t kMaxFrictionRows = 4;  // frictions as rows after a factorisation
@@ -230,10 +240,13 @@ class GlobalSolver {
   std::vector<Link> links_;
   double rigid_alpha_tilde_ = 0.0;  // rigid_compliance / h²
   Tire::GlobalWork work_;           // the current solve's, added to the tire's at its end
-  // prepare_response's: the live rows and the Cholesky factor of their Yᵀ Y + α̃ (lower triangle).
-  std::size_t response_live_[kMaxRows] = {};
+  // prepare_response's: K₀ factored, the live base rows, their Y₀ = L₀⁻¹ g and the Cholesky factor
+  // of their Y₀ᵀ Y₀ + α̃ (lower triangle).
+  CyclicBlockCholesky k0_;
+  std::vector<double> y0_;  // column q: L₀⁻¹ g of the q-th live base row
+  std::size_t response_live_[kBaseRows] = {};
   std::size_t response_rows_ = 0;
-  double response_s_[kMaxRows][kMaxRows] = {};
+  double response_s_[kBaseRows][kBaseRows] = {};
 };
 
 // One GlobalSolver per thread that may solve tires at once: lend() hands out one no other thread

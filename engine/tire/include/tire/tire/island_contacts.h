@@ -5,23 +5,25 @@
 // where it ends the substep.
 //
 // Here each tire of an island is first solved alone, with its own constraints and its contacts with
-// the world (GlobalSolver), which leaves its system K̂ factored. The contacts between the island's
-// tires, a tread particle p of tire a inside the tread of tire b against the edge (e₀, e₁) it
-// crossed, at s along it, are then rows on both tires,
+// the world (GlobalSolver), loaded with the island's last multipliers. The contacts between the
+// island's tires, a tread particle p of tire a inside the tread of tire b against the edge (e₀, e₁)
+// it crossed, at s along it, are then rows on both tires,
 //     J_a = d at p,   J_b = −d (1 − s) at e₀ and −d s at e₁,
 // a normal (d = n, the edge's outward normal) that takes back the gap, and a static friction
 // (d = t) that takes back the particle's slip along the edge since its anchor was laid (Müller et
 // al. 2020, Sec. 3.5, on the two tires' relative motion; the anchor, kept while the friction holds,
-// makes it hold across substeps, as Box2D v3's friction anchors do). The world's contacts a tire's
-// solve let go, which its neighbours may press it back into, are rows on that tire alone. The
-// multipliers solve
-//     (D + α̃) λ = c,   D = Σ_t J_t K̂_t⁻¹ J_tᵀ,
-// D from each tire's exact response at its contact points (GlobalSolver::respond), with one active
-// set: a normal holds while λ_n ≥ 0, a friction while |λ_t| ≤ μ λ_n; a friction that lets go
-// takes kinetic friction, what stops its slip up to μ λ_n, after the solve. The system is solved
-// by conjugate gradients preconditioned by D's diagonal, warm-started from the last substep's
-// multipliers, and each tire moves by Δx_t = K̂_t⁻¹ J_tᵀ λ: the solve alone plus this is the
-// island's one linear system.
+// makes it hold across substeps, as Box2D v3's friction anchors do). Each tire's contacts with
+// fixed surfaces are rows on that tire alone: the static friction of those its solve holds (their
+// normals stay in its response), the normal and friction of those it let go. The multipliers'
+// totals solve
+//     (D + α̃) λ = c + D λ_applied,   D = Σ_t J_t K̂₀_t⁻¹ J_tᵀ,
+// λ_applied what the tires' solves hold already, D from each tire's exact response at its contact
+// points without those frictions (GlobalSolver::respond), with one active set: a normal holds
+// while λ_n ≥ 0, a friction while |λ_t| ≤ μ λ_n; a friction that lets go takes kinetic friction,
+// what stops its slip up to μ λ_n, after the solve. The system is solved by conjugate gradients
+// preconditioned by D's diagonal, warm-started; if the active set still changes after its passes,
+// projected Gauss–Seidel sweeps leave a feasible answer. Each tire moves by
+// Δx_t = K̂₀_t⁻¹ J_tᵀ (λ − λ_applied): the solve alone plus this is the island's one linear system.
 //
 // An island of more tires than SolverConfig::island_tires, or with more contacts than the room
 // reserved, keeps block Gauss–Seidel; a contact on a tire whose own system holds a free prop is
@@ -43,6 +45,7 @@
 namespace tire {
 
 struct SubstepContext;
+class RigidWorld;
 
 class IslandContacts {
  public:
@@ -50,10 +53,13 @@ class IslandContacts {
   // `tires` tires (allocates; outside the step).
   void reserve(std::size_t largest, std::uint32_t segments, std::size_t tires);
 
-  // Once a tick: the awake tires in contact (`members`, joined by `pairs`) sorted into islands; an
-  // island of at most `largest` tires is solved here, in groups that fit the solvers reserved.
-  void set_islands(std::size_t tire_count, std::span<const std::uint32_t> members,
-                   const std::vector<TirePair>& pairs, std::size_t largest);
+  // Once a tick, after the broad phase: the awake tires in contact (`members`, joined by `pairs`)
+  // sorted into islands; an island of at most `largest` tires is solved here, in groups that fit the
+  // solvers reserved. An island with a tire near a dynamic prop keeps block Gauss–Seidel: the prop
+  // is a body of that tire's own system, whose response is not symmetric, and the island's solve
+  // left its contacts out; under a crate, a pile's tires sank into each other and threw it.
+  void set_islands(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
+                   const std::vector<TirePair>& pairs, std::size_t largest, const RigidWorld& rigid);
   std::size_t groups() const { return group_begin_.empty() ? 0 : group_begin_.size() - 1; }
   // The tires of group g, in tire order within each island, islands in order of their first tire.
   std::span<const std::uint32_t> group_tires(std::size_t g) const {
@@ -81,6 +87,7 @@ class IslandContacts {
     std::uint64_t iterations = 0;  // conjugate-gradient iterations
     std::uint64_t overflows = 0;   // islands left to block Gauss–Seidel for want of room
     std::uint64_t failures = 0;    // solves given up (not positive definite, not finite)
+    std::uint64_t unsettled = 0;   // solves whose active set still changed when the passes ran out
   };
   const Work& work() const { return work_; }
 
@@ -92,34 +99,42 @@ class IslandContacts {
     Vec2 d;          // the normal (out of b) or the tangent
     double target = 0.0;
     double mu = 0.0;
-    std::int32_t normal = -1;  // a friction row's normal row
+    std::int32_t normal = -1;  // a friction row's normal row (itself when its normal is in K̂₀)
+    double bound = -1.0;       // such a friction's Coulomb bound, μ μ_n of its tire's solve
     double lambda = 0.0;
-    // The last iteration's multiplier, put on the tires as a load before their solves (find()): the
-    // solve adds K̂⁻¹ Jᵀ (λ − applied), and its right-hand side is c + D applied.
+    // What the tires' solves hold of the row: a tire row's last multiplier, put on the tires as a
+    // load before their solves (find()); a surface row's μ from its tire's solve. The island's solve
+    // adds K̂₀⁻¹ Jᵀ (λ − applied), and its right-hand side is c + D applied.
     double applied = 0.0;
     double rhs = 0.0;
     bool active = true;
+    bool kinetic = false;  // a friction that starts sliding (its contact was let go)
     bool dropped = false;  // a twin left out (add_contacts)
-    // Against a surface of the world (an obstacle, a static or kinematic prop) that tire a's solve
-    // let go: a row on tire a alone, its plane n·x = plane moving by surface_motion.
+    // Against a fixed surface of the world (an obstacle, a static or kinematic prop), held or let go
+    // by tire a's solve: a row on tire a alone, its plane n·x = plane moving by surface_motion.
     bool surface = false;
     double plane = 0.0;
     Vec2 surface_motion;
     std::int32_t prop = -1;
     std::size_t wa = 0, wb = 0;  // the two tires' responses in w_
   };
+  // What a friction row may hold: μ λ_n, or its fixed bound.
+  double coulomb_bound(const Row& r) const {
+    return r.bound >= 0.0 ? r.bound : r.mu * rows_[static_cast<std::size_t>(r.normal)].lambda;
+  }
   // J_{row, side}·w: how far w moves the row's point of that tire along d.
   static double along(const Row& r, bool side_a, const double* w, std::uint32_t n);
   // v += J_{row, side}ᵀ scale: the row's force on that tire, in block order (GlobalSolver::dof).
   static void spread(const Row& r, bool side_a, double scale, double* v, std::uint32_t n);
+  // The row's multiplier after one Gauss–Seidel step on (D + α̃) λ = rhs, the others held.
+  double relaxed(std::size_t row, double alpha_tilde) const;
   // Σ over the row's entries of D times the other rows' `multiplier` (λ, or the applied loads).
   double d_times(std::size_t row, double Row::*multiplier) const;
   bool add_contacts(const Tire& ta, std::uint32_t a, const Tire& tb, std::uint32_t b,
                     std::size_t first_of_pair);
   void index_rows_by_tire(std::size_t tires_in_group);
   void load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
-  bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
-                        const SubstepContext& ctx);
+  bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
   bool assemble(const std::vector<Tire>& tires);
   bool solve_active(double alpha_tilde);
   void write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const;
@@ -156,6 +171,7 @@ class IslandContacts {
     std::uint32_t slot = 0;    // its solver's, in its group
     std::uint32_t group = 0;
     std::uint8_t solves = 0;  // whether it is solved here
+    bool near_prop = false;   // a root's: a tire of its island is near a dynamic prop
   };
   std::vector<Member> per_tire_;
   std::vector<std::uint32_t> tires_;
@@ -170,6 +186,7 @@ class IslandContacts {
   std::vector<double> w_;
   std::vector<double> load_;  // per slot, from load_begin_: Σ Jᵀ applied over its rows
   std::vector<std::size_t> load_begin_;
+  std::vector<double> correction_;          // per slot, from load_begin_: the island's Δx of each tire
   std::vector<std::uint32_t> entry_begin_;  // D by rows: its columns and values
   std::vector<std::uint32_t> entry_column_;
   std::vector<double> entry_value_;
