@@ -333,17 +333,7 @@ TEST_CASE("island: a crate lying on a pile stays on it (its island keeps block G
   // symmetric: the island's solve left its contacts out, its tires sank into each other under the
   // crate, and a pile of 64 threw the crate 6 m up and out through a wall.
   SolverConfig config = island_config();
-  World world(config, {0, -9.81});
-  world.add_obstacle({{{-1, -1}, {13, 0}}});
-  world.add_obstacle({{{-1, 0}, {0, 50}}});
-  world.add_obstacle({{{12, 0}, {13, 50}}});
-  for (int i = 0; i < 33; ++i)
-    world.add_tire(tire_at({0.6 + 1.05 * (i % 11) + 0.2 * ((i / 11) % 2), 0.5 + 1.0 * (i / 11)}));
-  PropSpec crate;
-  crate.type = PropType::dynamic_body;
-  crate.size = {0.6, 0.6};
-  crate.position = {5.0, 5.0};
-  world.add_prop(crate);
+  World world = pile_under_a_crate(config, 33, 5.0);
   run(world, 120);
   const Vec2 settled = world.rigid().props()[0].center_at(0.0);
   double farthest = 0.0;

@@ -313,19 +313,9 @@ TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][p
   CAPTURE(method_name(config.method));
   config.island_tires = GENERATE(0, 64);  // the global method's pile solved as one island
   CAPTURE(config.island_tires);
-  World world(config, {0, -9.81});
+  World world = pile_under_a_crate(config, 64, 8.0);
   world.set_schedule(schedule);
   world.set_threads(2);
-  world.add_obstacle({{{-1, -1}, {13, 0}}});
-  world.add_obstacle({{{-1, 0}, {0, 50}}});
-  world.add_obstacle({{{12, 0}, {13, 50}}});
-  for (int i = 0; i < 64; ++i)
-    world.add_tire(tire_at({0.6 + 1.05 * (i % 11) + 0.2 * ((i / 11) % 2), 0.5 + 1.0 * (i / 11)}));
-  PropSpec crate;
-  crate.type = PropType::dynamic_body;
-  crate.size = {0.6, 0.6};
-  crate.position = {5.0, 8.0};
-  world.add_prop(crate);
   // The pool starts its threads, and the crate lands on the pile: the first contact Box2D makes for
   // it takes a 16 KiB chunk for its block allocator (b2ContactManager::AddPair, seen in gdb), which
   // with the global method came after the first 10 ticks.

@@ -66,6 +66,23 @@ inline World pile_of_60(const SolverConfig& config) {
   return world;
 }
 
+// `tires` default tires in rows of eleven in a 12 m box, and a 0.6 m crate dropped from `crate_y`
+// onto them.
+inline World pile_under_a_crate(const SolverConfig& config, int tires, double crate_y) {
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-1, -1}, {13, 0}}});
+  world.add_obstacle({{{-1, 0}, {0, 50}}});
+  world.add_obstacle({{{12, 0}, {13, 50}}});
+  for (int i = 0; i < tires; ++i)
+    world.add_tire(tire_at({0.6 + 1.05 * (i % 11) + 0.2 * ((i / 11) % 2), 0.5 + 1.0 * (i / 11)}));
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.size = {0.6, 0.6};
+  crate.position = {5.0, crate_y};
+  world.add_prop(crate);
+  return world;
+}
+
 inline void run(World& world, int ticks, TickInput input = {}) {
   for (int i = 0; i < ticks; ++i) world.step(input);
 }

@@ -57,7 +57,7 @@ void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::s
   reserve_doubling(w_, 2 * max_rows_ * CyclicBlockCholesky::kBlock * segments);
   reserve_doubling(load_, largest_ * CyclicBlockCholesky::kBlock * segments);
   reserve_doubling(correction_, largest_ * CyclicBlockCholesky::kBlock * segments);
-  reserve_doubling(load_begin_, largest_ + 1);
+  reserve_doubling(dof_begin_, largest_ + 1);
   reserve_doubling(entry_begin_, max_rows_ + 1);
   reserve_doubling(entry_column_, max_entries_);
   reserve_doubling(entry_value_, max_entries_);
@@ -307,9 +307,9 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
 // pile and a wall rang at half the substep rate (docs/at-rest.md).
 void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members) {
   constexpr std::size_t B = CyclicBlockCholesky::kBlock;
-  load_begin_.assign(1, 0);
-  for (const std::uint32_t i : members) load_begin_.push_back(load_begin_.back() + B * tires[i].n);
-  load_.assign(load_begin_.back(), 0.0);
+  dof_begin_.assign(1, 0);
+  for (const std::uint32_t i : members) dof_begin_.push_back(dof_begin_.back() + B * tires[i].n);
+  load_.assign(dof_begin_.back(), 0.0);
   for (Row& r : rows_) {
     r.lambda = lambda_in(last_lambda_, lambda_key(r));
     const double older = lambda_in(older_lambda_, lambda_key(r));
@@ -318,11 +318,10 @@ void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const 
     if (r.applied == 0.0) continue;
     for (const bool side_a : {true, false}) {  // Jᵀ λ (island_contacts.h)
       const std::uint32_t tire = side_a ? r.a : r.b;
-      spread(r, side_a, r.applied, load_.data() + load_begin_[per_tire_[tire].slot], tires[tire].n);
+      spread(r, side_a, r.applied, load_.data() + dof_begin_[per_tire_[tire].slot], tires[tire].n);
     }
   }
-  for (std::size_t k = 0; k < members.size(); ++k)
-    solvers_[k]->load_next_solve(load_.data() + load_begin_[k]);
+  for (std::size_t k = 0; k < members.size(); ++k) solvers_[k]->load_next_solve(load_.data() + dof_begin_[k]);
 }
 
 // Each tire's contacts with fixed surfaces (obstacles, static and kinematic props): rows on that
@@ -538,7 +537,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
       row.target = -dot(row.d, x - (xb[row.e0] * (1.0 - row.s) + xb[row.e1] * row.s));
     } else {
       const Vec2 tangent = row.d;
-      if (const Anchor* anchor = anchor_of(key(row.a, row.particle, row.b))) {
+      if (const Anchor* anchor = anchor_of(key(row))) {
         // Stuck since the anchor was laid: back to it, so that what slid in earlier substeps is
         // taken back too (a pile whose frictions each let go a little each substep crept).
         const std::uint32_t a1 = anchor->e0 + 1 == tb.n ? 0 : anchor->e0 + 1;
@@ -672,7 +671,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   // Δx_t = Σ_r K̂₀_t⁻¹ J_{r,t}ᵀ (λ_r − applied_r), part of the substep's linearised step: a tire it
   // turns far asks for the refinement as its own solve would (a blow at 10 m/s at one substep,
   // corrected in one linear step, ended with the pair's energy up by half).
-  correction_.assign(load_begin_.back(), 0.0);
+  correction_.assign(dof_begin_.back(), 0.0);
   for (const Row& r : rows_) {
     const double change = r.lambda - r.applied;
     if (change == 0.0) continue;
@@ -680,14 +679,14 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
       if (!side_a && r.surface) break;
       const std::uint32_t tire = side_a ? r.a : r.b;
       const double* w = w_.data() + (side_a ? r.wa : r.wb);
-      double* dx = correction_.data() + load_begin_[per_tire_[tire].slot];
+      double* dx = correction_.data() + dof_begin_[per_tire_[tire].slot];
       for (std::size_t k = 0; k < CyclicBlockCholesky::kBlock * tires[tire].n; ++k) dx[k] += w[k] * change;
     }
   }
   for (std::size_t k = 0; k < members.size(); ++k) {
     if (!ready_[k]) continue;
     Tire& t = tires[members[k]];
-    const double* dx = correction_.data() + load_begin_[k];
+    const double* dx = correction_.data() + dof_begin_[k];
     t.newton_turn = std::max(t.newton_turn, solvers_[k]->largest_turn(t, dx));
     for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
       const std::size_t d = GlobalSolver::dof(i, t.n);
@@ -695,13 +694,15 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     }
   }
   write_records(tires, ctx);
-  for (std::size_t i = 0; i < rows_.size(); ++i) {
-    const Row& r = rows_[i];
+  // The rows between tires: their multipliers (the next loads, held()), and their anchors. A surface
+  // row starts from what its tire's solve applied, and keeps nothing.
+  for (const Row& r : rows_) {
+    if (r.surface) continue;
     const std::uint64_t k = key(r);
     next_lambda_.push_back({lambda_key(r), r.lambda});
     // A held contact's friction anchor: kept while its friction holds, else laid where the
     // particle is now along the edge.
-    if (r.normal < 0 || r.surface || !(rows_[static_cast<std::size_t>(r.normal)].lambda > 0.0)) continue;
+    if (r.normal < 0 || !(rows_[static_cast<std::size_t>(r.normal)].lambda > 0.0)) continue;
     const Anchor* anchor = anchor_of(k);
     if (anchor != nullptr && r.active) {
       next_anchors_.push_back(*anchor);

@@ -139,8 +139,8 @@ class IslandContacts {
   bool solve_active(double alpha_tilde);
   void write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const;
 
-  static constexpr std::uint32_t kSurfaceKey = 0xffffff;  // a surface row's b in its key
-  static std::uint64_t key(const Row& r) { return key(r.a, r.particle, r.surface ? kSurfaceKey : r.b); }
+  // A row between tires' contact: the particle of tire a against tire b.
+  static std::uint64_t key(const Row& r) { return key(r.a, r.particle, r.b); }
   static std::uint64_t key(std::uint32_t a, std::uint32_t particle, std::uint32_t b) {
     return (std::uint64_t{a} << 40) | (std::uint64_t{particle} << 24) | b;
   }
@@ -184,9 +184,11 @@ class IslandContacts {
   std::vector<std::uint32_t> rows_of_tire_begin_;  // per slot: its rows in rows_of_tire_
   std::vector<std::uint32_t> rows_of_tire_;
   std::vector<double> w_;
-  std::vector<double> load_;  // per slot, from load_begin_: Σ Jᵀ applied over its rows
-  std::vector<std::size_t> load_begin_;
-  std::vector<double> correction_;          // per slot, from load_begin_: the island's Δx of each tire
+  // Per slot, from dof_begin_ (where its tire's unknowns start): Σ Jᵀ applied over its rows, and
+  // the island's Δx of its tire.
+  std::vector<std::size_t> dof_begin_;
+  std::vector<double> load_;
+  std::vector<double> correction_;
   std::vector<std::uint32_t> entry_begin_;  // D by rows: its columns and values
   std::vector<std::uint32_t> entry_column_;
   std::vector<double> entry_value_;
