@@ -31,6 +31,8 @@ constexpr double kTwinCos = 0.9;
 // kMaxIterations.
 constexpr double kTolerance = 1e-10;
 constexpr std::size_t kMaxIterations = 1000;
+// An incomplete Cholesky pivot under this fraction of its row's diagonal is a breakdown.
+constexpr double kPivotFloor = 1e-6;
 
 }  // namespace
 
@@ -63,6 +65,13 @@ void IslandContacts::reserve(std::size_t largest, std::uint32_t segments, std::s
   reserve_doubling(entry_value_, max_entries_);
   for (auto* v : {&x_, &r_, &z_, &p_, &q_, &diagonal_}) reserve_doubling(*v, max_rows_);
   reserve_doubling(live_, max_rows_);
+  reserve_doubling(live_rows_, max_rows_);
+  reserve_doubling(live_slot_, max_rows_);
+  reserve_doubling(ic_value_, max_entries_);
+  reserve_doubling(ic_diagonal_, max_rows_);
+  reserve_doubling(live_begin_, max_rows_ + 1);
+  reserve_doubling(live_column_, max_entries_);
+  reserve_doubling(live_value_, max_entries_);
   reserve_doubling(ready_, largest_);
   for (auto* v : {&older_lambda_, &last_lambda_, &next_lambda_})
     reserve_doubling(*v, 4 * room * kRowsPerTire);
@@ -440,66 +449,141 @@ bool IslandContacts::assemble(const std::vector<Tire>& tires) {
 // multipliers the rows have (the last pass's, or the last substep's). D is symmetric (each tire's
 // K̂⁻¹ is) and positive definite on rows that are not dependent (twins are left out; α̃ > 0 keeps it
 // definite). False when it is not (a direction of no positive curvature) or not finite.
-bool IslandContacts::solve_active(double alpha_tilde) {
-  const std::size_t m = rows_.size();
-  const auto product = [&](const std::vector<double>& v, std::vector<double>& out) {
-    for (std::size_t i = 0; i < m; ++i) {
-      if (!live_[i]) {
-        out[i] = 0.0;
-        continue;
+// The incomplete Cholesky factor of the live rows' D + α̃ on D's own pattern, IC(0) (Saad,
+// Iterative Methods for Sparse Linear Systems, 2nd ed., §10.3.2): L's row j holds, at the entries
+// of columns up to j, L_jk = (A_jk − Σ_{i<k} L_ji L_ki) / L_kk and L_jj = √(A_jj − Σ_{i<j} L_ji²).
+// False when a pivot is not positive (D is not an M-matrix, so IC(0) may break down): then the
+// diagonal preconditions.
+bool IslandContacts::incomplete_cholesky() {
+  const std::size_t n = live_rows_.size();
+  ic_value_.resize(live_value_.size());
+  ic_diagonal_.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::uint32_t begin = live_begin_[j];
+    std::uint32_t k = begin;
+    for (; k < live_begin_[j + 1] && live_column_[k] < j; ++k) {
+      const std::uint32_t c = live_column_[k];
+      // Σ_{i<c} L_ji L_ci over the columns rows j and c share: a merge of the two sorted rows.
+      double sum = live_value_[k];
+      std::uint32_t a = begin, b = live_begin_[c];
+      while (a < k && b < ic_diagonal_[c]) {
+        if (live_column_[a] < live_column_[b]) {
+          ++a;
+        } else if (live_column_[b] < live_column_[a]) {
+          ++b;
+        } else {
+          sum -= ic_value_[a++] * ic_value_[b++];
+        }
       }
-      double sum = alpha_tilde * v[i];
-      for (std::uint32_t k = entry_begin_[i]; k < entry_begin_[i + 1]; ++k)
-        if (live_[entry_column_[k]]) sum += entry_value_[k] * v[entry_column_[k]];
-      out[i] = sum;
+      ic_value_[k] = sum / ic_value_[ic_diagonal_[c]];
+    }
+    if (k == live_begin_[j + 1] || live_column_[k] != j) return false;  // no diagonal entry
+    double pivot = diagonal_[j];
+    for (std::uint32_t i = begin; i < k; ++i) pivot -= ic_value_[i] * ic_value_[i];
+    if (!(pivot > kPivotFloor * diagonal_[j])) return false;
+    ic_diagonal_[j] = k;
+    ic_value_[k] = std::sqrt(pivot);
+  }
+  return true;
+}
+
+bool IslandContacts::solve_active(double alpha_tilde) {
+  // The live rows and their entries, in the order D holds them (so the sums are D's, term by term).
+  const std::size_t m = rows_.size();
+  live_rows_.clear();
+  live_slot_.resize(m);
+  for (std::uint32_t i = 0; i < m; ++i) {
+    if (!live_[i]) continue;
+    live_slot_[i] = static_cast<std::uint32_t>(live_rows_.size());
+    live_rows_.push_back(i);
+  }
+  const std::size_t n = live_rows_.size();
+  live_begin_.assign(1, 0);
+  live_column_.clear();
+  live_value_.clear();
+  diagonal_.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::uint32_t i = live_rows_[j];
+    diagonal_[j] = alpha_tilde;
+    for (std::uint32_t k = entry_begin_[i]; k < entry_begin_[i + 1]; ++k) {
+      const std::uint32_t c = entry_column_[k];
+      if (!live_[c]) continue;
+      if (c == i) diagonal_[j] += entry_value_[k];
+      live_column_.push_back(live_slot_[c]);
+      live_value_.push_back(entry_value_[k]);
+    }
+    live_begin_.push_back(static_cast<std::uint32_t>(live_column_.size()));
+  }
+  const auto product = [&](const std::vector<double>& v, std::vector<double>& out) {
+    for (std::size_t j = 0; j < n; ++j) {
+      double sum = alpha_tilde * v[j];
+      for (std::uint32_t k = live_begin_[j]; k < live_begin_[j + 1]; ++k)
+        sum += live_value_[k] * v[live_column_[k]];
+      out[j] = sum;
     }
   };
-  x_.resize(m);
-  r_.resize(m);
-  z_.resize(m);
-  p_.resize(m);
-  q_.resize(m);
-  diagonal_.resize(m);
-  double rhs2 = 0.0;
-  for (std::size_t i = 0; i < m; ++i) {
-    x_[i] = live_[i] ? rows_[i].lambda : 0.0;
-    diagonal_[i] = alpha_tilde;
-    for (std::uint32_t k = entry_begin_[i]; k < entry_begin_[i + 1]; ++k)
-      if (entry_column_[k] == i) diagonal_[i] += entry_value_[k];
-  }
+  x_.resize(n);
+  r_.resize(n);
+  z_.resize(n);
+  p_.resize(n);
+  q_.resize(n);
+  const bool factored = incomplete_cholesky();
+  if (!factored) ++work_.breakdowns;
+  const auto precondition = [&] {
+    if (!factored) {
+      for (std::size_t j = 0; j < n; ++j) z_[j] = r_[j] / diagonal_[j];
+      return;
+    }
+    // L y = r, then Lᵀ z = y in place.
+    for (std::size_t j = 0; j < n; ++j) {
+      double sum = r_[j];
+      for (std::uint32_t k = live_begin_[j]; k < ic_diagonal_[j]; ++k)
+        sum -= ic_value_[k] * z_[live_column_[k]];
+      z_[j] = sum / ic_value_[ic_diagonal_[j]];
+    }
+    for (std::size_t j = n; j-- > 0;) {
+      z_[j] /= ic_value_[ic_diagonal_[j]];
+      for (std::uint32_t k = live_begin_[j]; k < ic_diagonal_[j]; ++k)
+        z_[live_column_[k]] -= ic_value_[k] * z_[j];
+    }
+  };
+  for (std::size_t j = 0; j < n; ++j) x_[j] = rows_[live_rows_[j]].lambda;
   product(x_, q_);
-  double rz = 0.0;
-  for (std::size_t i = 0; i < m; ++i) {
-    const double c = live_[i] ? rows_[i].rhs : 0.0;
+  double rhs2 = 0.0, rz = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double c = rows_[live_rows_[j]].rhs;
     rhs2 += c * c;
-    r_[i] = c - q_[i];
-    z_[i] = live_[i] ? r_[i] / diagonal_[i] : 0.0;
-    p_[i] = z_[i];
-    rz += r_[i] * z_[i];
+    r_[j] = c - q_[j];
+  }
+  precondition();
+  for (std::size_t j = 0; j < n; ++j) {
+    p_[j] = z_[j];
+    rz += r_[j] * z_[j];
   }
   const double stop = kTolerance * kTolerance * rhs2;
   for (std::size_t it = 0; it < kMaxIterations; ++it) {
     double rr = 0.0;
-    for (std::size_t i = 0; i < m; ++i) rr += r_[i] * r_[i];
+    for (std::size_t j = 0; j < n; ++j) rr += r_[j] * r_[j];
     if (!(rr > stop)) break;
     ++work_.iterations;
     product(p_, q_);
     double pq = 0.0;
-    for (std::size_t i = 0; i < m; ++i) pq += p_[i] * q_[i];
+    for (std::size_t j = 0; j < n; ++j) pq += p_[j] * q_[j];
     if (!(pq > 0.0) || !std::isfinite(pq)) return false;
     const double alpha = rz / pq;
     double rz_next = 0.0;
-    for (std::size_t i = 0; i < m; ++i) {
-      x_[i] += alpha * p_[i];
-      r_[i] -= alpha * q_[i];
-      z_[i] = live_[i] ? r_[i] / diagonal_[i] : 0.0;
-      rz_next += r_[i] * z_[i];
+    for (std::size_t j = 0; j < n; ++j) {
+      x_[j] += alpha * p_[j];
+      r_[j] -= alpha * q_[j];
     }
+    precondition();
+    for (std::size_t j = 0; j < n; ++j) rz_next += r_[j] * z_[j];
     const double beta = rz_next / rz;
     rz = rz_next;
-    for (std::size_t i = 0; i < m; ++i) p_[i] = z_[i] + beta * p_[i];
+    for (std::size_t j = 0; j < n; ++j) p_[j] = z_[j] + beta * p_[j];
   }
-  for (std::size_t i = 0; i < m; ++i) rows_[i].lambda = x_[i];
+  for (std::size_t i = 0; i < m; ++i) rows_[i].lambda = 0.0;
+  for (std::size_t j = 0; j < n; ++j) rows_[live_rows_[j]].lambda = x_[j];
   return true;
 }
 

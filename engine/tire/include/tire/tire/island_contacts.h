@@ -85,6 +85,7 @@ class IslandContacts {
     std::uint64_t rows = 0;        // contact rows
     std::uint64_t passes = 0;      // active-set passes
     std::uint64_t iterations = 0;  // conjugate-gradient iterations
+    std::uint64_t breakdowns = 0;  // passes preconditioned by the diagonal (incomplete Cholesky broke down)
     std::uint64_t overflows = 0;   // islands left to block Gauss–Seidel for want of room
     std::uint64_t failures = 0;    // solves given up (not positive definite, not finite)
     std::uint64_t unsettled = 0;   // solves whose active set still changed when the passes ran out
@@ -136,6 +137,7 @@ class IslandContacts {
   void load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
   bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
   bool assemble(const std::vector<Tire>& tires);
+  bool incomplete_cholesky();
   bool solve_active(double alpha_tilde);
   void write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const;
 
@@ -192,10 +194,18 @@ class IslandContacts {
   std::vector<std::uint32_t> entry_begin_;  // D by rows: its columns and values
   std::vector<std::uint32_t> entry_column_;
   std::vector<double> entry_value_;
-  std::vector<double> x_, r_, z_, p_, q_, diagonal_;
-  std::vector<std::uint8_t> live_;                              // per row: in this pass's system
-  std::vector<std::uint8_t> ready_;                             // per slot: its response is to be had
-  std::vector<std::pair<std::uint64_t, double>> last_lambda_;   // by key × 2 + friction, sorted
+  std::vector<std::uint8_t> live_;  // per row: in this pass's system
+  // The live rows' system, compacted for conjugate gradients: the rows, and D + α̃ on them by rows.
+  std::vector<std::uint32_t> live_rows_;
+  std::vector<std::uint32_t> live_slot_;  // per row: where it sits among the live rows, if live
+  std::vector<std::uint32_t> live_begin_;
+  std::vector<std::uint32_t> live_column_;
+  std::vector<double> live_value_;
+  std::vector<double> x_, r_, z_, p_, q_, diagonal_;           // per live row
+  std::vector<double> ic_value_;                               // L of incomplete_cholesky, on live_'s pattern
+  std::vector<std::uint32_t> ic_diagonal_;                     // per live row: where L_jj is in ic_value_
+  std::vector<std::uint8_t> ready_;                            // per slot: its response is to be had
+  std::vector<std::pair<std::uint64_t, double>> last_lambda_;  // by key × 2 + friction, sorted
   std::vector<std::pair<std::uint64_t, double>> older_lambda_;  // the iteration's before, sorted
   // Where a stuck contact's particle was laid on the other tread: at s along b's edge (e0, e0 + 1).
   struct Anchor {
