@@ -21,8 +21,8 @@
 // points without those frictions (GlobalSolver::respond), with one active set: a normal holds
 // while λ_n ≥ 0, a friction while |λ_t| ≤ μ λ_n; a friction that lets go takes kinetic friction,
 // what stops its slip up to μ λ_n, after the solve. The system is solved by conjugate gradients
-// preconditioned by D's diagonal, warm-started; if the active set still changes after its passes,
-// projected Gauss–Seidel sweeps leave a feasible answer. Each tire moves by
+// preconditioned by D's incomplete Cholesky factor, warm-started; if the active set still changes
+// after its passes, projected Gauss–Seidel sweeps leave a feasible answer. Each tire moves by
 // Δx_t = K̂₀_t⁻¹ J_tᵀ (λ − λ_applied): the solve alone plus this is the island's one linear system.
 //
 // An island of more tires than SolverConfig::island_tires, or with more contacts than the room
