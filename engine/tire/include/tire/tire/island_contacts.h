@@ -25,9 +25,9 @@
 // after its passes, projected Gauss–Seidel sweeps leave a feasible answer. Each tire moves by
 // Δx_t = K̂₀_t⁻¹ J_tᵀ (λ − λ_applied): the solve alone plus this is the island's one linear system.
 //
-// An island of more tires than SolverConfig::island_tires, or with more contacts than the room
-// reserved, keeps block Gauss–Seidel; a contact on a tire whose own system holds a free prop is
-// left out (its response is not symmetric).
+// An island of more tires than SolverConfig::island_tires, with two tires inside each other, or with
+// more contacts than the room reserved, keeps block Gauss–Seidel; a contact on a tire whose own system holds
+// a free prop is left out (its response is not symmetric).
 #pragma once
 
 #include <algorithm>
@@ -57,7 +57,8 @@ class IslandContacts {
   // sorted into islands; an island of at most `largest` tires is solved here, in groups that fit the
   // solvers reserved. An island with a tire near a dynamic prop keeps block Gauss–Seidel: the prop
   // is a body of that tire's own system, whose response is not symmetric, and the island's solve
-  // left its contacts out; under a crate, a pile's tires sank into each other and threw it.
+  // left its contacts out; under a crate, a pile's tires sank into each other and threw it. So
+  // does an island with two tires inside each other (hubs closer than half the larger radius).
   void set_islands(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
                    const std::vector<TirePair>& pairs, std::size_t largest, const RigidWorld& rigid);
   std::size_t groups() const { return group_begin_.empty() ? 0 : group_begin_.size() - 1; }
@@ -174,6 +175,7 @@ class IslandContacts {
     std::uint32_t group = 0;
     std::uint8_t solves = 0;  // whether it is solved here
     bool near_prop = false;   // a root's: a tire of its island is near a dynamic prop
+    bool tangled = false;     // a root's: two tires of its island are inside each other
   };
   std::vector<Member> per_tire_;
   std::vector<std::uint32_t> tires_;
