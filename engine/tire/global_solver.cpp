@@ -769,7 +769,15 @@ bool GlobalSolver::prepare_response() {
 void GlobalSolver::respond(double* r) const {
   const std::size_t size = k0_.size();
   const std::size_t m = response_rows_;
-  k0_.forward(r);  // u = L₀⁻¹ r
+  // u = L₀⁻¹ r, from the first block after block 0 where r is not zero (a contact's load is at
+  // one to three particles: the sweep skips the blocks before it, which stay zero).
+  constexpr std::size_t B = CyclicBlockCholesky::kBlock;
+  const std::size_t blocks = k0_.blocks();
+  std::size_t first = 1;
+  while (first < blocks && r[B * first] == 0.0 && r[B * first + 1] == 0.0 && r[B * first + 2] == 0.0 &&
+         r[B * first + 3] == 0.0)
+    ++first;
+  k0_.forward(&r, 1, first);
   double z[kBaseRows] = {};
   for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(y0_.data() + q * stride_, r, size);
   cholesky_solve(response_s_, m, z);
