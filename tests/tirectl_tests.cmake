@@ -283,6 +283,10 @@ tirectl_test("run holds a spawn flood to budgets.tires and reports it once" 0
   ARGS run ${BAD}/spawn-flood.json --ticks 600 --set budgets.tires=50
   STDOUT "\"budgets_reached\": .[ \n]*{[ \n]*\"budget\": \"budgets.tires\",[ \n]*\"limit\": 50,[ \n]*\"first_tick\": 49,[ \n]*\"dropped\": 552"
   STDERR "^tirectl: warning: budgets.tires \\(50\\) reached at tick 49: what would pass it is dropped\n$")
+# The island solve's work (docs/at-rest.md): three tires stacked, their contacts one problem.
+tirectl_test("run reports the island solve's work" 0
+  ARGS run ${BAD}/island-stack.json --ticks 120
+  STDOUT "\"islands\": {[ \n]*\"solved\": [1-9][0-9]*,[ \n]*\"rows\": [1-9][0-9]*,.*\"overflows\": 0,[ \n]*\"failures\": 0")
 add_test(NAME "tire-soak holds a level's spawn flood to the tires it was given"
   COMMAND tire-soak --level ${BAD}/spawn-flood.json --minutes 0.2 --max-tires 20 --warmup 0)
 set_tests_properties("tire-soak holds a level's spawn flood to the tires it was given" PROPERTIES LABELS unit

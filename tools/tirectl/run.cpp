@@ -106,6 +106,12 @@ nlohmann::ordered_json summary(const tire::LevelSession& session,
     };
     bounds = {{"min", {side(b->min.x), side(b->min.y)}}, {"max", {side(b->max.x), side(b->max.y)}}};
   }
+  // The island solve's work (docs/at-rest.md): all zero when solver.island_tires is 0.
+  const tire::IslandContacts::Work& island = world.island_work();
+  const nlohmann::ordered_json islands = {{"solved", island.solves},       {"rows", island.rows},
+                                          {"passes", island.passes},       {"iterations", island.iterations},
+                                          {"unsettled", island.unsettled}, {"breakdowns", island.breakdowns},
+                                          {"overflows", island.overflows}, {"failures", island.failures}};
   return {{"ticks", world.tick()},
           {"time", world.time()},
           {"status", tire::to_string(session.status())},
@@ -118,6 +124,7 @@ nlohmann::ordered_json summary(const tire::LevelSession& session,
           {"substeps", substeps},
           {"energy", energy.to_json()},
           {"failed_solves", world.failed_solves()},
+          {"islands", islands},
           {"budgets_reached", budgets},
           {"hash", tire::to_hex(session.state_hash())}};
 }
