@@ -465,10 +465,6 @@ bool IslandContacts::assemble(const std::vector<Tire>& tires) {
   return true;
 }
 
-// (D + α̃) λ = c on the live rows, by conjugate gradients preconditioned by the diagonal, from the
-// multipliers the rows have (the last pass's, or the last substep's). D is symmetric (each tire's
-// K̂⁻¹ is) and positive definite on rows that are not dependent (twins are left out; α̃ > 0 keeps it
-// definite). False when it is not (a direction of no positive curvature) or not finite.
 // The incomplete Cholesky factor of the live rows' D + α̃ on D's own pattern, IC(0) (Saad,
 // Iterative Methods for Sparse Linear Systems, 2nd ed., §10.3.2): L's row j holds, at the entries
 // of columns up to j, L_jk = (A_jk − Σ_{i<k} L_ji L_ki) / L_kk and L_jj = √(A_jj − Σ_{i<j} L_ji²).
@@ -507,6 +503,11 @@ bool IslandContacts::incomplete_cholesky() {
   return true;
 }
 
+// (D + α̃) λ = c on the live rows, by conjugate gradients preconditioned by incomplete_cholesky()
+// (by the diagonal when it breaks down), from the multipliers the rows have (the last pass's, or
+// the last substep's). D is symmetric (each tire's K̂⁻¹ is) and positive definite on rows that are
+// not dependent (twins are left out; α̃ > 0 keeps it definite). False when it is not (a direction
+// of no positive curvature) or not finite.
 bool IslandContacts::solve_active(double alpha_tilde) {
   // The live rows and their entries, in the order D holds them (so the sums are D's, term by term).
   const std::size_t m = rows_.size();

@@ -25,9 +25,9 @@
 // after its passes, projected Gauss–Seidel sweeps leave a feasible answer. Each tire moves by
 // Δx_t = K̂₀_t⁻¹ J_tᵀ (λ − λ_applied): the solve alone plus this is the island's one linear system.
 //
-// An island of more tires than SolverConfig::island_tires, with two tires inside each other, or with
-// more contacts than the room reserved, keeps block Gauss–Seidel; a contact on a tire whose own system holds
-// a free prop is left out (its response is not symmetric).
+// An island of more tires than SolverConfig::island_tires, with two tires inside each other, or
+// with more contacts than the room reserved, keeps block Gauss–Seidel; a contact on a tire whose
+// own system holds a free prop is left out (its response is not symmetric).
 #pragma once
 
 #include <algorithm>
