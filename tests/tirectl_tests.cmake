@@ -117,6 +117,9 @@ tirectl_test("bench settles pile-1000-settled for at most --settle ticks" 0
   ARGS bench --scene pile-1000-settled --settle 2 --warmup 0 --steps 1
   STDOUT "\npile-1000-settled,1000,56000,[0-9]+,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n"
   STDERR "pile-1000-settled: settled for 2 ticks, 0 of 1000 tires asleep")
+tirectl_test("bench builds island-pile-60-settled-awake" 0
+  ARGS bench --scene island-pile-60-settled-awake --settle 30 --warmup 0 --steps 1
+  STDOUT "island-pile-60-settled-awake,60,")
 tirectl_test("bench builds crowd-100" 0 ARGS bench --scene crowd-100 --warmup 0 --steps 1
   STDOUT "\ncrowd-100,100,5600,0,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
 tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS bench --scene crowd-10000 --warmup 0 --steps 1

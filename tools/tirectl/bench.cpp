@@ -135,7 +135,7 @@ std::unique_ptr<Steppable> flat_level() {
 enum class Sleep : bool { off, on };
 std::unique_ptr<Steppable> pile(int count, int crates = 0,
                                 tire::SolverMethod method = tire::SolverMethod::gauss_seidel,
-                                int substeps = 8, Sleep sleep = Sleep::off) {
+                                int substeps = 8, Sleep sleep = Sleep::off, int island_tires = 0) {
   // Gauss–Seidel as its old default had it (clamp 1); the global method as the default has it. The
   // method set either way, so that a scene's name holds whatever the default is.
   tire::SolverConfig config = method == tire::SolverMethod::gauss_seidel
@@ -144,6 +144,7 @@ std::unique_ptr<Steppable> pile(int count, int crates = 0,
   config.method = method;
   config.substeps = substeps;
   config.sleep = sleep == Sleep::on;
+  config.island_tires = island_tires;
   auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
   const int per_row = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)) * 1.5)));
   const double width = per_row * 1.05;
@@ -420,6 +421,18 @@ const Scene kScenes[] = {
      "as pile-1000, solved by the global method at 2 substeps x 1 iteration",
      [] { return pile(1000, 0, tire::SolverMethod::global, 2); },
      {}},
+    {"global-pile-60-settled-awake",
+     "60 tires piled in a walled box, global 2 x 1, sleeping off, stepped --settle ticks before the warm-up: "
+     "a pile at rest, its contacts between tires by block Gauss-Seidel",
+     [] { return pile(60, 0, tire::SolverMethod::global, 2); },
+     {},
+     true},
+    {"island-pile-60-settled-awake",
+     "as global-pile-60-settled-awake with \"solver\": {\"island_tires\": 64}: the pile's contacts between "
+     "tires solved as one problem (docs/at-rest.md)",
+     [] { return pile(60, 0, tire::SolverMethod::global, 2, Sleep::off, 64); },
+     {},
+     true},
     {"crowd-100",
      "100 tires dropped into a pit again every 4 s, beside empty shelves, Gauss-Seidel 8 x 1",
      [] { return crowd(0, tire::SolverConfig::gauss_seidel_8x1()); },
