@@ -506,8 +506,9 @@ bool IslandContacts::incomplete_cholesky() {
 // (D + α̃) λ = c on the live rows, by conjugate gradients preconditioned by incomplete_cholesky()
 // (by the diagonal when it breaks down), from the multipliers the rows have (the last pass's, or
 // the last substep's). D is symmetric (each tire's K̂⁻¹ is) and positive definite on rows that are
-// not dependent (twins are left out; α̃ > 0 keeps it definite). False when it is not (a direction
-// of no positive curvature) or not finite.
+// not dependent (twins are left out; α̃ > 0 keeps it definite). The rows not live are left with no
+// multiplier. False when it is not (a direction of no positive curvature) or not finite, the
+// multipliers untouched.
 bool IslandContacts::solve_active(double alpha_tilde) {
   // The live rows and their entries, in the order D holds them (so the sums are D's, term by term).
   const std::size_t m = rows_.size();
@@ -703,7 +704,6 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     bool changed = false;
     for (std::size_t r = 0; r < rows_.size(); ++r) {
       Row& row = rows_[r];
-      if (!live_[r]) row.lambda = 0.0;
       if (row.normal < 0) {
         if (row.active && row.lambda < 0.0) {  // it would pull: let go
           row.active = false;
@@ -730,9 +730,6 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   if (!solved) {  // the tires stay as their solves left them
     ++work_.failures;
     for (Row& r : rows_) r.lambda = r.applied;
-  } else {
-    for (std::size_t r = 0; r < rows_.size(); ++r)
-      if (!live_[r]) rows_[r].lambda = 0.0;
   }
   // When the passes ran out with the active set still changing, the multipliers are made feasible
   // (λ_n ≥ 0, |λ_t| ≤ μ λ_n) and polished by projected Gauss–Seidel sweeps on (D + α̃) λ = rhs over
