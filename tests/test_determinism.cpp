@@ -76,6 +76,35 @@ TEST_CASE("results do not depend on the number of threads", "[unit][determinism]
   }
 }
 
+TEST_CASE("the island solve gives the same result on any thread count", "[unit][determinism][island]") {
+  // Islands of tires solved as one problem (island_contacts.h): the tires' solves, their responses
+  // and their moves run on the threads, the contact problem between them on the caller.
+  SolverConfig config;
+  config.method = SolverMethod::global;
+  config.island_tires = 128;
+  auto build = [config](unsigned threads) {
+    auto world = std::make_unique<World>(config, Vec2{0, -9.81});
+    world->set_threads(threads);
+    world->add_obstacle({{{-1, -1}, {9, 0}}});
+    world->add_obstacle({{{-1, 0}, {0, 50}}});
+    world->add_obstacle({{{8, 0}, {9, 50}}});
+    for (int i = 0; i < 40; ++i)
+      world->add_tire(tire_at({0.6 + 1.05 * (i % 7) + 0.2 * ((i / 7) % 2), 0.5 + 1.0 * (i / 7)}));
+    return world;
+  };
+  auto one = build(1), two = build(2), five = build(5);
+  for (int tick = 0; tick < 60; ++tick) {
+    one->step({1.0, tick == 40});
+    two->step({1.0, tick == 40});
+    five->step({1.0, tick == 40});
+    REQUIRE(one->state_hash() == two->state_hash());
+    REQUIRE(one->state_hash() == five->state_hash());
+  }
+  CHECK(two->threads_in_use() == 2);
+  CHECK(one->island_work().solves > 50);  // the islands were solved, not left to Gauss–Seidel
+  CHECK(one->island_work().rows == two->island_work().rows);
+}
+
 TEST_CASE("a tire with more neighbours than colours gives the same result on any thread count",
           "[unit][determinism]") {
   // Tire pairs are solved a colour at a time, a colour's pairs in parallel: no two of them may share

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tire/math/reserve_doubling.h"
+#include "tire/math/worker_pool.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/xpbd/contact.h"
@@ -35,6 +36,15 @@ constexpr double kTolerance = 1e-10;
 constexpr std::size_t kMaxIterations = 1000;
 // An incomplete Cholesky pivot under this fraction of its row's diagonal is a breakdown.
 constexpr double kPivotFloor = 1e-6;
+
+// fn(begin, end) over [0, n): on the pool's threads if there is one.
+template <typename F>
+void for_range(WorkerPool* pool, std::size_t n, F&& fn) {
+  if (pool != nullptr)
+    pool->parallel_for(n, fn);
+  else
+    fn(std::size_t{0}, n);
+}
 
 }  // namespace
 
@@ -609,11 +619,14 @@ bool IslandContacts::solve_active(double alpha_tilde) {
   return true;
 }
 
-void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx) {
+void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx,
+                           WorkerPool* pool) {
   if (overflow_[group] || rows_.empty()) return;
   const std::span<const std::uint32_t> members = group_tires(group);
   ready_.resize(members.size());
-  for (std::size_t k = 0; k < members.size(); ++k) ready_[k] = solvers_[k]->prepare_response() ? 1 : 0;
+  for_range(pool, members.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) ready_[k] = solvers_[k]->prepare_response() ? 1 : 0;
+  });
   // Each candidate where the tires are now: a normal row's direction and gap, a friction row's slip
   // over the substep. A row on a tire whose response is not to be had (a free prop in its system)
   // is left out, with its friction.
@@ -671,16 +684,18 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
     if (!r.surface) total += CyclicBlockCholesky::kBlock * tires[r.b].n;
   }
   w_.assign(total, 0.0);
-  for (Row& r : rows_) {
-    const std::uint32_t na = tires[r.a].n, nb = tires[r.b].n;
-    double* wa = w_.data() + r.wa;
-    spread(r, true, 1.0, wa, na);
-    solvers_[per_tire_[r.a].slot]->respond(wa);
-    if (r.surface) continue;
-    double* wb = w_.data() + r.wb;
-    spread(r, false, 1.0, wb, nb);
-    solvers_[per_tire_[r.b].slot]->respond(wb);
-  }
+  for_range(pool, rows_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const Row& r = rows_[k];
+      double* wa = w_.data() + r.wa;
+      spread(r, true, 1.0, wa, tires[r.a].n);
+      solvers_[per_tire_[r.a].slot]->respond(wa);
+      if (r.surface) continue;
+      double* wb = w_.data() + r.wb;
+      spread(r, false, 1.0, wb, tires[r.b].n);
+      solvers_[per_tire_[r.b].slot]->respond(wb);
+    }
+  });
   if (!assemble(tires)) {  // more entries than reserved: the tires stay as their solves left them
     ++work_.overflows;
     return;
@@ -773,28 +788,28 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   // Δx_t = Σ_r K̂₀_t⁻¹ J_{r,t}ᵀ (λ_r − applied_r), part of the substep's linearised step: a tire it
   // turns far asks for the refinement as its own solve would (a blow at 10 m/s at one substep,
   // corrected in one linear step, ended with the pair's energy up by half).
+  // Per tire, its rows in row order (rows_of_tire_).
   correction_.assign(dof_begin_.back(), 0.0);
-  for (const Row& r : rows_) {
-    const double change = r.lambda - r.applied;
-    if (change == 0.0) continue;
-    for (const bool side_a : {true, false}) {
-      if (!side_a && r.surface) break;
-      const std::uint32_t tire = side_a ? r.a : r.b;
-      const double* w = w_.data() + (side_a ? r.wa : r.wb);
-      double* dx = correction_.data() + dof_begin_[per_tire_[tire].slot];
-      for (std::size_t k = 0; k < CyclicBlockCholesky::kBlock * tires[tire].n; ++k) dx[k] += w[k] * change;
+  for_range(pool, members.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if (!ready_[k]) continue;
+      const std::uint32_t tire = members[k];
+      Tire& t = tires[tire];
+      double* dx = correction_.data() + dof_begin_[k];
+      for (std::uint32_t j = rows_of_tire_begin_[k]; j < rows_of_tire_begin_[k + 1]; ++j) {
+        const Row& r = rows_[rows_of_tire_[j]];
+        const double change = r.lambda - r.applied;
+        if (change == 0.0) continue;
+        const double* w = w_.data() + (r.a == tire ? r.wa : r.wb);
+        for (std::size_t i = 0; i < CyclicBlockCholesky::kBlock * t.n; ++i) dx[i] += w[i] * change;
+      }
+      t.newton_turn = std::max(t.newton_turn, solvers_[k]->largest_turn(t, dx));
+      for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
+        const std::size_t d = GlobalSolver::dof(i, t.n);
+        t.particles.x[i] += Vec2{dx[d], dx[d + 1]};
+      }
     }
-  }
-  for (std::size_t k = 0; k < members.size(); ++k) {
-    if (!ready_[k]) continue;
-    Tire& t = tires[members[k]];
-    const double* dx = correction_.data() + dof_begin_[k];
-    t.newton_turn = std::max(t.newton_turn, solvers_[k]->largest_turn(t, dx));
-    for (std::uint32_t i = 0; i < 2 * t.n; ++i) {
-      const std::size_t d = GlobalSolver::dof(i, t.n);
-      t.particles.x[i] += Vec2{dx[d], dx[d + 1]};
-    }
-  }
+  });
   write_records(tires, ctx);
   // The rows between tires: their multipliers (the next loads, held()), and their anchors. A surface
   // row starts from what its tire's solve applied, and keeps nothing.

@@ -529,7 +529,8 @@ void World::solve_positions(const SubstepContext& ctx, int iteration) {
 
 // The islands of tires in contact that are solved as one problem (island_contacts.h), a group at a
 // time: the group's contacts found where its tires are predicted, each tire solved alone (in
-// parallel) by the solver that keeps its system, then the contacts between them together.
+// parallel) by the solver that keeps its system, then the contacts between them together (its
+// per-tire parts in parallel too).
 void World::solve_islands(const SubstepContext& ctx, bool last) {
   SubstepContext alone = ctx;
   alone.neighbours = nullptr;
@@ -541,7 +542,7 @@ void World::solve_islands(const SubstepContext& ctx, bool last) {
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) solve_iteration(tires_[tires[k]], alone, last);
     });
-    island_.solve(tires_, g, ctx);
+    island_.solve(tires_, g, ctx, parallel_pool());
   }
 }
 
@@ -680,14 +681,19 @@ void World::sweep_tires(F&& fn) {
   });
 }
 
+WorkerPool* World::parallel_pool() {
+  if (threads_ <= 1 || tires_.size() < kParallelMinTires) return nullptr;
+  if (!pool_) pool_ = std::make_unique<WorkerPool>(threads_);
+  return pool_.get();
+}
+
 template <typename F>
 void World::for_tires(std::size_t n, F&& fn) {
-  if (threads_ > 1 && tires_.size() >= kParallelMinTires && n >= kParallelMinItems) {
-    if (!pool_) pool_ = std::make_unique<WorkerPool>(threads_);
-    pool_->parallel_for(n, fn);
-  } else {
+  WorkerPool* pool = n >= kParallelMinItems ? parallel_pool() : nullptr;
+  if (pool != nullptr)
+    pool->parallel_for(n, fn);
+  else
     fn(std::size_t{0}, n);
-  }
 }
 
 void World::color_pairs() {

@@ -46,6 +46,7 @@ namespace tire {
 
 struct SubstepContext;
 class RigidWorld;
+class WorkerPool;
 
 class IslandContacts {
  public:
@@ -73,12 +74,14 @@ class IslandContacts {
   bool any() const { return !tires_.empty(); }
 
   // Each iteration, for each group: find() before its tires are solved (the candidates, where the
-  // tires are predicted); each tire solved alone by solver_of(tire), with no neighbours; then solve().
+  // tires are predicted); each tire solved alone by solver_of(tire), with no neighbours; then solve(),
+  // whose per-tire parts (the tires' responses, their moves) run on `pool` if one is given: each
+  // sums what it sums in the same order on any thread, so the bits do not depend on it.
   void find(const std::vector<Tire>& tires, std::size_t group);
   GlobalSolver& solver_of(const Tire& t) {
     return *solvers_[per_tire_[static_cast<std::size_t>(&t - first_)].slot];
   }
-  void solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx);
+  void solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx, WorkerPool* pool);
 
   // Counts since the start, for tests and `tirectl bench`.
   struct Work {

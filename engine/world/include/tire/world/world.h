@@ -195,6 +195,8 @@ class World {
   // fn(begin, end) over tire indices [0, n): in parallel when the scene is big enough.
   template <typename F>
   void for_tires(std::size_t n, F&& fn);
+  // The pool for_tires runs on, made on first need; null when this scene runs on one thread.
+  WorkerPool* parallel_pool();
   // fn(tire) for every tire, through for_tires, the next tire's data prefetched meanwhile.
   template <typename F>
   void sweep_tires(F&& fn);
