@@ -11,6 +11,41 @@ namespace {
 TickInput scripted_input(int tick) {
   return {tick < 100 ? 1.0 : tick < 200 ? -0.5 : 0.0, tick == 80 || tick == 150};
 }
+
+// The same scene built for 1, 2 and 5 threads (five on this machine's two cores: some are put aside
+// mid-step and others take their chunks), stepped side by side with one hash required every tick;
+// the worlds, for the caller's own checks.
+struct OnThreads {
+  std::unique_ptr<World> one, two, five;
+};
+template <class Build, class Input>
+OnThreads step_on_1_2_5_threads(const Build& build, int ticks, const Input& input) {
+  OnThreads w{build(1), build(2), build(5)};
+  for (int tick = 0; tick < ticks; ++tick) {
+    w.one->step(input(tick));
+    w.two->step(input(tick));
+    w.five->step(input(tick));
+    REQUIRE(w.one->state_hash() == w.two->state_hash());
+    REQUIRE(w.one->state_hash() == w.five->state_hash());
+  }
+  return w;
+}
+TickInput drive_and_jump_at_40(int tick) { return {1.0, tick == 40}; }
+TickInput no_input(int) { return {}; }
+
+// `count` tires in rows of `columns`, every other row shifted, in a box one metre wider.
+std::unique_ptr<World> boxed_pile(const SolverConfig& config, unsigned threads, int count, int columns) {
+  auto world = std::make_unique<World>(config, Vec2{0, -9.81});
+  world->set_threads(threads);
+  const double width = columns + 1.0;
+  world->add_obstacle({{{-1, -1}, {width + 1, 0}}});
+  world->add_obstacle({{{-1, 0}, {0, 50}}});
+  world->add_obstacle({{{width, 0}, {width + 1, 50}}});
+  for (int i = 0; i < count; ++i)
+    world->add_tire(
+        tire_at({0.6 + 1.05 * (i % columns) + 0.2 * ((i / columns) % 2), 0.5 + 1.0 * (i / columns)}));
+  return world;
+}
 }  // namespace
 
 TEST_CASE("the same input twice gives the same hash at every tick", "[unit][determinism]") {
@@ -41,21 +76,14 @@ TEST_CASE("a different input gives a different hash", "[unit][determinism]") {
 
 TEST_CASE("results do not depend on the number of threads", "[unit][determinism]") {
   // A pile big enough to run in parallel, with crates for the deferred prop impulses, and without
-  // (where each substep's velocity pass shares a sweep with the next one's prediction). Five
-  // threads on this machine's two cores: some are put aside mid-step and others take their chunks.
+  // (where each substep's velocity pass shares a sweep with the next one's prediction).
   const bool crates = GENERATE(true, false);
   CAPTURE(crates);
   SolverConfig config;
   config.method = GENERATE(SolverMethod::gauss_seidel, SolverMethod::global);
   CAPTURE(method_name(config.method));
   auto build = [crates, config](unsigned threads) {
-    auto world = std::make_unique<World>(config, Vec2{0, -9.81});
-    world->set_threads(threads);
-    world->add_obstacle({{{-1, -1}, {16, 0}}});
-    world->add_obstacle({{{-1, 0}, {0, 50}}});
-    world->add_obstacle({{{15, 0}, {16, 50}}});
-    for (int i = 0; i < 100; ++i)
-      world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
+    auto world = boxed_pile(config, threads, 100, 14);
     for (int i = 0; i < (crates ? 6 : 0); ++i) {
       PropSpec crate;
       crate.type = PropType::dynamic_body;
@@ -66,14 +94,7 @@ TEST_CASE("results do not depend on the number of threads", "[unit][determinism]
     }
     return world;
   };
-  auto one = build(1), two = build(2), five = build(5);
-  for (int tick = 0; tick < 90; ++tick) {
-    one->step({1.0, tick == 40});
-    two->step({1.0, tick == 40});
-    five->step({1.0, tick == 40});
-    REQUIRE(one->state_hash() == two->state_hash());
-    REQUIRE(one->state_hash() == five->state_hash());
-  }
+  step_on_1_2_5_threads(build, 90, drive_and_jump_at_40);
 }
 
 TEST_CASE("the island solve gives the same result on any thread count", "[unit][determinism][island]") {
@@ -82,27 +103,11 @@ TEST_CASE("the island solve gives the same result on any thread count", "[unit][
   SolverConfig config;
   config.method = SolverMethod::global;
   config.island_tires = 128;
-  auto build = [config](unsigned threads) {
-    auto world = std::make_unique<World>(config, Vec2{0, -9.81});
-    world->set_threads(threads);
-    world->add_obstacle({{{-1, -1}, {9, 0}}});
-    world->add_obstacle({{{-1, 0}, {0, 50}}});
-    world->add_obstacle({{{8, 0}, {9, 50}}});
-    for (int i = 0; i < 40; ++i)
-      world->add_tire(tire_at({0.6 + 1.05 * (i % 7) + 0.2 * ((i / 7) % 2), 0.5 + 1.0 * (i / 7)}));
-    return world;
-  };
-  auto one = build(1), two = build(2), five = build(5);
-  for (int tick = 0; tick < 60; ++tick) {
-    one->step({1.0, tick == 40});
-    two->step({1.0, tick == 40});
-    five->step({1.0, tick == 40});
-    REQUIRE(one->state_hash() == two->state_hash());
-    REQUIRE(one->state_hash() == five->state_hash());
-  }
-  CHECK(two->threads_in_use() == 2);
-  CHECK(one->island_work().solves > 50);  // the islands were solved, not left to Gauss–Seidel
-  CHECK(one->island_work().rows == two->island_work().rows);
+  auto build = [config](unsigned threads) { return boxed_pile(config, threads, 40, 7); };
+  const OnThreads w = step_on_1_2_5_threads(build, 60, drive_and_jump_at_40);
+  CHECK(w.two->threads_in_use() == 2);
+  CHECK(w.one->island_work().solves > 50);  // the islands were solved, not left to Gauss–Seidel
+  CHECK(w.one->island_work().rows == w.two->island_work().rows);
 }
 
 TEST_CASE("a tire with more neighbours than colours gives the same result on any thread count",
@@ -113,24 +118,11 @@ TEST_CASE("a tire with more neighbours than colours gives the same result on any
   // 3 km/s has its broad-phase bounds grown over all 100 others in its first tick (its speed is
   // clamped in the substeps, not in the broad phase): 36 of its pairs overflow.
   auto build = [](unsigned threads) {
-    auto world = std::make_unique<World>(SolverConfig{}, Vec2{0, -9.81});
-    world->set_threads(threads);
-    world->add_obstacle({{{-1, -1}, {16, 0}}});
-    world->add_obstacle({{{-1, 0}, {0, 50}}});
-    world->add_obstacle({{{15, 0}, {16, 50}}});
-    for (int i = 0; i < 100; ++i)
-      world->add_tire(tire_at({0.6 + 1.05 * (i % 14) + 0.2 * ((i / 14) % 2), 0.5 + 1.0 * (i / 14)}));
+    auto world = boxed_pile(SolverConfig{}, threads, 100, 14);
     TireSpec fast = tire_at({7.3, 8.2});
     fast.velocity = {0.0, -3000.0};
     world->add_tire(fast);
     return world;
   };
-  auto one = build(1), two = build(2), five = build(5);
-  for (int tick = 0; tick < 30; ++tick) {
-    one->step({});
-    two->step({});
-    five->step({});
-    REQUIRE(one->state_hash() == two->state_hash());
-    REQUIRE(one->state_hash() == five->state_hash());
-  }
+  step_on_1_2_5_threads(build, 30, no_input);
 }

@@ -125,8 +125,8 @@ struct SolverConfig {
   // response: a pile does not creep. Larger islands are solved tire by tire against their
   // neighbours (block Gauss–Seidel, tire_neighbours.h), which creeps; 0 solves every island so.
   // An island with a tire near a dynamic prop is solved so too. 0 (the default) for now: a pile
-  // awake costs 3.5 to 3.7 times what block Gauss–Seidel costs, and switching an island between the
-  // two shakes it (docs/at-rest.md).
+  // awake costs more than twice what block Gauss–Seidel costs, its active set does not settle on
+  // light, nearly rigid tires, and switching an island between the two shakes it (docs/at-rest.md).
   int island_tires = 0;
 
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
