@@ -787,8 +787,8 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   }
   // Δx_t = Σ_r K̂₀_t⁻¹ J_{r,t}ᵀ (λ_r − applied_r), part of the substep's linearised step: a tire it
   // turns far asks for the refinement as its own solve would (a blow at 10 m/s at one substep,
-  // corrected in one linear step, ended with the pair's energy up by half).
-  // Per tire, its rows in row order (rows_of_tire_).
+  // corrected in one linear step, ended with the pair's energy up by half). Each tire sums over its
+  // own rows in row order (rows_of_tire_), so its sum is the same on any thread.
   correction_.assign(dof_begin_.back(), 0.0);
   for_range(pool, members.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
