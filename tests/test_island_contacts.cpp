@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "tire/tire/island_contacts.h"
-#include "tire/tire/tire_solver.h"
 #include "tire/world/energy.h"
+#include "tire/world/overlap.h"
 #include "tire_fixtures.h"
 
 using namespace tire;
@@ -123,20 +123,7 @@ TEST_CASE("island: a tire resting on another stays out of it, at rest", "[unit][
   REQUIRE(top.centroid().y > 1.3);
   const Vec2 at3 = top.centroid();
   run(world, 120);
-  // The deepest tread particle of either inside the other's tread.
-  double deepest = 0.0;
-  for (const auto& [a, b] : {std::pair{0, 1}, std::pair{1, 0}}) {
-    const Tire& ta = world.tires()[static_cast<std::size_t>(a)];
-    const Tire& tb = world.tires()[static_cast<std::size_t>(b)];
-    const Vec2* xb = tb.particles.x.data();
-    for (std::uint32_t i = 0; i < ta.n; ++i) {
-      const Vec2 x = ta.particles.x[i];
-      const std::uint32_t k = tread_edge_towards(xb, tb.n, tb.centroid(), x - tb.centroid());
-      const Vec2 e = xb[(k + 1) % tb.n] - xb[k];
-      const Vec2 normal = Vec2{e.y, -e.x} * (1.0 / length(e));
-      deepest = std::max(deepest, -dot(normal, x - xb[k]));
-    }
-  }
+  const double deepest = deepest_tire_overlap(world).depth;
   INFO("deepest " << deepest * 1e3 << " mm; the top tire moved " << length(top.centroid() - at3) * 1e3
                   << " mm in 2 s");
   // The touch is seen from both tires, as nearly dependent rows of which one is kept

@@ -290,6 +290,11 @@ tirectl_test("run holds a spawn flood to budgets.tires and reports it once" 0
 tirectl_test("run reports the island solve's work" 0
   ARGS run ${BAD}/island-stack.json --ticks 120
   STDOUT "\"islands\": {[ \n]*\"solved\": [1-9][0-9]*,[ \n]*\"rows\": [1-9][0-9]*,.*\"overflows\": 0,[ \n]*\"failures\": 0")
+# How far tires are inside each other at the end (tire/world/overlap.h): the stack's middle tire,
+# carrying the top one, is pressed a little into one of its neighbours.
+tirectl_test("run reports the deepest overlap between tires" 0
+  ARGS run ${BAD}/island-stack.json --ticks 120
+  STDOUT "\"overlap\": {[ \n]*\"deepest\": [0-9][.0-9e-]*,[ \n]*\"tire\": 1,[ \n]*\"inside\": [02][ \n]*}")
 add_test(NAME "tire-soak holds a level's spawn flood to the tires it was given"
   COMMAND tire-soak --level ${BAD}/spawn-flood.json --minutes 0.2 --max-tires 20 --warmup 0)
 set_tests_properties("tire-soak holds a level's spawn flood to the tires it was given" PROPERTIES LABELS unit

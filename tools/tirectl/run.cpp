@@ -13,6 +13,7 @@
 #include "tire/math/state_hash.h"
 #include "tire/replay/replay.h"
 #include "tire/world/energy.h"
+#include "tire/world/overlap.h"
 #include "tire/world/world.h"
 
 namespace tirectl {
@@ -112,6 +113,13 @@ nlohmann::ordered_json summary(const tire::LevelSession& session,
                                           {"passes", island.passes},       {"iterations", island.iterations},
                                           {"unsettled", island.unsettled}, {"breakdowns", island.breakdowns},
                                           {"overflows", island.overflows}, {"failures", island.failures}};
+  // How far tires are inside each other at the end (tire/world/overlap.h).
+  const tire::TireOverlap deepest = tire::deepest_tire_overlap(world);
+  const nlohmann::ordered_json overlap =
+      deepest.depth > 0.0 ? nlohmann::ordered_json{{"deepest", deepest.depth},
+                                                   {"tire", deepest.tire},
+                                                   {"inside", deepest.inside}}
+                          : nlohmann::ordered_json{{"deepest", 0.0}, {"tire", nullptr}, {"inside", nullptr}};
   return {{"ticks", world.tick()},
           {"time", world.time()},
           {"status", tire::to_string(session.status())},
@@ -123,6 +131,7 @@ nlohmann::ordered_json summary(const tire::LevelSession& session,
           {"props", props},
           {"substeps", substeps},
           {"energy", energy.to_json()},
+          {"overlap", overlap},
           {"failed_solves", world.failed_solves()},
           {"islands", islands},
           {"budgets_reached", budgets},
