@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <utility>
 
 #include "tire/tire/island_contacts.h"
 #include "tire/world/energy.h"

@@ -115,11 +115,11 @@ nlohmann::ordered_json summary(const tire::LevelSession& session,
                                           {"overflows", island.overflows}, {"failures", island.failures}};
   // How far tires are inside each other at the end (tire/world/overlap.h).
   const tire::TireOverlap deepest = tire::deepest_tire_overlap(world);
-  const nlohmann::ordered_json overlap =
-      deepest.depth > 0.0 ? nlohmann::ordered_json{{"deepest", deepest.depth},
-                                                   {"tire", deepest.tire},
-                                                   {"inside", deepest.inside}}
-                          : nlohmann::ordered_json{{"deepest", 0.0}, {"tire", nullptr}, {"inside", nullptr}};
+  nlohmann::ordered_json overlap = {{"deepest", deepest.depth}, {"tire", nullptr}, {"inside", nullptr}};
+  if (deepest.depth > 0.0) {
+    overlap["tire"] = deepest.tire;
+    overlap["inside"] = deepest.inside;
+  }
   return {{"ticks", world.tick()},
           {"time", world.time()},
           {"status", tire::to_string(session.status())},
