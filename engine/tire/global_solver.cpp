@@ -248,6 +248,16 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
   if (prop >= 0) {
     const Prop& body = ctx.rigid->props()[static_cast<std::size_t>(prop)];
     c.fixed = !body.is_dynamic();
+    // On a dynamic prop, stuck since an earlier substep: back to where it stuck, as the prop will
+    // stand at the substep's end, so that what slid while the friction held is taken back too. A
+    // fixed surface's motion is given, and taking back each substep's slip leaves the particle no
+    // tangential velocity; a dynamic prop's is solved, and the solve may meet the slip by turning
+    // the prop where Box2D, handed the contacts' impulses, keeps its drift: a crate lying on a tire
+    // slid over it at a steady 0.03 mm/s with both its contacts stuck (docs/at-rest.md).
+    if (body.is_dynamic() && t.anchor_prop[particle] == prop) {
+      c.anchored = true;
+      c.anchor = body.pose_at(ctx.time + ctx.h).to_world(t.friction_anchor[particle]);
+    }
     if (body.is_dynamic() && body.support_count == 0 && body.inverse_inertia > 0.0) {
       c.body = body_of(static_cast<std::uint32_t>(prop), body);
       c.arm = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
@@ -454,7 +464,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     add_row(c, c.normal, c.stiffness_n, c.stiffness_n * (c.plane - dot(c.normal, x)));
     if (!c.friction_active) continue;
     const Vec2 tangent = perp(c.normal);
-    const double target = -dot(tangent, x - p.x_prev[c.particle] - c.surface_displacement);
+    const double target = -dot(tangent, slip(c, x, p));
     if (c.body < 0 && rows_.size() < base_rows_ + kMaxFrictionRows) {
       c.row_t = add_contact_row(t, c, tangent, target, c.stiffness_t);
     } else {
@@ -540,8 +550,7 @@ bool GlobalSolver::solve_changes(const Tire& t) {
       if (c.row_n < 0) return false;
     }
     if (friction && (c.row_t < 0 || !rows_[static_cast<std::size_t>(c.row_t)].live)) {
-      c.row_t = add_contact_row(
-          t, c, tangent, -dot(tangent, x - p.x_prev[c.particle] - c.surface_displacement), c.stiffness_t);
+      c.row_t = add_contact_row(t, c, tangent, -dot(tangent, slip(c, x, p)), c.stiffness_t);
       if (c.row_t < 0) return false;
     } else if (!friction && c.row_t >= 0) {
       rows_[static_cast<std::size_t>(c.row_t)].live = false;
@@ -629,9 +638,7 @@ bool GlobalSolver::solve_system(const Tire& t) {
     }
     c.mu_n = c.normal_in_k ? c.stiffness_n * (c.plane + moved_n - dot(c.normal, x)) : row_mu(c.row_n);
     if (!c.friction_active) continue;
-    c.mu_t = c.friction_in_k
-                 ? -c.stiffness_t * (dot(tangent, x - p.x_prev[i] - c.surface_displacement) - moved_t)
-                 : row_mu(c.row_t);
+    c.mu_t = c.friction_in_k ? -c.stiffness_t * (dot(tangent, slip(c, x, p)) - moved_t) : row_mu(c.row_t);
   }
   return true;
 }
@@ -856,6 +863,15 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
       if (c.normal.y >= g) t.on_tire[c.particle] = 1;  // resting on the neighbour
     }
     owe(rec, c.particle, rec.lambda_n - before.lambda_n, rec.lambda_t - before.lambda_t);
+    // A friction on a prop that holds keeps its anchor, or lays one where the particle is now.
+    std::int32_t& anchored = t.anchor_prop[c.particle];
+    const Prop* body = c.prop >= 0 ? &ctx.rigid->props()[static_cast<std::size_t>(c.prop)] : nullptr;
+    if (!body || !body->is_dynamic() || !c.friction_active) {
+      anchored = -1;
+    } else if (anchored != c.prop) {
+      t.friction_anchor[c.particle] = body->pose_at(t_end).to_local(t.particles.x[c.particle]);
+      anchored = c.prop;
+    }
   }
 }
 

@@ -794,6 +794,12 @@ void World::hash_into(StateHash& h) const {
     h.add(t.late_push.velocity);
     h.add(t.late_push.spin);
     h.add(t.late_push.centre);
+    for (std::uint32_t i = 0; i < t.particle_count(); ++i) {  // friction anchors on props, where any
+      if (t.anchor_prop[i] < 0) continue;
+      h.add(i);
+      h.add(t.anchor_prop[i]);
+      h.add(t.friction_anchor[i]);
+    }
     if (config_.sleep) {  // the sleep state, where sleeping is on (sleep_islands.h)
       h.add(t.asleep);
       h.add(t.still_time);

@@ -125,6 +125,10 @@ class GlobalSolver {
     double plane = 0.0;         // C(x) = normal·x − plane
     Vec2 surface_displacement;  // of the surface point over the substep (moving props)
     Vec2 surface_velocity;
+    // On a dynamic prop, stuck since an earlier substep: where it stuck, as the prop will stand at
+    // the substep's end (Tire::friction_anchor); static friction holds the particle there.
+    bool anchored = false;
+    Vec2 anchor;
     std::int32_t prop = -1;  // the prop, or −1 for an obstacle
     std::int32_t body = -1;  // the prop's slot in bodies_ when it is in the system, else −1
     Vec2 arm;                // from the prop's centre to the particle (a body's contacts)
@@ -146,6 +150,12 @@ class GlobalSolver {
     double mu_n = 0.0;  // multipliers from the last pass (kg·m: force × h²)
     double mu_t = 0.0;
   };
+
+  // What static friction takes back of a contact's particle at x: its slip over the substep against
+  // the surface's motion, or since it stuck when it is anchored.
+  static Vec2 slip(const Contact& c, Vec2 x, const Particles& p) {
+    return c.anchored ? x - c.anchor : x - p.x_prev[c.particle] - c.surface_displacement;
+  }
 
   // A free dynamic prop in the system: its three unknowns q = (u.x, u.y, θ).
   struct Body {

@@ -220,6 +220,10 @@ struct Tire {
   Vec2 rim_hub;              // the same for the rim, for the tread–rim contact
   double rim_reach = 0.0;
   ArrayView<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
+  // Per particle: where its static friction on a prop stuck, in the prop's frame, while it holds
+  // (GlobalSolver: the friction takes the particle back to it), and the prop, or −1.
+  ArrayView<Vec2> friction_anchor;
+  ArrayView<std::int32_t> anchor_prop;
   TireControl control;
   Landing landing;
   TickContacts tick_contacts;  // the last tick's, for listeners (sound); reset by begin_tick
