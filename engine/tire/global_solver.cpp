@@ -14,6 +14,12 @@ namespace tire {
 
 namespace {
 
+// A friction anchor on a prop further than this (m) from where the substep's slip alone would hold
+// the particle is laid again: what it would take back is no longer a creep the friction let
+// through but a slide. (Kept at any distance, the anchor on a small ball spun under a tire at one
+// substep, 0.5 rad round it a substep, dragged the tread after it and threw the ball at 70 m/s.)
+constexpr double kAnchorReach = 1e-3;
+
 // The unknowns, block by block: block i holds tread particle i (x, y) then rim particle i (x, y),
 // so every constraint of the tire couples a block to itself or to a neighbouring block.
 std::uint32_t block_of(std::uint32_t particle, std::uint32_t n) {
@@ -255,8 +261,9 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
     // the prop where Box2D, handed the contacts' impulses, keeps its drift: a crate lying on a tire
     // slid over it at a steady 0.03 mm/s with both its contacts stuck (docs/at-rest.md).
     if (body.is_dynamic() && t.anchor_prop[particle] == prop) {
-      c.anchored = true;
       c.anchor = body.pose_at(ctx.time + ctx.h).to_world(t.friction_anchor[particle]);
+      c.anchored = length_squared(c.anchor - t.particles.x_prev[particle] - c.surface_displacement) <
+                   kAnchorReach * kAnchorReach;
     }
     if (body.is_dynamic() && body.support_count == 0 && body.inverse_inertia > 0.0) {
       c.body = body_of(static_cast<std::uint32_t>(prop), body);
@@ -868,7 +875,7 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
     const Prop* body = c.prop >= 0 ? &ctx.rigid->props()[static_cast<std::size_t>(c.prop)] : nullptr;
     if (!body || !body->is_dynamic() || !c.friction_active) {
       anchored = -1;
-    } else if (anchored != c.prop) {
+    } else if (anchored != c.prop || !c.anchored) {
       t.friction_anchor[c.particle] = body->pose_at(t_end).to_local(t.particles.x[c.particle]);
       anchored = c.prop;
     }
