@@ -232,12 +232,12 @@ TEST_CASE("island: contacts between tires keep momentum", "[unit][island][physic
 
 namespace {
 
-// A tire rolling at 10 m/s on flat ground, 3 m behind one at rest.
-World blow_on_the_ground(const SolverConfig& config) {
+// A tire rolling at `speed` on flat ground, 3 m behind one at rest.
+World blow_on_the_ground(const SolverConfig& config, double speed = 10.0) {
   World world(config, {0, -9.81});
   world.add_obstacle({{{-100, -10}, {100, 0}}});
   TireSpec a = tire_at({0.0, 0.5});
-  a.velocity = {10.0, 0.0};
+  a.velocity = {speed, 0.0};
   a.angular_velocity = -a.velocity.x / 0.5;
   world.add_tire(a);
   world.add_tire(tire_at({3.0, 0.5}));
@@ -266,6 +266,7 @@ TEST_CASE("island: in a blow between two tires on the ground, the ground's frict
   const int island = GENERATE(0, 64);
   SolverConfig config = island_config(island);
   config.substeps = 1;
+  config.max_refine = 1;  // not refined either (World::update_refinement)
   config.sleep = false;
   World world = blow_on_the_ground(config);
   step_to_the_blow(world);
@@ -289,13 +290,17 @@ TEST_CASE("island: in a blow between two tires on the ground, the ground's frict
 
 TEST_CASE("island: a blow between two tires on the ground gains no energy", "[unit][island][physics]") {
   // It gained half at one substep while a contact with the ground the tire's solve let go took its
-  // friction static over the whole substep (docs/at-rest.md).
+  // friction static over the whole substep (docs/at-rest.md). At one substep the island's linear
+  // correction turned the striking tire along its tangents, off its ring: 11 of 12 speeds from 6 to
+  // 12 m/s gained up to 12 times the energy, held in a ring a few per cent over its area, and 10 m/s,
+  // the one speed this test then took, passed by chance (island_contacts.cpp, turn_correction).
   const int island = GENERATE(0, 64);
   const int substeps = GENERATE(1, 2, 4, 8);
+  const double speed = GENERATE(6.0, 8.0, 10.0, 12.0, 14.0);
   SolverConfig config = island_config(island);
   config.substeps = substeps;
   config.sleep = false;
-  World world = blow_on_the_ground(config);
+  World world = blow_on_the_ground(config, speed);
   step_to_the_blow(world);
   const double start = world_energy(world).total();
   double highest = start;
@@ -304,8 +309,9 @@ TEST_CASE("island: a blow between two tires on the ground gains no energy", "[un
     highest = std::max(highest, world_energy(world).total());
   }
   if (island > 0) REQUIRE(world.island_work().rows > 0);
-  INFO("island_tires " << island << ", " << substeps << " substeps: energy " << start << " J, at most "
-                       << highest << " J; momentum after " << momentum_x(world) << " kg m/s");
+  INFO("island_tires " << island << ", " << substeps << " substeps, " << speed << " m/s: energy " << start
+                       << " J, at most " << highest << " J; momentum after " << momentum_x(world)
+                       << " kg m/s");
   CHECK(highest <= start + 0.01 * std::abs(start));
 }
 

@@ -96,6 +96,7 @@ void Tire::reset() {
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
   std::fill(anchor_prop.begin(), anchor_prop.end(), -1);
   air_time = std::numeric_limits<double>::infinity();
+  spin_as_built = spec.angular_velocity != 0.0;
   late_push = {};
   predicted_push = {};
   distance.reset_lambda();

@@ -69,6 +69,7 @@ void predict(Tire& t, const SubstepContext& ctx) {
     t.late_push = {};
   }
   tire_method(ctx.config->method).carry_velocities(t, h);
+  t.spin_as_built = false;
   const RigidMotion motion = t.control.steer != 0.0 ? t.rigid_motion() : RigidMotion{};
   const double alpha = drive_angular_acceleration(t, motion);
   const Vec2 hub = motion.centroid;

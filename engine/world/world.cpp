@@ -459,7 +459,29 @@ void World::update_refinement() {
     refine_ *= 2;
   else if (turn < config_.settle_turn)
     refine_ /= 2;
-  refine_ = std::clamp(refine_, 1, std::max(1, config_.max_refine));
+  const int most = std::max(1, config_.max_refine);
+  refine_ = std::clamp(refine_, 1, most);
+  // An island's contacts move its tires by one linear step a substep (island_contacts.h), which
+  // holds while it turns them a little; a blow that stops a tire closing at v turns it by about
+  // vh/R in one substep, read by the step as a move along its tangents, off its ring. So the tick
+  // after one in which two tires of an island close fast takes the substeps that keep that turn
+  // within refine_turn, before the blow rather than after it: a blow at 10 m/s at one substep,
+  // refined only afterwards, left the striking tire's ring 2.8 % over its area and the pair's energy
+  // up 4.7 times (at 6–12 m/s, up to 12 times).
+  double rate = 0.0;  // the largest closing speed over radius (1/s)
+  for (const TirePair& p : tire_pairs_) {
+    if (!island_.solves(p.a) || !island_.solves(p.b)) continue;
+    const Tire& a = tires_[p.a];
+    const Tire& b = tires_[p.b];
+    const Vec2 d = b.centroid() - a.centroid();
+    const double distance = length(d);
+    if (!(distance > 0.0)) continue;
+    const double closing = dot(a.velocity() - b.velocity(), d) / distance;
+    rate = std::max(rate, closing / std::min(a.spec.outer_radius, b.spec.outer_radius));
+  }
+  while (refine_ < most && rate * config_.dt / (config_.substeps * refine_) > config_.refine_turn)
+    refine_ *= 2;
+  refine_ = std::min(refine_, most);
 }
 
 void World::find_tire_pairs() {
@@ -794,6 +816,7 @@ void World::hash_into(StateHash& h) const {
     h.add(t.late_push.velocity);
     h.add(t.late_push.spin);
     h.add(t.late_push.centre);
+    if (t.spin_as_built) h.add(t.spin_as_built);              // only until its first prediction
     for (std::uint32_t i = 0; i < t.particle_count(); ++i) {  // friction anchors on props, where any
       if (t.anchor_prop[i] < 0) continue;
       h.add(i);

@@ -186,6 +186,10 @@ struct Tire {
   // How long since the tread last touched ground (s): 0 while it does; infinite after a jump and at
   // spawn, until it lands. A jump is honoured while it is at most SolverConfig::jump_grace.
   double air_time = std::numeric_limits<double>::infinity();
+  // Whether the particles' velocities about the hub are still the spin they were built with,
+  // V + ω × r, a tangent; the global method's first prediction makes them the chords of a turn by ωh
+  // (global_method.cpp, chord_spin) and every prediction clears it.
+  bool spin_as_built = false;
   std::vector<std::uint32_t> candidates;       // obstacles near the tire this tick (broad phase)
   std::vector<std::uint32_t> prop_candidates;  // props near the tire this tick (broad phase)
   std::vector<PropFrame> prop_frames;          // their poses this substep
