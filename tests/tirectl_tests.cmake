@@ -167,7 +167,7 @@ tirectl_test("level 03-hills is won by rolling over the hills and jumping the cr
 tirectl_test("level 04-crates is won by pushing the crate into the pit" 0
   ARGS run ${LEVELS}/04-crates.json --ticks 2400 --steer 0.9 STDOUT "\"status\": \"won\"")
 tirectl_test("level 06-tire-rain is won once the gate opens, by a jump onto the ledge" 0
-  ARGS run ${LEVELS}/06-tire-rain.json --ticks 2400 --steer 1 --jump-at 480 STDOUT "\"status\": \"won\"")
+  ARGS run ${LEVELS}/06-tire-rain.json --ticks 2400 --steer 1 --jump-at 440 STDOUT "\"status\": \"won\"")
 tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0
   ARGS run ${LEVELS}/07-sandbox.json --ticks 1800 --steer 1 STDOUT "\"status\": \"won\"")
 tirectl_test("level 08-three-hundred is won through the gate the 300th tire opens" 0

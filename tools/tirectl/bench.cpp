@@ -135,7 +135,8 @@ std::unique_ptr<Steppable> flat_level() {
 enum class Sleep : bool { off, on };
 std::unique_ptr<Steppable> pile(int count, int crates = 0,
                                 tire::SolverMethod method = tire::SolverMethod::gauss_seidel,
-                                int substeps = 8, Sleep sleep = Sleep::off, int island_tires = 0) {
+                                int substeps = 8, Sleep sleep = Sleep::off,
+                                int island_tires = tire::SolverConfig{}.island_tires) {
   // Gauss–Seidel as its old default had it (clamp 1); the global method as the default has it. The
   // method set either way, so that a scene's name holds whatever the default is.
   tire::SolverConfig config = method == tire::SolverMethod::gauss_seidel
@@ -423,13 +424,13 @@ const Scene kScenes[] = {
      {}},
     {"global-pile-60-settled-awake",
      "60 tires piled in a walled box, global 2 x 1, sleeping off, stepped --settle ticks before the warm-up: "
-     "a pile at rest, its contacts between tires by block Gauss-Seidel",
-     [] { return pile(60, 0, tire::SolverMethod::global, 2); },
+     "a pile at rest, its contacts between tires by block Gauss-Seidel (\"island_tires\": 0)",
+     [] { return pile(60, 0, tire::SolverMethod::global, 2, Sleep::off, 0); },
      {},
      true},
     {"island-pile-60-settled-awake",
-     "as global-pile-60-settled-awake with \"solver\": {\"island_tires\": 64}: the pile's contacts between "
-     "tires solved as one problem (docs/at-rest.md)",
+     "as global-pile-60-settled-awake with \"solver\": {\"island_tires\": 64} (the default): the pile's "
+     "contacts between tires solved as one problem (docs/at-rest.md)",
      [] { return pile(60, 0, tire::SolverMethod::global, 2, Sleep::off, 64); },
      {},
      true},
