@@ -458,9 +458,7 @@ void World::update_refinement() {
   if (turn > config_.refine_turn)
     refine_ *= 2;
   else if (turn < config_.settle_turn)
-    refine_ /= 2;
-  const int most = std::max(1, config_.max_refine);
-  refine_ = std::clamp(refine_, 1, most);
+    refine_ = std::max(1, refine_ / 2);
   // An island's contacts move its tires by one linear step a substep (island_contacts.h), which
   // holds while it turns them a little; a blow that stops a tire closing at v turns it by about
   // vh/R in one substep, read by the step as a move along its tangents, off its ring. So the tick
@@ -479,6 +477,7 @@ void World::update_refinement() {
     const double closing = dot(a.velocity() - b.velocity(), d) / distance;
     rate = std::max(rate, closing / std::min(a.spec.outer_radius, b.spec.outer_radius));
   }
+  const int most = std::max(1, config_.max_refine);
   while (refine_ < most && rate * config_.dt / (config_.substeps * refine_) > config_.refine_turn)
     refine_ *= 2;
   refine_ = std::min(refine_, most);

@@ -127,7 +127,8 @@ struct SolverConfig {
   // (block Gauss–Seidel, tire_neighbours.h), which creeps; 0 solves every island so. An island with
   // a tire near a dynamic prop is solved so too. An awake pile solved as one problem costs more than
   // twice what block Gauss–Seidel costs, and its active set does not settle on light, nearly rigid
-  // tires; past 64 tires it costs more than the pile gains (docs/at-rest.md).
+  // tires; its cost grows with the pile (level 08's 301 tires as one island: 64 ms a tick on two
+  // cores, docs/at-rest.md).
   int island_tires = 64;
 
   // Gauss–Seidel 8 × 1, clamped to one segment a substep: the engine's default until the global
