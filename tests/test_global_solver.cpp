@@ -263,25 +263,58 @@ TEST_CASE("global: a spinning tire that lands rolls off at the speed its angular
   CHECK(std::abs(m.velocity.x + m.omega * radius) < 0.05 * expected);  // rolling, not sliding
 }
 
-TEST_CASE("global: a tire rolling, jumping and landing keeps the level's substeps",
-          "[unit][global][refine]") {
-  // Its solves turn no constraint by more than refine_turn, so the refinement never takes more
-  // substeps (SolverConfig::refine_turn): what a tire costs on the shipped levels stays what the
-  // level asks for.
+TEST_CASE(
+    "global: a tire rolling, jumping and landing under half a segment a substep keeps the level's substeps",
+    "[unit][global][refine]") {
+  // Its solves turn no constraint by more than refine_turn, and it turns by less than refine_roll
+  // of a segment a substep (6 m/s: 12 rad/s, 0.1 rad a substep against 0.11), so the refinement
+  // never takes more substeps: what a tire costs stays what the level asks for.
   SolverConfig config = global_config(2);
   config.tunnel_clamp = 4.0;
-  World world = flat_world(tire_at({0.0, 0.5}, true), config);
+  TireSpec spec = tire_at({0.0, 0.5}, true);
+  spec.max_speed = 6.0;
+  World world = flat_world(spec, config);
   const Tire& t = world.tires().front();
   double most_turn = 0.0;
   for (int tick = 0; tick < 300; ++tick) {
     world.step({1.0, tick % 60 == 30});  // full drive, a jump every second
     most_turn = std::max(most_turn, t.newton_turn);
-    INFO("tick " << tick << ": the solves turned a constraint by " << t.newton_turn << " rad");
+    INFO("tick " << tick << ": the solves turned a constraint by " << t.newton_turn << " rad, spin "
+                 << t.angular_velocity() << " rad/s");
     REQUIRE(world.tick_substeps() == 2);
   }
   INFO("most turn " << most_turn << " rad, speed " << t.velocity().x << " m/s");
   CHECK(t.velocity().x > 5.0);  // it did roll
   CHECK(most_turn < config.settle_turn);
+}
+
+TEST_CASE("global: a tire rolling faster takes the substeps that keep its turn within half a segment",
+          "[unit][global][refine]") {
+  // SolverConfig::refine_roll: a tire on the ground turning by |ω| h a substep asks the next tick
+  // for the smallest power of two (up to max_refine) that keeps |ω| h within half of 2π/N.
+  const double speed = GENERATE(8.0, 12.0, 14.0);
+  SolverConfig config = global_config(2);
+  config.sleep = false;
+  TireSpec spec = tire_at({0.0, 0.5});
+  spec.velocity = {speed, 0.0};
+  spec.angular_velocity = -speed / spec.outer_radius;
+  World world = flat_world(spec, config);
+  const Tire& t = world.tires().front();
+  const double half_segment = std::numbers::pi / t.n;
+  world.step({});
+  int refined = 0;
+  for (int tick = 1; tick < 120; ++tick) {
+    int wanted = 1;  // from the spin the last tick left, if it touched the ground lately
+    while (t.touched_ground_within(config.jump_grace) && wanted < config.max_refine &&
+           std::abs(t.angular_velocity()) * config.dt / (config.substeps * wanted) > half_segment)
+      wanted *= 2;
+    world.step({});
+    INFO(speed << " m/s, tick " << tick << ": spin " << t.angular_velocity() << " rad/s, substeps "
+               << world.tick_substeps());
+    REQUIRE(world.tick_substeps() >= config.substeps * wanted);
+    if (wanted > 1) ++refined;
+  }
+  CHECK(refined > 100);  // it rolled fast enough to ask, all along
 }
 
 TEST_CASE("global: a solve that turns a constraint past refine_turn doubles the next tick's substeps",

@@ -160,12 +160,12 @@ endforeach()
 tirectl_test("level 01-first-roll is won by rolling right" 0
   ARGS run ${LEVELS}/01-first-roll.json --ticks 900 --steer 1 STDOUT "\"status\": \"won\"")
 tirectl_test("level 02-jumps is won by jumping the blocks and the pit" 0
-  ARGS run ${LEVELS}/02-jumps.json --ticks 640 --steer 1 --jump-at 103 --jump-at 180 --jump-at 330 --jump-at 415
+  ARGS run ${LEVELS}/02-jumps.json --ticks 640 --steer 1 --jump-at 103 --jump-at 180 --jump-at 330 --jump-at 398
   STDOUT "\"status\": \"won\"")
 tirectl_test("level 03-hills is won by rolling over the hills and jumping the crack" 0
   ARGS run ${LEVELS}/03-hills.json --ticks 3600 --steer 1 --jump-at 480 STDOUT "\"status\": \"won\"")
-tirectl_test("level 04-crates is won by pushing the crate into the pit" 0
-  ARGS run ${LEVELS}/04-crates.json --ticks 2400 --steer 0.9 STDOUT "\"status\": \"won\"")
+tirectl_test("level 04-crates is won by pushing the crate into the pit and hopping the kerb" 0
+  ARGS run ${LEVELS}/04-crates.json --ticks 2400 --steer 0.9 --jump-at 350 STDOUT "\"status\": \"won\"")
 tirectl_test("level 06-tire-rain is won once the gate opens, by a jump onto the ledge" 0
   ARGS run ${LEVELS}/06-tire-rain.json --ticks 2400 --steer 1 --jump-at 440 STDOUT "\"status\": \"won\"")
 tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numbers>
 #include <thread>
 
 #include "tire/math/check.h"
@@ -476,6 +477,15 @@ void World::update_refinement() {
     if (!(distance > 0.0)) continue;
     const double closing = dot(a.velocity() - b.velocity(), d) / distance;
     rate = std::max(rate, closing / std::min(a.spec.outer_radius, b.spec.outer_radius));
+  }
+  // A tire rolling on the ground turns by |ω| h a substep; within refine_roll of a segment's angle
+  // is the rate |ω| N / (2π refine_roll) in units of refine_turn.
+  for (const std::uint32_t i : sleep_.awake()) {
+    const Tire& t = tires_[i];
+    if (!t.touched_ground_within(config_.jump_grace) || !(config_.refine_roll > 0.0)) continue;
+    const double segment = 2.0 * std::numbers::pi / static_cast<double>(t.n);
+    rate = std::max(rate,
+                    std::abs(t.angular_velocity()) / (config_.refine_roll * segment) * config_.refine_turn);
   }
   const int most = std::max(1, config_.max_refine);
   while (refine_ < most && rate * config_.dt / (config_.substeps * refine_) > config_.refine_turn)
