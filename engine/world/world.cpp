@@ -478,8 +478,9 @@ void World::update_refinement() {
     const double closing = dot(a.velocity() - b.velocity(), d) / distance;
     rate = std::max(rate, closing / std::min(a.spec.outer_radius, b.spec.outer_radius));
   }
-  // A tire rolling on the ground turns by |ω| h a substep; within refine_roll of a segment's angle
-  // is the rate |ω| N / (2π refine_roll) in units of refine_turn.
+  // A tire rolling on the ground turns by |ω| h a substep, to be kept within refine_roll of a
+  // segment's angle (SolverConfig::refine_roll): as a rate for the loop below, which keeps
+  // rate · h within refine_turn, |ω| refine_turn / (refine_roll · 2π/N).
   for (const std::uint32_t i : sleep_.awake()) {
     const Tire& t = tires_[i];
     if (!t.touched_ground_within(config_.jump_grace) || !(config_.refine_roll > 0.0)) continue;

@@ -106,17 +106,18 @@ struct SolverConfig {
   // iteration then makes energy (coasting, it sped up from 10 to 10.8 m/s in 5 s, where at 3–8
   // substeps, or with 2 iterations, it slows to 5–6 m/s): refined past 0.15 rad it gains none
   // (tests/test_materials.cpp, docs/soft-tire.md). The stiff tire rolling, jumping and landing on
-  // flat ground turns its constraints by at most 0.05 rad a step at 2 substeps, and never refines.
-  // max_refine 1 turns it off.
+  // flat ground turns its constraints by at most 0.05 rad a step at 2 substeps: it refines only for
+  // refine_roll, below. max_refine 1 turns it off.
   double refine_turn = 0.15;
   double settle_turn = 0.05;
   int max_refine = 8;
   // A tire on the ground (it touched it within jump_grace) that turns by more than refine_roll of
   // one tread segment's angle, 2π/N, a substep asks the next tick for the substeps that keep it
-  // within: its corners' contacts are met at the end of each substep's turn, and past half a
-  // segment a corner that struck ahead of the hub is pushed behind it, which spins the tire up.
-  // Coasting from 10 m/s at 2 substeps the stiff tire gained 108 J in 5 s; kept within half a
-  // segment (4 substeps at 10 m/s, 8 at 14) it gains none at 1–8 substeps (docs/soft-tire.md).
+  // within. Its corners' contacts are met at the end of each substep's turn: past half a segment,
+  // a corner that struck the ground ahead of the hub ends the turn behind it, where the push that
+  // holds it up spins the tire up. Coasting from 10 m/s at 2 substeps the stiff tire gained 108 J in
+  // 5 s; kept within half a segment (4 substeps at 10 m/s, 8 at 14) it gains none at 1–8 substeps
+  // (docs/soft-tire.md, "Corners met at the end of their turn"). 0 turns it off.
   double refine_roll = 0.5;
 
   // The most tires one tire is in contact with in a tick (TirePairFinder, soft_contact.h): a tire
