@@ -454,8 +454,22 @@ void World::step(const TickInput& input) {
 // back once none turns far (SolverConfig::refine_turn); the decision is the tick's, for every tire,
 // as Box2D and the contacts between tires step with the substeps.
 void World::update_refinement() {
+  // Two look-aheads ask for substeps, each as a demand (1/s): a substep of h is short enough while
+  // demand · h ≤ 1.
+  // - Rolling: a tire on the ground turns by |ω| h a substep, to be kept within refine_roll of a
+  //   segment's angle 2π/N (SolverConfig::refine_roll).
+  // - A blow between two tires of an island: its turn vh/R kept within refine_turn (below).
   double turn = 0.0;
-  for (const std::uint32_t i : sleep_.awake()) turn = std::max(turn, tires_[i].newton_turn);
+  double demand = 0.0;
+  const bool roll = config_.refine_roll > 0.0;
+  for (const std::uint32_t i : sleep_.awake()) {
+    const Tire& t = tires_[i];
+    turn = std::max(turn, t.newton_turn);
+    if (roll && t.touched_ground_within(config_.jump_grace)) {
+      const double segment = 2.0 * std::numbers::pi / static_cast<double>(t.n);
+      demand = std::max(demand, std::abs(t.angular_velocity()) / (config_.refine_roll * segment));
+    }
+  }
   if (turn > config_.refine_turn)
     refine_ *= 2;
   else if (turn < config_.settle_turn)
@@ -467,7 +481,6 @@ void World::update_refinement() {
   // within refine_turn, before the blow rather than after it: a blow at 10 m/s at one substep,
   // refined only afterwards, left the striking tire's ring 2.8 % over its area and the pair's energy
   // up 4.7 times (at 6–12 m/s, up to 12 times).
-  double rate = 0.0;  // the largest closing speed over radius (1/s)
   for (const TirePair& p : tire_pairs_) {
     if (!island_.solves(p.a) || !island_.solves(p.b)) continue;
     const Tire& a = tires_[p.a];
@@ -476,21 +489,11 @@ void World::update_refinement() {
     const double distance = length(d);
     if (!(distance > 0.0)) continue;
     const double closing = dot(a.velocity() - b.velocity(), d) / distance;
-    rate = std::max(rate, closing / std::min(a.spec.outer_radius, b.spec.outer_radius));
-  }
-  // A tire rolling on the ground turns by |ω| h a substep, to be kept within refine_roll of a
-  // segment's angle (SolverConfig::refine_roll): as a rate for the loop below, which keeps
-  // rate · h within refine_turn, |ω| refine_turn / (refine_roll · 2π/N).
-  for (const std::uint32_t i : sleep_.awake()) {
-    const Tire& t = tires_[i];
-    if (!t.touched_ground_within(config_.jump_grace) || !(config_.refine_roll > 0.0)) continue;
-    const double segment = 2.0 * std::numbers::pi / static_cast<double>(t.n);
-    rate = std::max(rate,
-                    std::abs(t.angular_velocity()) / (config_.refine_roll * segment) * config_.refine_turn);
+    demand = std::max(demand,
+                      closing / (std::min(a.spec.outer_radius, b.spec.outer_radius) * config_.refine_turn));
   }
   const int most = std::max(1, config_.max_refine);
-  while (refine_ < most && rate * config_.dt / (config_.substeps * refine_) > config_.refine_turn)
-    refine_ *= 2;
+  while (refine_ < most && demand * config_.dt / (config_.substeps * refine_) > 1.0) refine_ *= 2;
   refine_ = std::min(refine_, most);
 }
 
