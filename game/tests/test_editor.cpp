@@ -2,6 +2,8 @@
 // the same simulation), the key order and layout of what it writes, the undo history, changes the
 // validator refuses, picking, and the edits the mouse makes.
 #define CATCH_CONFIG_MAIN
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -19,8 +21,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A folder of this process's own: ctest runs the test cases side by side, each in its process, and
+// with one shared folder one case read crate.json while another was writing it.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "tire-editor-tests";
+  const fs::path dir = fs::temp_directory_path() / ("tire-editor-tests-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
 }
