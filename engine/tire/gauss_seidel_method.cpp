@@ -31,7 +31,7 @@ void resolve_prop_contact(Tire& t, const ContactPair& pair, const SubstepContext
   const Prop& prop = ctx.rigid->props()[frame.prop];
   Vec2& x = t.particles.x[pair.particle];
   const Vec2 x_prev = t.particles.x_prev[pair.particle];
-  const auto local = local_contact(prop.geometry, frame.start.to_local(x_prev), frame.end.to_local(x),
+  const auto local = local_contact(prop.geometry, frame.start_local(x_prev), frame.end.to_local(x),
                                    t.was_held(pair.particle));
   if (!local) return;
   const SurfaceContact c{frame.end.rotate(local->normal), local->depth};

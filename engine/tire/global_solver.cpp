@@ -338,8 +338,8 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
     } else {
       const PropFrame& frame = t.prop_frames[pair.index];
       const Prop& body = rigid.props()[frame.prop];
-      hit = local_contact(body.geometry, frame.start.to_local(p.x_prev[i]), frame.end.to_local(x),
-                          t.was_held(i));
+      hit =
+          local_contact(body.geometry, frame.start_local(p.x_prev[i]), frame.end.to_local(x), t.was_held(i));
       if (hit) {
         hit->normal = frame.end.rotate(hit->normal);
         prop = static_cast<std::int32_t>(frame.prop);
@@ -349,9 +349,13 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
     if (!hit || !(hit->depth > ctx.config->contact_slop)) continue;
     if (existing >= 0 && !(hit->depth > depth_[static_cast<std::size_t>(existing)]))
       continue;  // keep the deeper
-    offer(
-        make_contact(t, ctx, i, hit->normal, dot(hit->normal, x) + hit->depth, pair, prop, surface_velocity),
-        hit->depth);
+    // The plane the particle is held to: the surface's, or short of it by what the particle started
+    // the substep inside it less contact_push_speed · h, so that an overlap it was handed is undone
+    // at that speed and not in one substep (SolverConfig::contact_push_speed).
+    const double plane = dot(hit->normal, x) + hit->depth;
+    const double start_gap = dot(hit->normal, p.x_prev[i] + surface_velocity * ctx.h) - plane;
+    const double allowed = std::max(0.0, -start_gap - ctx.config->contact_push_speed * ctx.h);
+    offer(make_contact(t, ctx, i, hit->normal, plane - allowed, pair, prop, surface_velocity), hit->depth);
   }
   find_tire_contacts(t, ctx, dx, first_new);
   return contacts_.size() > first_new;

@@ -109,7 +109,8 @@ void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
     const Prop& prop = rigid.props()[k];
     if (!prop.alive) continue;
     const auto frame = static_cast<std::uint32_t>(t.prop_frames.size());
-    t.prop_frames.push_back({k, prop.pose_at(ctx.time), prop.pose_at(ctx.time + ctx.h)});
+    t.prop_frames.push_back({k, prop.pose_at(ctx.time), prop.pose_at(ctx.time + ctx.h),
+                             prop.geometry.shape == PropShape::circle});
     const Aabb local = prop.geometry.local_bounds();
     Aabb near = t.prop_frames.back().start.to_world(local);
     const Aabb end = t.prop_frames.back().end.to_world(local);

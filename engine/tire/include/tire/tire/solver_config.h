@@ -96,6 +96,13 @@ struct SolverConfig {
   // A particle starts a contact in the global solve only when it is deeper than this (m): below it,
   // the rounding of a resting contact could add and drop it pass after pass.
   double contact_slop = 1e-9;
+  // A particle that starts a substep inside a surface (an obstacle or a prop: a prop Box2D moved
+  // after the tire's solve, a tire spawned or dragged into one) is pushed out at this speed at most
+  // (m/s), relative to the surface, as Box2D v3 pushes out its own overlaps
+  // (b2WorldDef::contactPushoutVelocity, 3 m/s). Pushed out within one substep, the overlap became
+  // velocity: a tread 4 cm inside a 0.2 kg ball that Box2D had rolled back at it pushed the ball
+  // with 44 N·s (docs/at-rest.md). A contact met within the substep is met in full.
+  double contact_push_speed = 3.0;
   // Refinement. One Newton iteration a substep is XPBD's linearised step, which holds while the step
   // turns each constraint a little. When a tire's solve turns one of its constraints by more than
   // refine_turn (rad), the next tick takes twice the substeps, up to max_refine times the level's;

@@ -73,6 +73,17 @@ struct PropFrame {
   std::uint32_t prop;
   Pose start;
   Pose end;
+  bool round = false;  // a circle: the same however it turns
+
+  // Where a particle that starts the substep at `world` starts its path in the prop's frame. The
+  // path is taken as a straight line from there to where it ends, end.to_local(x). A turn of the
+  // prop over the substep bends the particle's true path in that frame into an arc about the
+  // prop's origin, whose chord may cross a prop the particle never came near (a tread particle
+  // above a ball spinning at 100 rad/s crossed it and was thrown out of it): a circle, the same
+  // however it turns, is met in a frame that only moves.
+  Vec2 start_local(Vec2 world) const {
+    return round ? end.to_local(world - start.position + end.position) : start.to_local(world);
+  }
 };
 
 // The tire's motion as a rigid body: what the hub does. Every particle has the same mass m.
