@@ -402,3 +402,29 @@ TEST_CASE("global: a solve that is not finite is counted and reported, and the t
   CHECK(world.warnings().empty());
   CHECK(t.centroid().y == Approx(0.5).margin(0.01));
 }
+
+TEST_CASE("global: a tire that starts inside the ground is pushed out at contact_push_speed, not at once",
+          "[unit][global]") {
+  // Placed 5 cm into the ground without gravity: undone in one substep (2.5 cm a substep at the
+  // default two), the overlap would leave the tire at 6 m/s; pushed out at 3 m/s it leaves at that
+  // speed and is out of the ground within three ticks.
+  for (const double push : {SolverConfig{}.contact_push_speed, std::numeric_limits<double>::infinity()}) {
+    SolverConfig config;
+    config.contact_push_speed = push;
+    World world = flat_world(tire_at({0.0, 0.45}), config, {0, 0});
+    world.step({});
+    const double rising = world.tires().front().velocity().y;
+    INFO("push speed " << push << ": rising at " << rising << " m/s after a tick");
+    if (std::isinf(push)) {
+      CHECK(rising > 4.0);  // the overlap went in the tick's first substep and became speed
+    } else {
+      CHECK(rising <= push);
+      CHECK(rising > 0.8 * push);  // the tread's particles are pushed at it; the rest follow
+      run(world, 2);
+      const Tire& t = world.tires().front();
+      double lowest = std::numeric_limits<double>::infinity();
+      for (std::uint32_t i = 0; i < t.segments(); ++i) lowest = std::min(lowest, t.particles.x[i].y);
+      CHECK(lowest > -1e-6);  // out of the ground
+    }
+  }
+}
