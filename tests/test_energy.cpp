@@ -4,6 +4,7 @@
 // rounding of a converged step (5 % of what the tire brought, the issue's bound).
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <functional>
 #include <string>
 
 #include "tire/tire/parameters.h"
@@ -276,4 +277,90 @@ TEST_CASE("energy: a tire thrown up under a floating one-sided chain passes thro
   INFO("fastest " << fastest << " m/s; hub at " << hub.y);
   CHECK(fastest <= 9.01);  // thrown at 9 m/s, it never goes faster (it was thrown at 105 m/s)
   CHECK(hub.y == Approx(3.0).margin(0.03));  // resting on the chain
+}
+
+// The books of the energy watch (World::energy_in): what comes into the world from outside, so that
+// the world's energy less it rises only by what nothing books (a contact making energy).
+TEST_CASE("energy: what the controls do is booked as the energy they give", "[unit][energy]") {
+  // Driven in the air with no gravity, the tire's energy rises by the drive's work, less what one
+  // linear step a substep loses turning the ring (its chords), which shrinks with the substep.
+  for (const int substeps : {1, 2, 8}) {
+    SolverConfig config;
+    config.substeps = substeps;
+    World world(config, {0, 0});
+    world.add_tire(tire_at({0, 5}, true));
+    const double energy = world_energy(world).total(), booked = world.energy_in();
+    CHECK(booked == Approx(energy).margin(1e-9));  // the tire, brought in when it was added
+    run(world, 60, {1.0, false});
+    const double gained = world_energy(world).total() - energy, work = world.energy_in() - booked;
+    INFO(substeps << " substeps: the drive did " << work << " J, the tire gained " << gained << " J");
+    CHECK(work > 400.0);  // it did drive
+    CHECK(gained <= work);
+    CHECK(gained >= (substeps == 1 ? 0.95 : substeps == 2 ? 0.98 : 0.998) * work);  // 4 %, 1 %, 0.06 %
+  }
+  // A jump adds j to every particle's velocity: ½ M ((v + j)² − v²) summed, ½ M j² from rest.
+  World world = flat_world(tire_at({0, 0.5}, true));
+  run(world, 60, {});
+  const Tire& t = world.tires().front();
+  double expected = 0.0;
+  for (const Vec2& v : t.particles.v) expected += t.particle_mass() * (v.y * 5.0 + 12.5);
+  const double before = world.energy_in();
+  world.step({0.0, true});
+  CHECK(world.energy_in() - before == Approx(expected).epsilon(1e-12));
+  CHECK(expected == Approx(0.5 * t.total_mass() * 25.0).epsilon(1e-3));
+}
+
+TEST_CASE("energy: inflating is booked as the air's energy it adds", "[unit][energy]") {
+  // With no gravity and nothing to touch, all the energy there is comes from the pump: the world's
+  // energy less its books never rises, and inflating made some.
+  World world({}, {0, 0});
+  TireSpec spec = tire_at({0, 0}, true);
+  spec.compliance.pressure = 1e-3;  // a soft air, that holds energy worth booking
+  world.add_tire(spec);
+  double highest = world_energy(world).total() - world.energy_in();
+  const double start = highest;
+  for (int tick = 0; tick < 120; ++tick) {
+    TickInput input;
+    input.inflate = tick < 60 ? 1.0 : -1.0;
+    world.step(input);
+    highest = std::max(highest, world_energy(world).total() - world.energy_in());
+  }
+  INFO("unbooked energy " << start << " J at the start, at most " << highest << " J");
+  CHECK(highest <= start + 1e-9);
+  CHECK(world.energy_in() != Approx(world_energy(world).total()).margin(1e-6));  // booked, not just kept
+}
+
+TEST_CASE("energy: a command between ticks books the change it makes", "[unit][energy]") {
+  World world = flat_world(tire_at({0, 0.5}, true));
+  run(world, 30, {});
+  const TireId id = world.tires().front().id;
+  const auto unbooked = [&] { return world_energy(world).total() - world.energy_in(); };
+  const std::vector<std::pair<std::string, std::function<void()>>> commands = {
+      {"a tire added",
+       [&] {
+         world.add_tire(tire_at({3, 4}));
+       }},
+      {"a prop added",
+       [&] {
+         world.add_prop(lying_prop(PropShape::box, {-3, 2}, 20, 0.3));
+       }},
+      {"an impulse",
+       [&] {
+         world.apply_impulse_to_tire(id, {30, 40});
+       }},
+      {"a tire reset",
+       [&] {
+         world.reset_tire(id, Vec2{1, 3});
+       }},
+      {"gravity set", [&] { world.set_parameter("gravity.y", -4.0); }},
+      {"a pressure set", [&] { world.set_parameter("tires.pressure", 1.3); }},
+      {"a tire removed", [&] { world.remove_tire(id); }},
+  };
+  for (const auto& [name, command] : commands) {
+    const double before = unbooked(), energy = world_energy(world).total();
+    command();
+    INFO(name << ": the world's energy changed by " << world_energy(world).total() - energy << " J");
+    CHECK(world_energy(world).total() != Approx(energy).margin(1e-6));  // the command did change it
+    CHECK(unbooked() == Approx(before).margin(1e-9));
+  }
 }

@@ -74,12 +74,18 @@ void predict(Tire& t, const SubstepContext& ctx) {
   const double alpha = drive_angular_acceleration(t, motion);
   const Vec2 hub = motion.centroid;
   const double v_max = ctx.config->tunnel_clamp * t.segment_length / h;
+  double work = 0.0;  // the drive's: Σ ½ m (|v + Δv|² − |v|²), per unit particle mass
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.w[i] == 0.0) continue;
     Vec2 v = p.v[i] + ctx.gravity * h;
-    if (alpha != 0.0) v += perp(p.x[i] - hub) * (alpha * h);
+    if (alpha != 0.0) {
+      const Vec2 dv = perp(p.x[i] - hub) * (alpha * h);
+      work += dot(v, dv) + 0.5 * length_squared(dv);
+      v += dv;
+    }
     p.v[i] = v;
   }
+  t.control_work += t.particle_mass() * work;
   clamp_velocities(t, v_max);
   predict_positions(p, h);
 }
@@ -281,7 +287,13 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
   const double reach = config.substeps * config.tunnel_clamp * t.segment_length + t.spec.outer_radius;
   rigid.query(bounds_of(t.particles.x).expanded(reach), t.candidates, t.prop_candidates);
   if (t.control.jump && t.touched_ground_within(config.jump_grace)) {
-    for (Vec2& v : t.particles.v) v.y += t.spec.jump_speed;
+    const double j = t.spec.jump_speed;
+    double work = 0.0;  // Σ ½ m ((v_y + j)² − v_y²), per unit particle mass
+    for (Vec2& v : t.particles.v) {
+      work += v.y * j + 0.5 * j * j;
+      v.y += j;
+    }
+    t.control_work += t.particle_mass() * work;
     t.air_time = std::numeric_limits<double>::infinity();  // one jump until the tread lands again
   }
   t.control.jump = false;
@@ -290,7 +302,10 @@ void begin_tick(Tire& t, const SolverConfig& config, const RigidWorld& rigid) {
     const double pressure = s.pressure + t.control.inflate * s.inflate_rate * config.dt;
     // A pressure already outside the bounds (a level's or a script's) is not pulled into them.
     const double low = std::min(s.min_pressure, s.pressure), high = std::max(s.max_pressure, s.pressure);
+    const double area = t.area();
+    const double before = t.area_constraint.energy(area);  // the pump's work: the air's energy it adds
     t.spec.pressure = t.area_constraint.pressure = std::clamp(pressure, low, high);
+    t.control_work += t.area_constraint.energy(area) - before;
   }
   t.tick_contacts = TickContacts{};
   t.newton_turn = 0.0;

@@ -4,17 +4,6 @@
 
 namespace tire {
 
-namespace {
-
-// ½ C²/α of an area constraint; none when rigid.
-double area_energy(const AreaConstraint& a, double area) {
-  if (!(a.compliance > 0.0)) return 0.0;
-  const double c = area - a.pressure * a.rest_area;
-  return 0.5 * c * c / a.compliance;
-}
-
-}  // namespace
-
 Energy tire_energy(const Tire& t, Vec2 gravity) {
   Energy e;
   const double m = t.particle_mass();
@@ -28,9 +17,9 @@ Energy tire_energy(const Tire& t, Vec2 gravity) {
     const double stretch = length(p.x[c.b] - p.x[c.a]) - c.rest_length;
     e.elastic += 0.5 * stretch * stretch / c.compliance;
   }
-  e.elastic += area_energy(t.area_constraint, t.area());
+  e.elastic += t.area_constraint.energy(t.area());
   const AreaConstraint& rim = t.rim_area_constraint;
-  e.elastic += area_energy(rim, polygon_area(p.x.data() + rim.first, rim.count));
+  e.elastic += rim.energy(polygon_area(p.x.data() + rim.first, rim.count));
   return e;
 }
 

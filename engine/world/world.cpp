@@ -13,6 +13,7 @@
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/tire_method.h"
 #include "tire/tire/tire_solver.h"
+#include "tire/world/energy.h"
 
 namespace tire {
 
@@ -33,13 +34,29 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
+double World::energy_now() const { return world_energy(*this).total(); }
+
 bool World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   Tire* t = find_tire(id);
   if (!t) return false;
   wake_island_of(*t);
+  const double before = energy_now();
   const Vec2 dv = impulse / t->total_mass();
   for (Vec2& v : t->particles.v) v += dv;
+  energy_in_ += energy_now() - before;
   return true;
+}
+
+void World::set_gravity(Vec2 g) {
+  const double before = energy_now();
+  set_gravity_unbooked(g);
+  energy_in_ += energy_now() - before;
+}
+
+void World::set_gravity_unbooked(Vec2 g) {
+  gravity_ = g;
+  rigid_.set_gravity(g);
+  wake_all();
 }
 
 namespace {
@@ -130,6 +147,13 @@ std::optional<double> tire_parameter(const Tire& t, ParamId id) {
 }  // namespace
 
 bool World::set_parameter(std::string_view key, double value) {
+  const double before = energy_now();
+  const bool set = set_parameter_unbooked(key, value);
+  energy_in_ += energy_now() - before;  // a pressure or compliance changes the energy the tires hold
+  return set;
+}
+
+bool World::set_parameter_unbooked(std::string_view key, double value) {
   const Parameter* p = find_parameter(key);
   if (!p || !p->runtime() || !p->accepts(value)) return false;
   wake_all();  // live tuning: no island can tell whether it still rests under the new value
@@ -137,8 +161,8 @@ bool World::set_parameter(std::string_view key, double value) {
     case ParamId::solver_substeps: config_.substeps = static_cast<int>(value); return true;
     case ParamId::solver_iterations: config_.iterations = static_cast<int>(value); return true;
     case ParamId::solver_damping: config_.damping = value; return true;
-    case ParamId::gravity_x: set_gravity({value, gravity_.y}); return true;
-    case ParamId::gravity_y: set_gravity({gravity_.x, value}); return true;
+    case ParamId::gravity_x: set_gravity_unbooked({value, gravity_.y}); return true;
+    case ParamId::gravity_y: set_gravity_unbooked({gravity_.x, value}); return true;
     default: break;
   }
   if (!p->is_tire()) return false;
@@ -200,7 +224,9 @@ void World::reset_tire(TireId id, std::optional<Vec2> position) {
   if (!t) return;
   if (position) t->spec.position = *position;
   wake_island_of(*t);
+  const double before = tire_energy(*t, gravity_).total();
   t->reset();
+  energy_in_ += tire_energy(*t, gravity_).total() - before;
 }
 
 bool World::grab_particle(TireId id, std::uint32_t particle, Vec2 target) {
@@ -242,6 +268,7 @@ TireId World::add_tire(const TireSpec& spec) {
   reserve_doubling(tire_colors_, tires_.size());
   sleep_.reserve(tires_.capacity(), rigid_.props().size());
   reserve_global_solvers();
+  energy_in_ += tire_energy(tires_.back(), gravity_).total();
   return id;
 }
 
@@ -294,7 +321,9 @@ std::optional<std::uint32_t> World::spawn_prop(const PropSpec& spec) {
 }
 
 std::uint32_t World::add_prop(const PropSpec& spec) {
+  const double before = energy_now();
   const std::uint32_t i = rigid_.add_prop(spec);
+  energy_in_ += energy_now() - before;
   sleep_.reserve(tires_.capacity(), rigid_.props().size());
   return i;
 }
@@ -303,6 +332,7 @@ bool World::remove_tire(TireId id) {
   const auto it = std::find_if(tires_.begin(), tires_.end(), [id](const Tire& t) { return t.id == id; });
   if (it == tires_.end()) return false;
   wake_all();  // what rested on it falls; indices shift
+  energy_in_ -= tire_energy(*it, gravity_).total();
   tires_.erase(it);
   sleep_.mark_stale();
   if (player_ == id) player_.reset();
@@ -442,6 +472,8 @@ void World::step(const TickInput& input) {
   for (const std::uint32_t i : sleep_.awake()) {
     note_failed_solves(tires_[i]);
     guard_divergence(tires_[i]);
+    energy_in_ += tires_[i].control_work;
+    tires_[i].control_work = 0.0;
   }
   if (method.refines_substeps()) update_refinement();
   if (config_.sleep) sleep_.settle(tires_, tire_pairs_, rigid_, tick_config_, held);

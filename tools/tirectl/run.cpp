@@ -33,30 +33,62 @@ struct SubstepTally {
   }
 };
 
-// The world's energy tick by tick (tire/world/energy.h): the largest rise of the total over any
-// stretch of the run, E(t) − min E(s ≤ t). Steering, jumps, scripts and kinematic props do work on
-// the world, so a rise is not by itself a fault; with none of them, it is energy a contact made.
-struct EnergyWatch {
-  tire::Energy now;
+// The largest rise of a quantity over any stretch of the run, q(t) − min q(s ≤ t), and the tick
+// that ended it.
+struct Rise {
   double lowest = 0.0;
-  double largest_rise = 0.0;
-  long long rise_tick = 0;  // the tick that ended the largest rise
-  void start(const tire::World& world) {
-    now = tire::world_energy(world);
-    lowest = now.total();
-  }
-  void add(const tire::World& world) {
-    now = tire::world_energy(world);
-    const double e = now.total();
-    lowest = std::min(lowest, e);
-    if (e - lowest > largest_rise) {
-      largest_rise = e - lowest;
-      rise_tick = static_cast<long long>(world.tick());
+  double largest = 0.0;
+  long long tick = 0;
+  void start(double q) { lowest = q; }
+  void add(double q, long long at) {
+    lowest = std::min(lowest, q);
+    if (q - lowest > largest) {
+      largest = q - lowest;
+      tick = at;
     }
   }
+};
+
+// The world's energy tick by tick (tire/world/energy.h) and its largest rise. Steering, jumps,
+// scripts and kinematic props do work on the world, so a rise of the total is not by itself a
+// fault; the energy less what was brought into the world (World::energy_in: bodies added, commands,
+// the tires' controls) rises only by what is not booked: with no kinematic props or grabs at work,
+// energy a contact made.
+struct EnergyWatch {
+  tire::Energy now;
+  double brought_in = 0.0;  // World::energy_in
+  std::uint64_t last_tick = 0;
+  Rise total;
+  Rise unexplained;
+  void start(const tire::World& world) {
+    last_tick = world.tick();
+    now = tire::world_energy(world);
+    brought_in = world.energy_in();
+    total.start(now.total());
+    unexplained.start(now.total() - brought_in);
+  }
+  void add(const tire::World& world) {
+    if (world.tick() < last_tick) {  // a restart rebuilt the world: its books start again
+      start(world);
+      return;
+    }
+    last_tick = world.tick();
+    now = tire::world_energy(world);
+    brought_in = world.energy_in();
+    const auto tick = static_cast<long long>(world.tick());
+    total.add(now.total(), tick);
+    unexplained.add(now.total() - brought_in, tick);
+  }
   nlohmann::ordered_json to_json() const {
-    return {{"kinetic", now.kinetic}, {"gravitational", now.gravitational}, {"elastic", now.elastic},
-            {"total", now.total()},   {"largest_rise", largest_rise},       {"largest_rise_tick", rise_tick}};
+    return {{"kinetic", now.kinetic},
+            {"gravitational", now.gravitational},
+            {"elastic", now.elastic},
+            {"total", now.total()},
+            {"largest_rise", total.largest},
+            {"largest_rise_tick", total.tick},
+            {"energy_in", brought_in},
+            {"largest_unexplained_rise", unexplained.largest},
+            {"largest_unexplained_rise_tick", unexplained.tick}};
   }
 };
 
@@ -145,10 +177,10 @@ void trace(const tire::World& world, const EnergyWatch& energy) {
   std::fprintf(
       stderr,
       "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s  "
-      "%d substeps  energy %.1f J\n",
+      "%d substeps  energy %.1f J  brought in %.1f J\n",
       world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
       p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "", world.tick_substeps(),
-      energy.now.total());
+      energy.now.total(), energy.brought_in);
 }
 
 }  // namespace

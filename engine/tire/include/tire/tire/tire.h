@@ -245,6 +245,10 @@ struct Tire {
   // The global method: the most one of its solves turned one of its constraints this tick (rad), for
   // the refinement (SolverConfig::refine_turn); reset by begin_tick.
   double newton_turn = 0.0;
+  // The energy its controls gave it since the World last collected it (J): the kinetic energy of
+  // its drive and its jumps, and the air's energy inflating changed. For the energy watch
+  // (World::energy_in); not state.
+  double control_work = 0.0;
   // The global method's work this tick (GlobalSolver): its solves, the factorisations of K they
   // made, the active-set passes they solved on a factor already made, the searches for contacts
   // (one a solve and one a pass) and the tests of a tread particle against a neighbour's tread in

@@ -138,11 +138,7 @@ class World {
   const SolverConfig& config() const { return config_; }
   SolverConfig& config() { return config_; }
   Vec2 gravity() const { return gravity_; }
-  void set_gravity(Vec2 g) {
-    gravity_ = g;
-    rigid_.set_gravity(g);
-    wake_all();
-  }
+  void set_gravity(Vec2 g);
 
   // The substeps the last tick took: the config's, times the global method's refinement
   // (SolverConfig::refine_turn).
@@ -164,6 +160,14 @@ class World {
   // Global solves that failed (a factorisation or solve not finite) since the world was made; each
   // is also a warning, and the tire's divergence guard resets it.
   std::uint64_t failed_solves() const { return failed_solves_; }
+  // The energy brought into the world from outside since it was made (J), booked where it comes in:
+  // the bodies added and removed, and every command between ticks that changes its energy (a tire
+  // reset or pushed, gravity or a parameter set), at their energy (tire/world/energy.h); the work
+  // of the tires' controls as they step (Tire::control_work: drive, jumps, inflating). The world's
+  // energy less this rises only by what is not booked: a contact making energy, and the work of
+  // kinematic props, grabs and what scripts do to props through rigid(). The energy watch reads
+  // it (tirectl run).
+  double energy_in() const { return energy_in_; }
 
  private:
   // The phases of a substep (world.cpp), each over every tire: the plain schedule, one by one.
@@ -234,6 +238,11 @@ class World {
   std::uint64_t tick_ = 0;
   std::vector<std::string> warnings_;
   std::uint64_t failed_solves_ = 0;
+  double energy_in_ = 0.0;
+  // The world's mechanical energy now (world_energy), for booking a command's change in energy_in_.
+  double energy_now() const;
+  bool set_parameter_unbooked(std::string_view key, double value);
+  void set_gravity_unbooked(Vec2 g);
   RunBudgets budgets_;
   std::vector<BudgetReached> budgets_reached_;
   // The "tires." keys set while the world runs, each once, in the order last set: add_tire gives

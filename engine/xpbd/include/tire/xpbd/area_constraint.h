@@ -16,6 +16,13 @@ struct AreaConstraint {
   double rest_area = 0.0;   // A0 (m²)
   double pressure = 1.0;    // p: target area is p·A0
   double compliance = 0.0;  // α (m²/N in 2D: 1 / (N/m per m² of area change))
+  // The energy it holds at `area`, U = ½ C²/α with C = A − p A0 (Macklin et al. 2016, eq. 2–4);
+  // none when rigid.
+  double energy(double area) const {
+    if (!(compliance > 0.0)) return 0.0;
+    const double c = area - pressure * rest_area;
+    return 0.5 * c * c / compliance;
+  }
 };
 
 // A = ½ Σ (x_i y_{i+1} − x_{i+1} y_i)
