@@ -4,9 +4,13 @@
 // rounding of a converged step (5 % of what the tire brought, the issue's bound).
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 
+#include "tire/replay/replay.h"
+#include "tire/session/level_session.h"
 #include "tire/tire/parameters.h"
 #include "tire/world/energy.h"
 #include "tire_fixtures.h"
@@ -363,4 +367,68 @@ TEST_CASE("energy: a command between ticks books the change it makes", "[unit][e
     CHECK(world_energy(world).total() != Approx(energy).margin(1e-6));  // the command did change it
     CHECK(unbooked() == Approx(before).margin(1e-9));
   }
+}
+
+namespace {
+
+// A shipped replay played as `tirectl replay` plays it, its energy watched: the largest rise over
+// the run of the world's energy less what was brought in (World::energy_in), and what was brought
+// in by the end. A restart rebuilds the world, and its books start again.
+struct Unbooked {
+  double largest_rise = 0.0;
+  double brought_in = 0.0;
+};
+Unbooked unbooked_over(const std::string& replay_name) {
+  const std::filesystem::path file = source_path("tests/replays/" + replay_name + ".json");
+  const ReplayLoad replay = load_replay_file(file);
+  REQUIRE(replay.replay);
+  const ReplayLevel level = load_replay_level(file, *replay.replay);
+  REQUIRE(level.level);
+  std::unique_ptr<LevelSession> session = make_session(*level.level);
+  InputFeed feed(replay.replay->inputs);
+  Unbooked out;
+  double lowest = 0.0;
+  std::uint64_t last_tick = 0;
+  const auto unbooked = [&] { return world_energy(session->world()).total() - session->world().energy_in(); };
+  lowest = unbooked();
+  for (std::uint64_t tick = 0; tick < replay.replay->ticks; ++tick) {
+    feed.step(*session, *level.level);
+    const World& world = session->world();
+    const double u = unbooked();
+    if (world.tick() < last_tick) lowest = u;  // restarted
+    last_tick = world.tick();
+    lowest = std::min(lowest, u);
+    out.largest_rise = std::max(out.largest_rise, u - lowest);
+    out.brought_in = world.energy_in();
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("energy: the shipped replays make no energy that nothing brought in", "[unit][energy]") {
+  // The world's energy less its books may rise by rounding only. Left out: 05-platforms and
+  // 07-sandbox-grab-tune-gravity, where kinematic platforms and a grab do work the books do not
+  // count (39.6 J and 8.7 kJ), level 08's rain (its replay takes long; the contacts of its rain
+  // make energy: below), and 07-sandbox-goal (below). docs/at-rest.md, "The energy watch's books".
+  const std::string replay = GENERATE("01-first-roll-goal", "01-first-roll-inflate", "01-first-roll-restart",
+                                      "02-jumps-goal", "03-hills-goal", "04-crates-goal", "06-tire-rain-goal",
+                                      "07-sandbox-push-crates", "07-sandbox-spawn-pile", "09-squeeze-goal",
+                                      "10-rocking-goal", "11-long-jump-goal", "12-finale-goal");
+  const Unbooked u = unbooked_over(replay);
+  INFO(replay << ": brought in " << u.brought_in << " J, unbooked rise " << u.largest_rise << " J");
+  CHECK(u.brought_in > 500.0);  // the player drove, jumped, spawned
+  CHECK(u.largest_rise <= 0.01 * u.brought_in);
+}
+
+TEST_CASE("energy: a tire spun up in the air and landing on level 07's ball makes energy (open)",
+          "[unit][energy][!shouldfail]") {
+  // Known, not yet mended (issue 33, a light prop squeezed between a tread and the ground): held
+  // right, the tire is thrown over the ball, the motor spins it to 30 rad/s in the air, and it lands
+  // on the ball as the ball rolls on: the tread drives the ball back at 10.5 m/s, Box2D throws it
+  // forward at 19.4 m/s the next tick, and 195 J appear that nothing brought in. This case fails
+  // until that is mended (it is marked to), and then tells.
+  const Unbooked u = unbooked_over("07-sandbox-goal");
+  INFO("brought in " << u.brought_in << " J, unbooked rise " << u.largest_rise << " J");
+  CHECK(u.largest_rise <= 0.01 * u.brought_in);
 }
