@@ -67,8 +67,14 @@ TEST_CASE("a world built in code is read through ids and views and driven by com
   CHECK(sim.tire(a)->asleep);
   CHECK(sim.tire(a)->contacts.ground > 0.0);
 
-  // A command wakes what it moves: an impulse sends the sleeping tire off.
+  // The energy watch: the tires settled, losing some of what they were brought in with.
+  const EnergyView settled = sim.energy();
+  CHECK(settled.elastic >= 0.0);
+  CHECK(settled.total() < settled.brought_in);
+
+  // A command wakes what it moves: an impulse sends the sleeping tire off, and its energy is booked.
   CHECK(sim.apply_impulse(b, {50.0, 0.0}));
+  CHECK(sim.energy().brought_in - settled.brought_in == Approx(sim.energy().total() - settled.total()));
   CHECK_FALSE(sim.tire(b)->asleep);
   for (int i = 0; i < 30; ++i) sim.step();
   CHECK(sim.tire(b)->centroid.x > -2.5);

@@ -3,6 +3,7 @@
 #include "tire/io/level.h"
 #include "tire/replay/replay.h"
 #include "tire/session/level_session.h"
+#include "tire/world/energy.h"
 
 namespace tire {
 
@@ -53,6 +54,12 @@ std::size_t Simulation::prop_count() const { return session_->world().rigid().pr
 std::optional<PropView> Simulation::prop(PropId id) const { return session_->world().prop_view(id); }
 std::size_t Simulation::asleep_count() const { return session_->world().asleep_count(); }
 std::uint64_t Simulation::solver_failures() const { return session_->world().failed_solves(); }
+
+EnergyView Simulation::energy() const {
+  const World& world = session_->world();
+  const Energy e = world_energy(world);
+  return {e.kinetic, e.gravitational, e.elastic, world.energy_in()};
+}
 
 std::vector<std::string> Simulation::take_warnings() {
   std::vector<std::string> out;

@@ -9,7 +9,10 @@
 namespace {
 
 void print(const tire::Simulation& sim) {
-  std::printf("t = %.2f s, %zu asleep\n", sim.time(), sim.asleep_count());
+  // The energy watch: what the world holds against what came into it (the bodies, the push).
+  const tire::EnergyView e = sim.energy();
+  std::printf("t = %.2f s, %zu asleep, energy %.1f J of %.1f J brought in\n", sim.time(), sim.asleep_count(),
+              e.total(), e.brought_in);
   for (const tire::TireId id : sim.tires()) {
     const tire::TireView t = *sim.tire(id);
     std::printf("  tire %u: hub (%.3f, %.3f) m, %.2f m/s, area %.1f %%, %s, ground %.1f N·s\n", t.id,

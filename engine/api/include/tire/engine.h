@@ -80,6 +80,8 @@ class Simulation {
   std::size_t asleep_count() const;
   // Solves that failed (not finite) since the start; each is also a warning, and the tire is reset.
   std::uint64_t solver_failures() const;
+  // The energy watch: the world's energy and what came in from outside (views.h).
+  EnergyView energy() const;
   // What the world reported while stepping (a tire reset after diverging, a budget reached),
   // oldest first; take_warnings() hands them over and forgets them.
   std::vector<std::string> take_warnings();

@@ -29,6 +29,19 @@ struct TireView {
   TickContacts contacts;  // what its contacts did over the last tick
 };
 
+// The world's mechanical energy between ticks, and what was brought into it from outside since it
+// was made: the bodies added (less those removed), the commands that changed its energy, and the
+// work of the tires' drives, jumps and inflating. The energy less what came in rises only by what
+// nothing brought: a contact making energy, or the work of kinematic props and grabs, which are
+// not counted (docs/at-rest.md, "The energy watch's books").
+struct EnergyView {
+  double kinetic = 0.0;        // J
+  double gravitational = 0.0;  // J, zero at the origin
+  double elastic = 0.0;        // J, held by the tires' compliant constraints
+  double brought_in = 0.0;     // J
+  double total() const { return kinetic + gravitational + elastic; }
+};
+
 struct PropView {
   PropId id = 0;
   PropType type = PropType::static_body;
