@@ -181,6 +181,11 @@ class World {
   void solve_tire_pairs();
   void solve_by_tire_colour(const SubstepContext& ctx, bool last);
   void note_failed_solves(const Tire& t);
+  // The world's mechanical energy now (world_energy), for booking a command's change in energy_in_;
+  // the commands themselves, unbooked, for the booked ones that call them.
+  double energy_now() const;
+  bool set_parameter_unbooked(std::string_view key, double value);
+  void set_gravity_unbooked(Vec2 g);
   TireView view_of(const Tire& t) const;  // tire_view's, and debug_draw's for each tire
   void guard_divergence(Tire& t);
   // After a tick: refine_ from how far the awake tires' solves turned their constraints.
@@ -239,10 +244,6 @@ class World {
   std::vector<std::string> warnings_;
   std::uint64_t failed_solves_ = 0;
   double energy_in_ = 0.0;
-  // The world's mechanical energy now (world_energy), for booking a command's change in energy_in_.
-  double energy_now() const;
-  bool set_parameter_unbooked(std::string_view key, double value);
-  void set_gravity_unbooked(Vec2 g);
   RunBudgets budgets_;
   std::vector<BudgetReached> budgets_reached_;
   // The "tires." keys set while the world runs, each once, in the order last set: add_tire gives
