@@ -433,3 +433,27 @@ TEST_CASE("energy: a tire spun up in the air and landing on level 07's ball make
   INFO("brought in " << u.brought_in << " J, unbooked rise " << u.largest_rise << " J");
   CHECK(u.largest_rise <= 0.01 * u.brought_in);
 }
+
+TEST_CASE("energy: a spinning tire landing at one substep makes a spike of elastic energy (open)",
+          "[unit][energy][!shouldfail]") {
+  // Known, not yet mended (issue 33): dropped from a hub height of 1.8 m spinning at 12.5 rad/s, at
+  // one substep, the landing tick's one Newton step, its tread's landing particles stuck while the
+  // ring turns by 0.13 rad, leaves 990 J in the tire's springs for one tick (the world's energy up
+  // by 808 J), which the next step takes back without a bounce. Two iterations leave 2 J; at 2 and
+  // 4 substeps no drop of the scan in docs/at-rest.md spikes. Fails until mended (it is marked to).
+  SolverConfig config;
+  config.substeps = 1;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-100, -10}, {100, 0}}});
+  TireSpec spec = tire_at({0, 1.8});
+  spec.angular_velocity = 12.5;
+  world.add_tire(spec);
+  const double start = world_energy(world).total();
+  double highest = start;
+  for (int tick = 0; tick < 60; ++tick) {
+    world.step({});
+    highest = std::max(highest, world_energy(world).total());
+  }
+  INFO("energy " << start << " J at the start, at most " << highest << " J");
+  CHECK(highest <= start + 0.05 * (start - world.tires().front().total_mass() * 9.81 * 0.5));
+}
