@@ -386,11 +386,10 @@ Unbooked unbooked_over(const std::string& replay_name) {
   REQUIRE(level.level);
   std::unique_ptr<LevelSession> session = make_session(*level.level);
   InputFeed feed(replay.replay->inputs);
-  Unbooked out;
-  double lowest = 0.0;
-  std::uint64_t last_tick = 0;
   const auto unbooked = [&] { return world_energy(session->world()).total() - session->world().energy_in(); };
-  lowest = unbooked();
+  Unbooked out;
+  double lowest = unbooked();
+  std::uint64_t last_tick = 0;
   for (std::uint64_t tick = 0; tick < replay.replay->ticks; ++tick) {
     feed.step(*session, *level.level);
     const World& world = session->world();
@@ -399,8 +398,8 @@ Unbooked unbooked_over(const std::string& replay_name) {
     last_tick = world.tick();
     lowest = std::min(lowest, u);
     out.largest_rise = std::max(out.largest_rise, u - lowest);
-    out.brought_in = world.energy_in();
   }
+  out.brought_in = session->world().energy_in();
   return out;
 }
 

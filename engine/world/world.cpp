@@ -40,10 +40,10 @@ bool World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   Tire* t = find_tire(id);
   if (!t) return false;
   wake_island_of(*t);
-  const double before = energy_now();
+  const double before = tire_energy(*t, gravity_).total();  // only this tire's energy changes
   const Vec2 dv = impulse / t->total_mass();
   for (Vec2& v : t->particles.v) v += dv;
-  energy_in_ += energy_now() - before;
+  energy_in_ += tire_energy(*t, gravity_).total() - before;
   return true;
 }
 
