@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "tire/math/array_block.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 using namespace tire;
 

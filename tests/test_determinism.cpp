@@ -1,6 +1,7 @@
 // Same binary, same input: the same state, bit for bit, every tick.
 #include <catch2/catch.hpp>
 
+#include "tire/math/numbers.h"
 #include "tire/math/state_hash.h"
 #include "tire_fixtures.h"
 

@@ -391,7 +391,7 @@ Unbooked unbooked_over(const std::string& replay_name) {
   double lowest = unbooked();
   std::uint64_t last_tick = 0;
   for (std::uint64_t tick = 0; tick < replay.replay->ticks; ++tick) {
-    feed.step(*session, *level.level);
+    step(feed, *session, *level.level);
     const World& world = session->world();
     const double u = unbooked();
     if (world.tick() < last_tick) lowest = u;  // restarted

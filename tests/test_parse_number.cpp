@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "tire/math/parse_number.h"
+#include "tire/math/numbers.h"
 
 TEST_CASE("parse_double reads and refuses what std::from_chars does", "[parse]") {
   for (const std::string text : {"0",

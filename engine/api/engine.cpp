@@ -3,14 +3,29 @@
 #include "tire/io/level.h"
 #include "tire/replay/replay.h"
 #include "tire/session/level_session.h"
+#include "tire/tire/parameters.h"
 #include "tire/world/energy.h"
+#include "tire/world/overlap.h"
 
 namespace tire {
 
-Simulation::Simulation(const SolverConfig& config, Vec2 gravity)
-    : session_(std::make_unique<LevelSession>(config, gravity)) {}
+namespace {
 
-Simulation::Simulation(std::unique_ptr<LevelSession> session) : session_(std::move(session)) {}
+// The level a simulation built in code restarts to: its solver settings and gravity, nothing in it.
+std::shared_ptr<const Level> empty_level(const SolverConfig& config, Vec2 gravity) {
+  auto level = std::make_shared<Level>();
+  level->solver = config;
+  level->gravity = gravity;
+  return level;
+}
+
+}  // namespace
+
+Simulation::Simulation(const SolverConfig& config, Vec2 gravity)
+    : level_(empty_level(config, gravity)), session_(std::make_unique<LevelSession>(config, gravity)) {}
+
+Simulation::Simulation(std::shared_ptr<const Level> level)
+    : level_(std::move(level)), session_(make_session(*level_)) {}
 
 Simulation::~Simulation() = default;
 Simulation::Simulation(Simulation&&) noexcept = default;
@@ -23,7 +38,7 @@ SimulationLoad Simulation::load(const std::filesystem::path& level_file) {
     out.errors = std::move(load.errors);
     return out;
   }
-  out.simulation.reset(new Simulation(make_session(*load.level)));
+  out.simulation = std::make_unique<Simulation>(std::make_shared<const Level>(std::move(*load.level)));
   return out;
 }
 
@@ -33,11 +48,19 @@ void Simulation::add_obstacle(const Obstacle& obstacle) { session_->world().add_
 bool Simulation::remove_tire(TireId id) { return session_->world().remove_tire(id); }
 
 void Simulation::step(const TickInput& input) { session_->step(input); }
+void Simulation::step(InputFeed& feed) { tire::step(feed, *session_, *level_); }
+
+void Simulation::apply(const ReplayInput& input, TickInput& held) {
+  apply_input(input, *session_, *level_, held);
+}
 
 std::uint64_t Simulation::tick() const { return session_->world().tick(); }
 double Simulation::time() const { return session_->world().time(); }
 ScriptStatus Simulation::status() const { return session_->status(); }
 EndReason Simulation::end_reason() const { return session_->end_reason(); }
+std::optional<std::uint64_t> Simulation::end_tick() const { return session_->end_tick(); }
+std::optional<Aabb> Simulation::bounds() const { return session_->bounds(); }
+int Simulation::respawns() const { return session_->respawns(); }
 std::uint64_t Simulation::state_hash() const { return session_->state_hash(); }
 const SolverConfig& Simulation::config() const { return session_->world().config(); }
 Vec2 Simulation::gravity() const { return session_->world().gravity(); }
@@ -59,6 +82,21 @@ EnergyView Simulation::energy() const {
   const World& world = session_->world();
   const Energy e = world_energy(world);
   return {e.kinetic, e.gravitational, e.elastic, world.energy_in()};
+}
+
+TireOverlap Simulation::deepest_overlap() const { return deepest_tire_overlap(session_->world()); }
+
+SolverReport Simulation::solver_report() const {
+  const World& world = session_->world();
+  SolverReport out;
+  out.tick_substeps = world.tick_substeps();
+  out.failed_solves = world.failed_solves();
+  out.islands = world.island_work();
+  for (const World::BudgetReached& b : world.budgets_reached()) {
+    const char* key = tire::parameter(b.budget).key;
+    out.budgets_reached.push_back({key, world.parameter(key).value_or(0.0), b.first_tick, b.dropped});
+  }
+  return out;
 }
 
 std::vector<std::string> Simulation::take_warnings() {

@@ -5,7 +5,7 @@
 
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
-#include "tire/math/parse_number.h"
+#include "tire/math/numbers.h"
 #include "tire/session/level_session.h"
 #include "tire/world/world.h"
 
@@ -101,12 +101,6 @@ LevelLoad load_level_text(const std::string& text, const std::string& file,
     out.errors.push_back(printable(file) + ": " + (issue.path.empty() ? "/" : issue.path) + ": " +
                          issue.message);
   return out;
-}
-
-std::vector<std::filesystem::path> level_files(const std::filesystem::path& dir, std::string& error) {
-  std::vector<std::filesystem::path> files = json_files(dir, error);
-  std::erase_if(files, [](const std::filesystem::path& p) { return p.filename() == "schema.json"; });
-  return files;
 }
 
 LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {

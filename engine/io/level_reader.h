@@ -9,7 +9,7 @@
 
 #include "tire/io/json_reader.h"
 #include "tire/io/level_keys.h"
-#include "tire/rigid/prop_spec.h"
+#include "tire/rigid/bodies.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/tire_spec.h"
 

@@ -1,5 +1,4 @@
-#include "tire/math/pose.h"
-
+#include "tire/math/geometry.h"
 #include "tire/math/trig.h"
 
 namespace tire {

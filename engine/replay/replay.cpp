@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "tire/io/file_io.h"
+#include "tire/math/numbers.h"
 #include "tire/math/state_hash.h"
 
 namespace tire {
@@ -252,10 +253,10 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
   return replay;
 }
 
-ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
+ReplayLoad load_replay_text(const std::string& text, const std::string& file, JsonWork& work) {
   ReplayLoad out;
   const JsonParse parse = parse_json_bounded(text, kReplayBudget);
-  out.work = parse.work;
+  work = parse.work;
   if (!parse.doc) {
     out.errors.push_back(printable(file) + ": " + parse.error);
     return out;
@@ -270,13 +271,16 @@ ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
   return out;
 }
 
+ReplayLoad load_replay_text(const std::string& text, const std::string& file) {
+  JsonWork work;
+  return load_replay_text(text, file, work);
+}
+
 ReplayLoad load_replay_file(const std::filesystem::path& file) {
   std::string error;
   const auto text = read_file(file, std::min(kMaxFileBytes, ReplayLimits::max_file_bytes), error);
-  if (!text) return {std::nullopt, {printable(file.string()) + ": " + error}, {}};
-  ReplayLoad out = load_replay_text(*text, file.string());
-  out.work.file_bytes = text->size();
-  return out;
+  if (!text) return {std::nullopt, {printable(file.string()) + ": " + error}};
+  return load_replay_text(*text, file.string());
 }
 
 ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Replay& replay) {
@@ -306,7 +310,7 @@ ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Re
     }
     return out;
   }
-  out.level = std::move(load.level);
+  out.level = std::make_shared<const Level>(std::move(*load.level));
   out.sha256 = sha256_hex(*text);
   return out;
 }
@@ -421,7 +425,7 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
   };
   check(0);
   for (std::uint64_t tick = 0; tick < replay.ticks; ++tick) {
-    feed.step(*session, level);
+    step(feed, *session, level);
     check(tick + 1);
     if (after_tick) after_tick(tick + 1);
   }
@@ -436,14 +440,9 @@ ReplayOutcome run_replay(const Replay& replay, const Level& level,
   return out;
 }
 
-void InputFeed::step(LevelSession& session, const Level& level) {
-  held_.jump = false;
-  for (; next_ < inputs_.size() && inputs_[next_].tick == tick_; ++next_) {
-    if (recorder_) recorder_->input(inputs_[next_]);
-    apply_input(inputs_[next_], session, level, held_);
-  }
-  session.step(held_);
-  ++tick_;
+void step(InputFeed& feed, LevelSession& session, const Level& level) {
+  session.step(feed.next_tick(
+      [&](const ReplayInput& input, TickInput& held) { apply_input(input, session, level, held); }));
 }
 
 ReplayRecorder::ReplayRecorder(std::string level_path, std::string level_sha256,
@@ -453,16 +452,16 @@ ReplayRecorder::ReplayRecorder(std::string level_path, std::string level_sha256,
   replay_.level_sha256 = std::move(level_sha256);
 }
 
-void ReplayRecorder::after_step(const LevelSession& session) {
+void ReplayRecorder::after_step(std::uint64_t state_hash) {
   ++replay_.ticks;
   if (checkpoint_every_ > 0 && replay_.ticks % checkpoint_every_ == 0)
-    replay_.expect.checkpoints.push_back({replay_.ticks, to_hex(session.state_hash())});
+    replay_.expect.checkpoints.push_back({replay_.ticks, to_hex(state_hash)});
 }
 
-Replay ReplayRecorder::finish(const LevelSession& session) const {
+Replay ReplayRecorder::finish(ScriptStatus status, std::uint64_t state_hash) const {
   Replay r = replay_;
-  r.expect.status = to_string(session.status());
-  r.expect.hash = to_hex(session.state_hash());
+  r.expect.status = to_string(status);
+  r.expect.hash = to_hex(state_hash);
   return r;
 }
 

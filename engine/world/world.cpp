@@ -384,6 +384,7 @@ std::optional<PropView> World::prop_view(PropId id) const {
   v.type = p.spec.type;
   v.shape = p.spec.shape;
   v.alive = p.alive;
+  v.name = p.spec.name;
   if (p.alive) v.state = rigid_.prop_state(id);
   return v;
 }

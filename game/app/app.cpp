@@ -13,7 +13,7 @@
 #include "render/draw.h"
 #include "render/hud.h"
 #include "tire/io/file_io.h"
-#include "tire/math/state_hash.h"
+#include "tire/math/numbers.h"
 
 namespace game {
 

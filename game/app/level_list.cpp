@@ -1,6 +1,6 @@
 #include "app/level_list.h"
 
-#include "tire/io/level.h"
+#include "tire/level.h"
 
 namespace game {
 
@@ -10,10 +10,10 @@ std::vector<LevelEntry> scan_levels(const std::filesystem::path& dir) {
   for (const std::filesystem::path& p : tire::level_files(dir, error)) {
     LevelEntry e;
     e.path = p;
-    const tire::LevelLoad load = tire::load_level_file(p);
-    e.valid = load.level.has_value();
-    e.name = e.valid ? load.level->name : p.filename().string();
-    if (e.valid) e.medals = load.level->medals;
+    const tire::LevelOpen load = tire::open_level_file(p);
+    e.valid = load.level != nullptr;
+    e.name = e.valid ? load.info.name : p.filename().string();
+    if (e.valid) e.medals = load.info.medals;
     out.push_back(std::move(e));
   }
   return out;

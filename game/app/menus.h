@@ -8,7 +8,7 @@
 
 #include "app/level_list.h"
 #include "tire/io/level_medals.h"
-#include "tire/script/script_runner.h"
+#include "tire/script/script_status.h"
 
 struct ImFont;
 

@@ -3,9 +3,7 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
-#include "tire/io/file_io.h"
-#include "tire/io/level.h"
-#include "tire/replay/replay.h"
+#include "tire/replay/replay_file.h"
 
 namespace game {
 

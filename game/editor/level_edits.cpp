@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "tire/math/parse_number.h"
+#include "tire/math/numbers.h"
 
 namespace editor {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "tire/rigid/prop_spec.h"
+#include "tire/rigid/bodies.h"
 #include "tire/tire/tire_spec.h"
 
 namespace editor {

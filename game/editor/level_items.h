@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "tire/math/aabb.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace editor {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "input/frame_range.h"
-#include "tire/math/parse_number.h"
+#include "tire/math/numbers.h"
 
 namespace game {
 

@@ -144,7 +144,7 @@ void SessionRecorder::on_step(std::uint64_t, const tire::TickInput& input_now) {
 }
 
 void SessionRecorder::on_stepped(const tire::LevelSession& session) {
-  if (recorder_) recorder_->after_step(session);
+  if (recorder_) recorder_->after_step(session.state_hash());
 }
 
 std::optional<std::string> SessionRecorder::replay_json(const tire::LevelSession& session,
@@ -154,7 +154,7 @@ std::optional<std::string> SessionRecorder::replay_json(const tire::LevelSession
     error = "nothing recorded yet";
     return std::nullopt;
   }
-  tire::Replay replay = recorder_->finish(session);
+  tire::Replay replay = recorder_->finish(session.status(), session.state_hash());
   if (last_run_only) replay = last_attempt(replay);
   std::error_code ec;
   std::filesystem::create_directories(target.parent_path(), ec);

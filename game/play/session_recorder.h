@@ -9,7 +9,7 @@
 #include <string>
 
 #include "input/session_input.h"
-#include "tire/replay/replay.h"
+#include "tire/replay/replay_file.h"
 
 namespace game {
 

@@ -2,8 +2,7 @@
 // bounds, and its scale follows the window size: about kViewHeight metres are always in view.
 #pragma once
 
-#include "tire/math/aabb.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 class LevelSession;

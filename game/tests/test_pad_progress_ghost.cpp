@@ -196,7 +196,7 @@ TEST_CASE("the last run of a recording replays on its own to the recorded end", 
   tire::ReplayInput left;
   left.steer = -1.0;
   play(left);
-  for (int i = 0; i < 50; ++i) session->step(held), recorder.after_step(*session);
+  for (int i = 0; i < 50; ++i) session->step(held), recorder.after_step(session->state_hash());
   tire::ReplayInput restart;
   restart.tick = 50;
   restart.restart = true;
@@ -205,8 +205,8 @@ TEST_CASE("the last run of a recording replays on its own to the recorded end", 
   right.tick = 50;
   right.steer = 1.0;
   play(right);
-  for (int i = 0; i < 100; ++i) session->step(held), recorder.after_step(*session);
-  const tire::Replay whole = recorder.finish(*session);
+  for (int i = 0; i < 100; ++i) session->step(held), recorder.after_step(session->state_hash());
+  const tire::Replay whole = recorder.finish(session->status(), session->state_hash());
   const tire::Replay run = last_attempt(whole);
   CHECK(run.ticks == 100);
   REQUIRE(run.inputs.size() == 1);

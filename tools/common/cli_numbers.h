@@ -14,8 +14,8 @@
 #include <optional>
 #include <string>
 
-#include "tire/math/parse_number.h"
-#include "tire/math/range.h"  // tire::Range: ranges print as the reference pages write them
+#include "tire/math/numbers.h"
+#include "tire/math/numbers.h"  // tire::Range: ranges print as the reference pages write them
 
 namespace tire_tools {
 

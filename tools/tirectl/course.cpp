@@ -8,11 +8,8 @@
 #include <optional>
 
 #include "commands.h"
+#include "tire/engine.h"
 #include "tire/io/file_io.h"
-#include "tire/io/level.h"
-#include "tire/replay/replay.h"
-#include "tire/script/script_runner.h"
-#include "tire/session/level_session.h"
 
 namespace tirectl {
 
@@ -34,14 +31,16 @@ struct Ending {
 };
 
 // Plays `inputs` (sorted by tick) into `level` until it ends or `max_ticks` have run.
-Ending play(const tire::Level& level, const std::vector<tire::ReplayInput>& inputs, std::uint64_t max_ticks) {
-  std::unique_ptr<tire::LevelSession> session = tire::make_session(level);
+Ending play(const std::shared_ptr<const tire::Level>& level, const std::vector<tire::ReplayInput>& inputs,
+            std::uint64_t max_ticks) {
+  tire::Simulation simulation(level);
   tire::InputFeed feed(inputs);
-  for (std::uint64_t tick = 0; tick < max_ticks && session->status() == tire::ScriptStatus::running; ++tick) {
-    feed.step(*session, level);
-    session->world().warnings().clear();
+  for (std::uint64_t tick = 0; tick < max_ticks && simulation.status() == tire::ScriptStatus::running;
+       ++tick) {
+    simulation.step(feed);
+    simulation.take_warnings();
   }
-  return {session->status(), session->end_tick().value_or(session->world().tick())};
+  return {simulation.status(), simulation.end_tick().value_or(simulation.tick())};
 }
 
 struct Shipped {
@@ -79,18 +78,19 @@ int course(const CourseOptions& options) {
   ojson report = ojson::array();
   std::size_t held_wins = 0, problems = 0;
   for (const fs::path& file : levels) {
-    const tire::LevelLoad load = tire::load_level_file(file);
+    const tire::LevelOpen load = tire::open_level_file(file);
     if (!load.level) {
       for (const std::string& e : load.errors) std::cerr << e << "\n";
       return 2;
     }
-    const tire::Level& level = *load.level;
-    const double dt = level.solver.dt;
-    ojson entry{{"file", file.filename().string()}, {"name", level.name}};
+    const std::shared_ptr<const tire::Level>& level = load.level;
+    const tire::LevelInfo& info = load.info;
+    const double dt = info.dt;
+    ojson entry{{"file", file.filename().string()}, {"name", info.name}};
     ojson issues = ojson::array();
-    if (!level.script.time_limit) issues.push_back("no time_limit");
-    if (!level.medals) issues.push_back("no medals");
-    const std::uint64_t max_ticks = tire::tick_at(level.script.time_limit.value_or(options.max_seconds), dt);
+    if (!info.time_limit) issues.push_back("no time_limit");
+    if (!info.medals) issues.push_back("no medals");
+    const std::uint64_t max_ticks = tire::tick_at(info.time_limit.value_or(options.max_seconds), dt);
 
     ojson won_holding = ojson::array();
     for (const Held& h : kHeld) {
@@ -109,8 +109,8 @@ int course(const CourseOptions& options) {
         ojson w{{"replay", s.file.filename().string()},
                 {"status", tire::to_string(end.status)},
                 {"time", static_cast<double>(end.ticks) * dt}};
-        if (level.medals && end.status == tire::ScriptStatus::won)
-          w["medal"] = tire::medal_name(tire::medal_for(*level.medals, end.ticks, dt));
+        if (info.medals && end.status == tire::ScriptStatus::won)
+          w["medal"] = tire::medal_name(tire::medal_for(*info.medals, end.ticks, dt));
         if (end.status != tire::ScriptStatus::won)
           issues.push_back("the replay " + s.file.filename().string() + " does not win it");
         wins.push_back(w);
@@ -118,9 +118,9 @@ int course(const CourseOptions& options) {
       if (wins.empty()) issues.push_back("no shipped replay wins it");
       entry["winning_replays"] = wins;
     }
-    if (level.medals)
+    if (info.medals)
       entry["medals"] = {
-          {"gold", level.medals->gold}, {"silver", level.medals->silver}, {"bronze", level.medals->bronze}};
+          {"gold", info.medals->gold}, {"silver", info.medals->silver}, {"bronze", info.medals->bronze}};
     problems += issues.size();
     entry["problems"] = issues;
     report.push_back(entry);

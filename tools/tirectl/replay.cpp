@@ -1,11 +1,10 @@
-// tirectl replay: run each replay headless through World::step and check what it expects.
-#include "tire/replay/replay.h"
-
+// tirectl replay: run each replay headless and check what it expects.
 #include <iostream>
 
 #include "commands.h"
 #include "progress.h"
 #include "tire/io/file_io.h"
+#include "tire/replay/replay_file.h"
 
 namespace tirectl {
 

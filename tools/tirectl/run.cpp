@@ -8,13 +8,9 @@
 
 #include "commands.h"
 #include "progress.h"
+#include "tire/engine.h"
 #include "tire/io/file_io.h"
-#include "tire/io/level.h"
-#include "tire/math/state_hash.h"
-#include "tire/replay/replay.h"
-#include "tire/world/energy.h"
-#include "tire/world/overlap.h"
-#include "tire/world/world.h"
+#include "tire/math/numbers.h"
 
 namespace tirectl {
 
@@ -27,9 +23,10 @@ nlohmann::ordered_json vec(tire::Vec2 v) { return nlohmann::ordered_json::array(
 struct SubstepTally {
   int most = 0;
   long long refined_ticks = 0;  // ticks that took more than the level's substeps
-  void add(const tire::World& world) {
-    most = std::max(most, world.tick_substeps());
-    if (world.tick_substeps() > world.config().substeps) ++refined_ticks;
+  void add(const tire::Simulation& simulation) {
+    const int substeps = simulation.solver_report().tick_substeps;
+    most = std::max(most, substeps);
+    if (substeps > simulation.config().substeps) ++refined_ticks;
   }
 };
 
@@ -49,33 +46,33 @@ struct Rise {
   }
 };
 
-// The world's energy tick by tick (tire/world/energy.h) and its largest rise. Steering, jumps,
+// The world's energy tick by tick (Simulation::energy) and its largest rise. Steering, jumps,
 // scripts and kinematic props do work on the world, so a rise of the total is not by itself a
-// fault; the energy less what was brought into the world (World::energy_in: bodies added, commands,
-// the tires' controls) rises only by what is not booked: with no kinematic props or grabs at work,
-// energy a contact made.
+// fault; the energy less what was brought into the world (EnergyView::brought_in: bodies added,
+// commands, the tires' controls) rises only by what is not booked: with no kinematic props or grabs
+// at work, energy a contact made.
 struct EnergyWatch {
-  tire::Energy now;
-  double brought_in = 0.0;  // World::energy_in
+  tire::EnergyView now;
+  double brought_in = 0.0;  // EnergyView::brought_in
   std::uint64_t last_tick = 0;
   Rise total;
   Rise unexplained;
-  void start(const tire::World& world) {
-    last_tick = world.tick();
-    now = tire::world_energy(world);
-    brought_in = world.energy_in();
+  void start(const tire::Simulation& simulation) {
+    last_tick = simulation.tick();
+    now = simulation.energy();
+    brought_in = now.brought_in;
     total.start(now.total());
     unexplained.start(now.total() - brought_in);
   }
-  void add(const tire::World& world) {
-    if (world.tick() < last_tick) {  // a restart rebuilt the world: its books start again
-      start(world);
+  void add(const tire::Simulation& simulation) {
+    if (simulation.tick() < last_tick) {  // a restart rebuilt the world: its books start again
+      start(simulation);
       return;
     }
-    last_tick = world.tick();
-    now = tire::world_energy(world);
-    brought_in = world.energy_in();
-    const auto tick = static_cast<long long>(world.tick());
+    last_tick = simulation.tick();
+    now = simulation.energy();
+    brought_in = now.brought_in;
+    const auto tick = static_cast<long long>(simulation.tick());
     total.add(now.total(), tick);
     unexplained.add(now.total() - brought_in, tick);
   }
@@ -92,95 +89,98 @@ struct EnergyWatch {
   }
 };
 
-nlohmann::ordered_json summary(const tire::LevelSession& session,
+nlohmann::ordered_json summary(const tire::Simulation& simulation,
                                const std::optional<tire::LevelMedals>& medals, const SubstepTally& tally,
                                const EnergyWatch& energy) {
-  const tire::World& world = session.world();
+  const double dt = simulation.config().dt;
   nlohmann::ordered_json tires = nlohmann::ordered_json::array();
-  for (const tire::Tire& t : world.tires())
+  for (const tire::TireId id : simulation.tires()) {
+    const tire::TireView t = *simulation.tire(id);
     tires.push_back({{"id", t.id},
-                     {"centroid", vec(t.centroid())},
-                     {"velocity", vec(t.velocity())},
-                     {"area_ratio", t.area_ratio()},
-                     {"grounded", t.grounded()},
+                     {"centroid", vec(t.centroid)},
+                     {"velocity", vec(t.velocity)},
+                     {"area_ratio", t.area_ratio},
+                     {"grounded", t.grounded},
                      {"asleep", t.asleep}});
-  nlohmann::ordered_json props = nlohmann::ordered_json::array();
-  const tire::RigidWorld& rigid = world.rigid();
-  for (std::uint32_t i = 0; i < rigid.props().size(); ++i) {
-    const tire::Prop& p = rigid.props()[i];
-    if (!p.alive || p.spec.name.empty()) continue;
-    const tire::Pose pose = rigid.current_pose(i);
-    props.push_back({{"name", p.spec.name}, {"position", vec(pose.position)}, {"angle", pose.angle}});
   }
-  // Each run budget reached (run_budgets.h): when first, and how much it dropped.
+  nlohmann::ordered_json props = nlohmann::ordered_json::array();
+  for (tire::PropId i = 0; i < simulation.prop_count(); ++i) {
+    const tire::PropView p = *simulation.prop(i);
+    if (!p.alive || p.name.empty()) continue;
+    props.push_back(
+        {{"name", p.name}, {"position", vec(p.state.pose.position)}, {"angle", p.state.pose.angle}});
+  }
+  const tire::SolverReport report = simulation.solver_report();
+  // Each run budget reached (levels/README.md, "budgets"): when first, and how much it dropped.
   nlohmann::ordered_json budgets = nlohmann::ordered_json::array();
-  for (const tire::World::BudgetReached& b : world.budgets_reached())
-    budgets.push_back({{"budget", tire::parameter(b.budget).key},
-                       {"limit", static_cast<long long>(*world.parameter(tire::parameter(b.budget).key))},
+  for (const tire::SolverReport::Budget& b : report.budgets_reached)
+    budgets.push_back({{"budget", b.key},
+                       {"limit", static_cast<long long>(b.limit)},
                        {"first_tick", b.first_tick},
                        {"dropped", b.dropped}});
   const nlohmann::ordered_json substeps = {
-      {"level", world.config().substeps}, {"most", tally.most}, {"refined_ticks", tally.refined_ticks}};
+      {"level", simulation.config().substeps}, {"most", tally.most}, {"refined_ticks", tally.refined_ticks}};
   // How the level ended: on which tick, and by what (the goal, the time limit, the bounds...).
   nlohmann::ordered_json end;
-  if (const std::optional<std::uint64_t> tick = session.end_tick())
+  if (const std::optional<std::uint64_t> tick = simulation.end_tick())
     end = {{"tick", *tick},
-           {"time", static_cast<double>(*tick) * world.config().dt},
-           {"reason", tire::to_string(session.end_reason())}};
+           {"time", static_cast<double>(*tick) * dt},
+           {"reason", tire::to_string(simulation.end_reason())}};
   // The medal a win earns (levels/README.md, "medals"); null for a level without medals.
   nlohmann::ordered_json medal;
-  if (medals && session.status() == tire::ScriptStatus::won && session.end_tick())
-    medal = tire::medal_name(tire::medal_for(*medals, *session.end_tick(), world.config().dt));
+  if (medals && simulation.status() == tire::ScriptStatus::won && simulation.end_tick())
+    medal = tire::medal_name(tire::medal_for(*medals, *simulation.end_tick(), dt));
   // The box the player must stay in; an open side (the computed top) is null.
   nlohmann::ordered_json bounds;
-  if (const std::optional<tire::Aabb>& b = session.bounds()) {
+  if (const std::optional<tire::Aabb> b = simulation.bounds()) {
     const auto side = [](double v) {
       return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
     };
     bounds = {{"min", {side(b->min.x), side(b->min.y)}}, {"max", {side(b->max.x), side(b->max.y)}}};
   }
   // The island solve's work (docs/at-rest.md): all zero when solver.island_tires is 0.
-  const tire::IslandContacts::Work& island = world.island_work();
+  const tire::IslandWork& island = report.islands;
   const nlohmann::ordered_json islands = {{"solved", island.solves},       {"rows", island.rows},
                                           {"passes", island.passes},       {"iterations", island.iterations},
                                           {"unsettled", island.unsettled}, {"breakdowns", island.breakdowns},
                                           {"overflows", island.overflows}, {"failures", island.failures}};
-  // How far tires are inside each other at the end (tire/world/overlap.h).
-  const tire::TireOverlap deepest = tire::deepest_tire_overlap(world);
+  // How far tires are inside each other at the end.
+  const tire::TireOverlap deepest = simulation.deepest_overlap();
   nlohmann::ordered_json overlap = {{"deepest", deepest.depth}, {"tire", nullptr}, {"inside", nullptr}};
   if (deepest.depth > 0.0) {
     overlap["tire"] = deepest.tire;
     overlap["inside"] = deepest.inside;
   }
-  return {{"ticks", world.tick()},
-          {"time", world.time()},
-          {"status", tire::to_string(session.status())},
+  return {{"ticks", simulation.tick()},
+          {"time", simulation.time()},
+          {"status", tire::to_string(simulation.status())},
           {"end", end},
           {"medal", medal},
           {"bounds", bounds},
-          {"respawns", session.respawns()},
+          {"respawns", simulation.respawns()},
           {"tires", tires},
           {"props", props},
           {"substeps", substeps},
           {"energy", energy.to_json()},
           {"overlap", overlap},
-          {"failed_solves", world.failed_solves()},
+          {"failed_solves", report.failed_solves},
           {"islands", islands},
           {"budgets_reached", budgets},
-          {"hash", tire::to_hex(session.state_hash())}};
+          {"hash", tire::to_hex(simulation.state_hash())}};
 }
 
-void trace(const tire::World& world, const EnergyWatch& energy) {
-  const tire::Tire* p = world.player();
-  if (!p) return;
-  const tire::Vec2 c = p->centroid(), v = p->velocity();
+void trace(const tire::Simulation& simulation, const EnergyWatch& energy) {
+  const std::optional<tire::TireId> id = simulation.player();
+  if (!id) return;
+  const tire::TireView p = *simulation.tire(*id);
+  const tire::Vec2 c = p.centroid, v = p.velocity;
   std::fprintf(
       stderr,
       "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s  "
       "%d substeps  energy %.1f J  brought in %.1f J\n",
-      world.time(), c.x, c.y, v.x, v.y, p->angular_velocity(), 100.0 * p->area_ratio(),
-      p->grounded() ? "grounded" : "in the air", p->asleep ? ", asleep" : "", world.tick_substeps(),
-      energy.now.total(), energy.brought_in);
+      simulation.time(), c.x, c.y, v.x, v.y, p.spin, 100.0 * p.area_ratio,
+      p.grounded ? "grounded" : "in the air", p.asleep ? ", asleep" : "",
+      simulation.solver_report().tick_substeps, energy.now.total(), energy.brought_in);
 }
 
 }  // namespace
@@ -206,7 +206,7 @@ int run(const RunOptions& options) {
       return 2;
     }
   }
-  const tire::LevelLoad load = tire::load_level_file(options.level, options.overrides);
+  const tire::LevelOpen load = tire::open_level_file(options.level, options.overrides);
   if (!load.level) {
     for (const std::string& error : load.errors) std::cerr << error << "\n";
     return 2;
@@ -242,43 +242,40 @@ int run(const RunOptions& options) {
   if (!options.record.empty()) {
     const std::filesystem::path out = std::filesystem::absolute(options.record);
     const std::filesystem::path level = std::filesystem::absolute(options.level);
-    std::string error;
-    const auto bytes = tire::read_file(level, tire::LevelLimits::max_file_bytes, error);
-    recorder.emplace(std::filesystem::relative(level, out.parent_path()).generic_string(),
-                     tire::sha256_hex(*bytes));
+    recorder.emplace(std::filesystem::relative(level, out.parent_path()).generic_string(), load.sha256);
   }
 
-  std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
+  tire::Simulation simulation(load.level);
   tire_tools::TickProgress progress("run", static_cast<std::uint64_t>(options.ticks), options.progress);
   tire::InputFeed feed(inputs, recorder ? &*recorder : nullptr);
   SubstepTally tally;
   EnergyWatch energy;
-  energy.start(session->world());
+  energy.start(simulation);
   for (long long tick = 0; tick < options.ticks; ++tick) {
-    feed.step(*session, *load.level);
-    if (recorder) recorder->after_step(*session);
-    tire::World& world = session->world();
-    tally.add(world);
-    energy.add(world);
+    simulation.step(feed);
+    if (recorder) recorder->after_step(simulation.state_hash());
+    tally.add(simulation);
+    energy.add(simulation);
     if (options.trace_every > 0 && (tick + 1) % options.trace_every == 0) {
       progress.clear();
-      trace(world, energy);
+      trace(simulation, energy);
     }
-    if (!world.warnings().empty()) progress.clear();
-    for (const std::string& w : world.warnings()) std::cerr << "tirectl: warning: " << w << "\n";
-    world.warnings().clear();
+    const std::vector<std::string> warnings = simulation.take_warnings();
+    if (!warnings.empty()) progress.clear();
+    for (const std::string& w : warnings) std::cerr << "tirectl: warning: " << w << "\n";
     progress.update(static_cast<std::uint64_t>(tick + 1));
   }
   progress.finish();
   if (recorder) {
     std::string error;
-    if (!tire::write_file_atomically(options.record, tire::replay_to_json(recorder->finish(*session)),
-                                     error)) {
+    if (!tire::write_file_atomically(
+            options.record,
+            tire::replay_to_json(recorder->finish(simulation.status(), simulation.state_hash())), error)) {
       std::cerr << "tirectl: " << error << "\n";
       return 2;
     }
   }
-  std::cout << summary(*session, load.level->medals, tally, energy).dump(2) << "\n";
+  std::cout << summary(simulation, load.info.medals, tally, energy).dump(2) << "\n";
   return 0;
 }
 

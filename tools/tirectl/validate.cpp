@@ -2,14 +2,14 @@
 
 #include "commands.h"
 #include "tire/io/file_io.h"
-#include "tire/io/level.h"
+#include "tire/level.h"
 
 namespace tirectl {
 
 int validate(const std::vector<std::string>& files) {
   int failed = 0;
   for (const std::string& file : files) {
-    const tire::LevelLoad load = tire::load_level_file(file);
+    const tire::LevelOpen load = tire::open_level_file(file);
     for (const std::string& error : load.errors) std::cerr << error << "\n";
     if (load.level)
       std::cout << tire::printable(file) << ": ok\n";

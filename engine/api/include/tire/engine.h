@@ -17,9 +17,10 @@
 #include <string_view>
 #include <vector>
 
-#include "tire/math/vec2.h"
-#include "tire/rigid/obstacle.h"
-#include "tire/rigid/prop_spec.h"
+#include "tire/level.h"
+#include "tire/math/geometry.h"
+#include "tire/replay/replay_file.h"
+#include "tire/rigid/bodies.h"
 #include "tire/script/script_status.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
@@ -37,6 +38,23 @@ struct SimulationLoad {
   std::vector<std::string> errors;
 };
 
+// What the solver did, read between ticks by tools that measure it (tirectl run).
+struct SolverReport {
+  // The last tick's substeps: the level's, or more where the global method refined the tick
+  // (SolverConfig::refine_turn).
+  int tick_substeps = 0;
+  std::uint64_t failed_solves = 0;  // solves that failed (not finite) since the start
+  IslandWork islands;               // the island solve's work since the start (tick_contacts.h)
+  // A run budget (levels/README.md, "budgets") the level reached: when first, and what it dropped.
+  struct Budget {
+    std::string key;  // "budgets.tires", ...
+    double limit = 0.0;
+    std::uint64_t first_tick = 0;
+    std::uint64_t dropped = 0;
+  };
+  std::vector<Budget> budgets_reached;
+};
+
 struct ReplayCheck {
   bool passed = false;
   std::string status;  // how the run ended: "running", "won" or "lost"
@@ -50,6 +68,8 @@ class Simulation {
   Simulation(const SolverConfig& config, Vec2 gravity);
   // A level file (levels/README.md), validated, with its script: goal, triggers, time limit, bounds.
   static SimulationLoad load(const std::filesystem::path& level_file);
+  // A level already read (tire/level.h), ready to play; it is kept for restarts.
+  explicit Simulation(std::shared_ptr<const Level> level);
   ~Simulation();
   Simulation(Simulation&&) noexcept;
   Simulation& operator=(Simulation&&) noexcept;
@@ -62,12 +82,19 @@ class Simulation {
 
   // One fixed tick of config().dt, `input` driving the player; then the level's script.
   void step(const TickInput& input = {});
+  // One tick driven by a replay's inputs: the feed's inputs for this tick applied (as apply()
+  // does), then the step.
+  void step(InputFeed& feed);
 
   // Reading, between ticks.
   std::uint64_t tick() const;
   double time() const;  // s
   ScriptStatus status() const;
   EndReason end_reason() const;
+  std::optional<std::uint64_t> end_tick() const;  // the tick the level ended on; nullopt while running
+  // The box the player must stay in (levels/README.md, "bounds"); an open side is infinite.
+  std::optional<Aabb> bounds() const;
+  int respawns() const;  // times the player left the bounds and was put back at a checkpoint
   // The exact state's digest: the same binary and inputs give the same hash (docs/determinism.md).
   std::uint64_t state_hash() const;
   const SolverConfig& config() const;
@@ -82,11 +109,19 @@ class Simulation {
   std::uint64_t solver_failures() const;
   // The energy watch: the world's energy and what came in from outside (views.h).
   EnergyView energy() const;
+  // The deepest a tread particle of one tire is inside another tire, asleep or not (views.h).
+  TireOverlap deepest_overlap() const;
+  SolverReport solver_report() const;
   // What the world reported while stepping (a tire reset after diverging, a budget reached),
   // oldest first; take_warnings() hands them over and forgets them.
   std::vector<std::string> take_warnings();
 
   // Commands, between ticks; each wakes what it moves.
+  // One replay input (tire/replay/replay_file.h) as replays play it: its steer and inflate set in
+  // `held` and its jump for this tick (the caller steps with `held`), a spawn, grab, drag, release,
+  // parameter or gravity applied now; a restart rebuilds the simulation from its level (one built
+  // in code: an empty world with its solver settings and gravity).
+  void apply(const ReplayInput& input, TickInput& held);
   bool apply_impulse(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
   // A row of the parameter table that may change while the world runs (levels/README.md):
   // "tires.<key>" on every tire, "player.<key>" on the player, "solver.<key>". False for a key not
@@ -105,7 +140,7 @@ class Simulation {
   void debug_draw(DebugDraw& draw) const;
 
  private:
-  explicit Simulation(std::unique_ptr<LevelSession> session);
+  std::shared_ptr<const Level> level_;  // what a restart rebuilds
   std::unique_ptr<LevelSession> session_;
 };
 

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "tire/math/range.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
+#include "tire/math/numbers.h"
 
 namespace tire {
 

@@ -12,8 +12,7 @@
 #include "tire/io/json_reader.h"
 #include "tire/io/level_bounds.h"
 #include "tire/io/level_medals.h"
-#include "tire/rigid/obstacle.h"
-#include "tire/rigid/prop_spec.h"
+#include "tire/rigid/bodies.h"
 #include "tire/script/script_spec.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/solver_config.h"
@@ -68,10 +67,6 @@ LevelLoad load_level_file(const std::filesystem::path& file, const std::vector<s
 // The same, from text already in memory; `file` only names it in messages.
 LevelLoad load_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});
-
-// The levels of folder `dir` as the game's menu and tirectl course list them: its *.json files but
-// schema.json (the levels' JSON schema), sorted by file name (json_files, file_io.h).
-std::vector<std::filesystem::path> level_files(const std::filesystem::path& dir, std::string& error);
 
 // Adds the level's obstacles, props and tires to an empty world built with its solver and
 // gravity: its physics, without the script.

@@ -5,8 +5,7 @@
 
 #include <optional>
 
-#include "tire/math/aabb.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 

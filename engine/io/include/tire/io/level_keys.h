@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tire/math/range.h"
+#include "tire/math/numbers.h"
 #include "tire/tire/parameters.h"
 
 namespace tire {

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "tire/math/range.h"
+#include "tire/math/numbers.h"
 
 namespace tire {
 

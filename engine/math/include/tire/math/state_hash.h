@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <cstring>
-#include <string>
 #include <type_traits>
 
 namespace tire {
@@ -34,7 +33,5 @@ class StateHash {
  private:
   std::uint64_t h_ = 0xcbf29ce484222325ULL;
 };
-
-std::string to_hex(std::uint64_t value);
 
 }  // namespace tire

@@ -1,168 +1,30 @@
-// Replays (format "tire-replay/1", docs/formats.md): the level a session ran, every input that
-// reached the World, tick by tick, and what the run must come to. The game records them, tirectl
-// records and checks them, and the replay suite runs them in ctest.
-//
-// Inputs are changes: steer holds until the next steer; jump, spawn, grab, drag, release, set,
-// gravity and restart act once, at their tick, before that tick's step. Several inputs may share
-// a tick; they apply in file order, and each acts. So a tick holds at most one steer and one jump
-// (a second steer would replace the first unseen, a second jump would do nothing), and no steer
-// before a restart on the same tick (the restart drops it): the reader refuses those.
+// The engine's side of replays (tire/replay/replay_file.h holds the format and what programs use):
+// reading one from parsed JSON, what reading cost, and playing inputs into a level session.
 #pragma once
 
-#include <cstdint>
-#include <filesystem>
-#include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
 #include "tire/io/json_reader.h"
 #include "tire/io/level.h"
-#include "tire/math/vec2.h"
+#include "tire/replay/replay_file.h"
 #include "tire/session/level_session.h"
 
 namespace tire {
 
-inline constexpr const char* kReplayFormat = "tire-replay/1";
-
-struct ReplayInput {
-  std::uint64_t tick = 0;
-  std::optional<double> steer;  // [-1, 1], holds
-  bool jump = false;
-  std::optional<double> inflate;       // [-1, 1], holds: +1 inflates the player, −1 deflates it
-  std::optional<Vec2> spawn;           // a default tire at this point (a mouse click)
-  std::optional<Vec2> grab;            // grab the tire at this point (mouse press)
-  double grab_radius = kGrabRadius;    // how near a tread particle the press must be (m)
-  std::optional<Vec2> drag;            // move the grab (mouse drag)
-  bool release = false;                // let go (mouse release)
-  std::optional<std::string> set_key;  // a tuning change: World::set_parameter(key, value)
-  double set_value = 0.0;
-  std::optional<Vec2> gravity;  // a tuning change of gravity
-  bool restart = false;         // the level restarted (R)
-};
-
-struct ReplayCheckpoint {
-  std::uint64_t tick = 0;  // the state after this many ticks
-  std::string hash;
-};
-
-// A tolerance instead of an exact hash: tire `tire` (index in the world's list) has its centroid
-// inside [min, max] after `tick` ticks.
-struct ReplayBox {
-  std::uint64_t tick = 0;
-  std::size_t tire = 0;
-  Vec2 min;
-  Vec2 max;
-};
-
-struct ReplayExpect {
-  std::optional<std::string> status;  // running | won | lost, at the end
-  std::vector<ReplayCheckpoint> checkpoints;
-  std::optional<std::string> hash;  // after the last tick
-  std::vector<ReplayBox> boxes;
-};
-
-struct Replay {
-  std::string level;         // path, relative to the replay file's folder (never absolute)
-  std::string level_sha256;  // of the level file's bytes when recorded
-  std::uint64_t ticks = 0;
-  std::vector<ReplayInput> inputs;
-  ReplayExpect expect;
-};
-
-struct ReplayLimits {
-  static constexpr std::uintmax_t max_file_bytes = 256ull << 20;
-  static constexpr std::uint64_t max_ticks = 100'000'000;  // over 19 days at 60 Hz
-  static constexpr std::size_t max_inputs = 10'000'000;
-  static constexpr std::size_t max_json_values = 2'500'000;
-};
-
-// Keys a replay's `set` input may tune: the rows of the parameter table (tire/parameters.h) that a
-// replay may set, a tire row also as "player.<key>".
-bool is_tunable_key(std::string_view key);
-
 std::optional<Replay> read_replay(const nlohmann::json& doc, std::vector<JsonIssue>& issues);
 
-struct ReplayLoad {
-  std::optional<Replay> replay;
-  std::vector<std::string> errors;  // "FILE: /json/path: what was expected, got what"
-  JsonWork work;                    // what reading it cost (file and parser), counted
-};
-ReplayLoad load_replay_file(const std::filesystem::path& file);
-ReplayLoad load_replay_text(const std::string& text, const std::string& file);
+// load_replay_text, and what reading it cost (the parser's work), counted into `work`.
+ReplayLoad load_replay_text(const std::string& text, const std::string& file, JsonWork& work);
 
-std::string replay_to_json(const Replay& replay);
-
-// The level a replay names (`replay.level`, from the replay file's folder), read by the level
-// reader. Nothing is said of the file until it has loaded as a level: one that does not (any file
-// a replay may name, /etc/passwd by a relative path) gets the loader's errors, under the replay's
-// /level and without the parser's excerpt of its bytes, and no digest.
-struct ReplayLevel {
-  std::filesystem::path path;       // the replay's folder / replay.level
-  std::optional<Level> level;       // empty when `errors` is not
-  std::string sha256;               // of the level file's bytes, when it loaded
-  std::vector<std::string> errors;  // "REPLAY: /level: ..."
-};
-ReplayLevel load_replay_level(const std::filesystem::path& replay_file, const Replay& replay);
-// Why the replay cannot be checked against its level as it is now: the level file changed since
-// it was recorded (its SHA-256 differs). Nothing when it is the level the replay was made on.
-std::optional<std::string> level_changed(const ReplayLevel& level, const Replay& replay);
-
-// Plays inputs into a level session. `held` is the tick's player input: its steer and inflate
+// Plays one input into a level session. `held` is the tick's player input: its steer and inflate
 // carry over between ticks, its jump is for this tick only (the caller clears it after the step).
 // A restart rebuilds the session from `level`.
 void apply_input(const ReplayInput& input, LevelSession& session, const Level& level, TickInput& held);
 
-// What a replay run came to.
-struct ReplayOutcome {
-  std::string status;
-  std::string hash;
-  std::vector<ReplayCheckpoint> checkpoints;          // actual hashes at the expected checkpoint ticks
-  std::optional<std::uint64_t> first_divergent_tick;  // first checkpoint whose hash differs
-  std::optional<std::uint64_t> last_matching_tick;    // the one before it that agreed (or 0: the start)
-  std::vector<std::string> failures;                  // every expectation that broke, in words
-  std::size_t box_checks = 0;                         // centroid boxes looked at (once each at most)
-};
-
-// Runs the replay's ticks on `level` and checks every expectation. `after_tick`, when given, is
-// called with the ticks done after each one (for a progress display; it cannot change the run).
-ReplayOutcome run_replay(const Replay& replay, const Level& level,
-                         const std::function<void(std::uint64_t)>& after_tick = {});
-
-// Records a run: call input() for each input as it happens and step() after each World::step;
-// finish() gives the replay with its expectations (status, final hash, a checkpoint every
-// `checkpoint_every` ticks).
-class ReplayRecorder {
- public:
-  ReplayRecorder(std::string level_path, std::string level_sha256, std::uint64_t checkpoint_every = 30);
-  void input(const ReplayInput& in) { replay_.inputs.push_back(in); }
-  void after_step(const LevelSession& session);
-  Replay finish(const LevelSession& session) const;
-  std::uint64_t ticks() const { return replay_.ticks; }
-
- private:
-  Replay replay_;
-  std::uint64_t checkpoint_every_;
-};
-
-// A run's inputs (sorted by tick) played into a session one tick at a time: before each step, the
-// inputs written for that tick of the run (counted from its start, across restarts) are applied,
-// and `recorder`, when given, records each as it is applied. run_replay, tirectl run and tirectl
-// course play inputs so.
-class InputFeed {
- public:
-  explicit InputFeed(std::span<const ReplayInput> inputs, ReplayRecorder* recorder = nullptr)
-      : inputs_(inputs), recorder_(recorder) {}
-  // Applies this tick's inputs and steps the session.
-  void step(LevelSession& session, const Level& level);
-
- private:
-  std::span<const ReplayInput> inputs_;
-  ReplayRecorder* recorder_;
-  std::size_t next_ = 0;
-  std::uint64_t tick_ = 0;
-  TickInput held_;  // steer and inflate hold from tick to tick; jump is for its tick only
-};
+// Applies the feed's inputs for the next tick to `session` and steps it.
+void step(InputFeed& feed, LevelSession& session, const Level& level);
 
 }  // namespace tire

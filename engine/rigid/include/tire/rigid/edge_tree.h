@@ -16,7 +16,7 @@
 #include <span>
 #include <vector>
 
-#include "tire/math/aabb.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 

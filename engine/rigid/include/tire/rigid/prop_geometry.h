@@ -10,11 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "tire/math/aabb.h"
-#include "tire/math/pose.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
+#include "tire/rigid/bodies.h"
 #include "tire/rigid/edge_tree.h"
-#include "tire/rigid/prop_spec.h"
 #include "tire/xpbd/contact.h"
 
 namespace tire {

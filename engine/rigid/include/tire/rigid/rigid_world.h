@@ -34,10 +34,8 @@
 #include <vector>
 
 #include "tire/math/state_hash.h"
-#include "tire/rigid/obstacle.h"
+#include "tire/rigid/bodies.h"
 #include "tire/rigid/prop_geometry.h"
-#include "tire/rigid/prop_spec.h"
-#include "tire/rigid/prop_state.h"
 
 class b2World;
 class b2Body;

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string_view>
 
-#include "tire/math/vec2.h"
-#include "tire/rigid/prop_spec.h"
+#include "tire/math/geometry.h"
+#include "tire/rigid/bodies.h"
 #include "tire/script/script_spec.h"
 #include "tire/tire/tire.h"
 #include "tire/tire/tire_spec.h"

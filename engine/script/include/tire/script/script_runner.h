@@ -26,11 +26,6 @@
 
 namespace tire {
 
-// The tick at which a time is reached: the first tick count n with n · dt ≥ seconds, with a
-// relative tolerance of 1e-9 so that 5 s at dt = 1/60 is tick 300 despite rounding:
-// n = max(0, ceil(seconds/dt − 1e-9 · max(1, seconds/dt))).
-std::uint64_t tick_at(double seconds, double dt);
-
 struct CounterValue {
   std::string name;
   int value = 0;

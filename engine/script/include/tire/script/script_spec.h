@@ -10,8 +10,8 @@
 #include <variant>
 #include <vector>
 
-#include "tire/math/aabb.h"
-#include "tire/rigid/prop_spec.h"
+#include "tire/math/geometry.h"
+#include "tire/rigid/bodies.h"
 #include "tire/tire/tire_spec.h"
 
 namespace tire {

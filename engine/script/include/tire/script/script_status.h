@@ -1,4 +1,5 @@
-// How a level stands: running, won or lost, and what ended it.
+// How a level stands: running, won or lost, and what ended it; and the tick at which a time (a
+// time limit) is reached.
 #pragma once
 
 #include <cstdint>
@@ -15,5 +16,10 @@ enum class EndReason : std::uint8_t { none, goal, win_action, lose_action, time_
 
 // "none", "goal", "win_action", "lose_action", "time_limit", "out_of_bounds"
 const char* to_string(EndReason reason);
+
+// The tick at which a time is reached: the first tick count n with n · dt ≥ seconds, with a
+// relative tolerance of 1e-9 so that 5 s at dt = 1/60 is tick 300 despite rounding:
+// n = max(0, ceil(seconds/dt − 1e-9 · max(1, seconds/dt))).
+std::uint64_t tick_at(double seconds, double dt);
 
 }  // namespace tire

@@ -12,14 +12,11 @@
 #include <string_view>
 #include <vector>
 
-#include "tire/math/aabb.h"
+#include "tire/math/geometry.h"
 #include "tire/script/script_runner.h"
 #include "tire/world/world.h"
 
 namespace tire {
-
-// How near a tread particle a mouse press must be to grab its tire (m).
-inline constexpr double kGrabRadius = 0.3;
 
 // A message a level script put on screen.
 struct ScriptMessage {

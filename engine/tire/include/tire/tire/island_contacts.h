@@ -38,9 +38,10 @@
 #include <utility>
 #include <vector>
 
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 #include "tire/tire/global_solver.h"
 #include "tire/tire/soft_contact.h"
+#include "tire/tire/tick_contacts.h"
 
 namespace tire {
 
@@ -84,16 +85,7 @@ class IslandContacts {
   void solve(std::vector<Tire>& tires, std::size_t group, const SubstepContext& ctx, WorkerPool* pool);
 
   // Counts since the start, for tests and `tirectl bench`.
-  struct Work {
-    std::uint64_t solves = 0;      // islands solved
-    std::uint64_t rows = 0;        // contact rows
-    std::uint64_t passes = 0;      // active-set passes
-    std::uint64_t iterations = 0;  // conjugate-gradient iterations
-    std::uint64_t breakdowns = 0;  // passes preconditioned by the diagonal (incomplete Cholesky broke down)
-    std::uint64_t overflows = 0;   // islands left to block Gauss–Seidel for want of room
-    std::uint64_t failures = 0;    // solves given up (not positive definite, not finite)
-    std::uint64_t unsettled = 0;   // solves whose active set still changed when the passes ran out
-  };
+  using Work = IslandWork;  // tick_contacts.h
   const Work& work() const { return work_; }
 
  private:

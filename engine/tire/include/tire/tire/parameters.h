@@ -16,8 +16,8 @@
 #include <span>
 #include <string_view>
 
-#include "tire/math/range.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
+#include "tire/math/numbers.h"
 #include "tire/tire/run_budgets.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"

@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "tire/math/aabb.h"
+#include "tire/math/geometry.h"
 #include "tire/tire/tire.h"
 
 namespace tire {

@@ -1,5 +1,8 @@
-// What a tire's contacts did over one tick, summed over its substeps.
+// What contacts did: a tire's over one tick, summed over its substeps, and the island solve's work
+// since the world began.
 #pragma once
+
+#include <cstdint>
 
 namespace tire {
 
@@ -18,6 +21,19 @@ struct TickContacts {
   // hold it): the tangential speed, relative to the surface, of the tire's rigid motion (hub and
   // spin) at that contact, before friction acts (m/s); 0 when every contact held.
   double slip_speed = 0.0;
+};
+
+// The work of solving piles of touching tires as one problem each (docs/at-rest.md), counted since
+// the world began; all zero when solver.island_tires is 0.
+struct IslandWork {
+  std::uint64_t solves = 0;      // islands solved
+  std::uint64_t rows = 0;        // contact rows
+  std::uint64_t passes = 0;      // active-set passes
+  std::uint64_t iterations = 0;  // conjugate-gradient iterations
+  std::uint64_t breakdowns = 0;  // passes preconditioned by the diagonal (incomplete Cholesky broke down)
+  std::uint64_t overflows = 0;   // islands left to block Gauss–Seidel for want of room
+  std::uint64_t failures = 0;    // solves given up (not positive definite, not finite)
+  std::uint64_t unsettled = 0;   // solves whose active set still changed when the passes ran out
 };
 
 }  // namespace tire

@@ -41,7 +41,7 @@
 #include <span>
 #include <vector>
 
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/tire.h"
 

@@ -8,9 +8,7 @@
 #include <cstdint>
 #include <span>
 
-#include "tire/math/aabb.h"
-#include "tire/math/pose.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 #include "tire/world/views.h"
 
 namespace tire {

@@ -2,7 +2,7 @@
 // to see that no contact makes energy. Between ticks.
 #pragma once
 
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 

@@ -4,17 +4,11 @@
 // Gauss–Seidel leaves tires inside each other under load"). Between ticks; reported by tirectl run.
 #pragma once
 
-#include "tire/tire/tire_spec.h"
+#include "tire/world/views.h"
 
 namespace tire {
 
 class World;
-
-struct TireOverlap {
-  double depth = 0.0;  // how far the particle is from the other's tread, inside it (m); 0 for none
-  TireId tire = 0;     // the tire whose particle it is
-  TireId inside = 0;   // the tire it is inside
-};
 
 // Over every two tires whose bounds meet (a sort and sweep on x), asleep or not.
 TireOverlap deepest_tire_overlap(const World& world);

@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "tire/math/aabb.h"
+#include "tire/math/geometry.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/soft_contact.h"
 #include "tire/tire/solver_config.h"

@@ -1,7 +1,10 @@
-// What the player does in one tick.
+// What the player does in one tick, and how near a tire a mouse press grabs it.
 #pragma once
 
 namespace tire {
+
+// How near a tread particle a mouse press must be to grab its tire (m).
+inline constexpr double kGrabRadius = 0.3;
 
 // The player's input for one tick.
 struct TickInput {

@@ -4,10 +4,10 @@
 
 #include <cstdint>
 #include <span>
+#include <string_view>
 
-#include "tire/math/vec2.h"
-#include "tire/rigid/prop_spec.h"
-#include "tire/rigid/prop_state.h"
+#include "tire/math/geometry.h"
+#include "tire/rigid/bodies.h"
 #include "tire/tire/tick_contacts.h"
 #include "tire/tire/tire_spec.h"
 
@@ -42,11 +42,20 @@ struct EnergyView {
   double total() const { return kinetic + gravitational + elastic; }
 };
 
+// How far tires are inside each other: the deepest tread particle of one tire inside another's
+// tread polygon (docs/at-rest.md).
+struct TireOverlap {
+  double depth = 0.0;  // how far the particle is from the other's tread, inside it (m); 0 for none
+  TireId tire = 0;     // the tire whose particle it is
+  TireId inside = 0;   // the tire it is inside
+};
+
 struct PropView {
   PropId id = 0;
   PropType type = PropType::static_body;
   PropShape shape = PropShape::box;
-  bool alive = false;  // a removed prop stays, dead
+  bool alive = false;     // a removed prop stays, dead
+  std::string_view name;  // as the level names it; "" for none
   PropState state;
 };
 

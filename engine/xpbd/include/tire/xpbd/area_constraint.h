@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 

@@ -11,9 +11,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "tire/math/aabb.h"
 #include "tire/math/check.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "tire/math/array_block.h"
+#include "tire/math/geometry.h"
 #include "tire/math/prefetch.h"
-#include "tire/math/vec2.h"
 
 namespace tire {
 

@@ -12,7 +12,7 @@
 #include <cstddef>
 
 #include "tire/math/array_block.h"
-#include "tire/math/vec2.h"
+#include "tire/math/geometry.h"
 
 namespace tire {
 

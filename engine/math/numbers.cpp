@@ -1,6 +1,14 @@
-#include "tire/math/state_hash.h"
+#include "tire/math/numbers.h"
+
+#include <sstream>
 
 namespace tire {
+
+std::string Range::text() const {
+  std::ostringstream s;
+  s << (min_open ? '(' : '[') << min << ", " << max << (max_open ? ')' : ']');
+  return s.str();
+}
 
 std::string to_hex(std::uint64_t value) {
   static constexpr char digits[] = "0123456789abcdef";
