@@ -43,6 +43,7 @@ LevelInfo level_info(const Level& level) {
           level.solver.dt,
           level.script.time_limit,
           level.medals,
+          level.tires.size(),
           level.bounds.box,
           level.bounds.min.has_value(),
           level.bounds.max.has_value()};
