@@ -77,8 +77,9 @@ std::vector<TireId> Simulation::tires() const {
 
 std::optional<TireView> Simulation::tire(TireId id) const { return session_->world().tire_view(id); }
 std::size_t Simulation::tire_count() const { return session_->world().tires().size(); }
-TireView Simulation::tire_at(std::size_t index) const {
+std::optional<TireView> Simulation::tire_at(std::size_t index) const {
   const World& world = session_->world();
+  if (index >= world.tires().size()) return std::nullopt;
   return world.view_of(world.tires()[index]);
 }
 std::size_t Simulation::prop_count() const { return session_->world().rigid().props().size(); }

@@ -394,8 +394,8 @@ void App::mouse_down(int x, int y) {
   const tire::Vec2 p = mouse_to_world(x, y);
   const double radius = std::max(0.2, camera_.metres(14.0));
   const tire::Simulation& simulation = session_.simulation();
-  for (std::size_t i = 0; i < simulation.tire_count(); ++i) {
-    if (const tire::TireView t = simulation.tire_at(i); length(t.centroid - p) <= t.outer_radius + radius) {
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+    if (length(t->centroid - p) <= t->outer_radius + radius) {
       session_.queue(GrabEvent{p, radius});
       grabbing_ = true;
       return;

@@ -183,7 +183,7 @@ class App {
   GhostRenderer ghost_renderer_;
   std::optional<RunResult> run_result_;  // the finished level's time and whether it is a best
   std::string hud_target_;               // the HUD's time to beat (BestRuns::note)
-  int respawns_seen_ = 0;                // LevelSession::respawns() already told
+  int respawns_seen_ = 0;                // Simulation::respawns() already told
   // Heard after every tick (sound/sound_system.h).
   sound::SoundSystem sound_;
 };

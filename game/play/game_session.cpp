@@ -88,12 +88,9 @@ void GameSession::apply(const SessionEvent& event) {
 
 void GameSession::step(const tire::TickInput& input) {
   flush();
-  const std::size_t tires = simulation_->tire_count();
-  for (std::size_t i = 0; i < tires; ++i) {
-    const tire::TireView t = simulation_->tire_at(i);
-    previous_x_[t.id].assign(t.positions.begin(), t.positions.end());  // reuses capacity
-  }
-  if (previous_x_.size() > 2 * tires + 16)
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation_->tire_at(i); ++i)
+    previous_x_[t->id].assign(t->positions.begin(), t->positions.end());  // reuses capacity
+  if (previous_x_.size() > 2 * simulation_->tire_count() + 16)
     std::erase_if(previous_x_, [this](const auto& entry) { return !simulation_->tire(entry.first); });
   const std::size_t props = simulation_->prop_count();
   previous_poses_.resize(props);

@@ -93,11 +93,10 @@ tire::Aabb level_bounds(const tire::Simulation& simulation, double margin, doubl
     box.include(r.box.min);
     box.include(r.box.max);
   }
-  for (std::size_t i = 0; i < simulation.tire_count(); ++i) {
-    const tire::TireView t = simulation.tire_at(i);
-    const double r = t.outer_radius;
-    box.include(t.centroid - tire::Vec2{r, r});
-    box.include(t.centroid + tire::Vec2{r, r});
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+    const double r = t->outer_radius;
+    box.include(t->centroid - tire::Vec2{r, r});
+    box.include(t->centroid + tire::Vec2{r, r});
   }
   if (box.holds_nothing()) return {{-10, -2}, {10, 8}};
   box.min -= tire::Vec2{margin, below};

@@ -148,9 +148,8 @@ void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& sessi
   d.flush();
   // The debug view shades sleeping tires.
   const auto shaded = [&debug](const tire::TireView& t) { return debug.enabled && t.asleep; };
-  for (std::size_t i = 0; i < simulation.tire_count(); ++i)
-    if (const tire::TireView t = simulation.tire_at(i); !t.player)
-      draw_tire(d, camera, session, t, alpha, false, shaded(t));
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i)
+    if (!t->player) draw_tire(d, camera, session, *t, alpha, false, shaded(*t));
   for (TireTexture& tex : tire_textures_) {
     if (tex.vertices.empty()) continue;
     SDL_RenderGeometry(d.renderer(), tex.texture, tex.vertices.data(), static_cast<int>(tex.vertices.size()),
@@ -406,12 +405,11 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
 
 void WorldRenderer::draw_grab(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
   const tire::Simulation& simulation = session.simulation();
-  for (std::size_t i = 0; i < simulation.tire_count(); ++i) {
-    const tire::TireView t = simulation.tire_at(i);
-    if (!t.grab) continue;
-    session.interpolated_positions(t, alpha, positions_);
-    const ScreenPoint from = camera.to_screen(positions_[t.grab->particle]);
-    const ScreenPoint to = camera.to_screen(t.grab->target);
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+    if (!t->grab) continue;
+    session.interpolated_positions(*t, alpha, positions_);
+    const ScreenPoint from = camera.to_screen(positions_[t->grab->particle]);
+    const ScreenPoint to = camera.to_screen(t->grab->target);
     d.line(from, to, 2.0f, rgba(255, 230, 90));
     d.circle(to, 5.0f, rgba(255, 230, 90), 12);
     d.circle(from, 4.0f, rgba(230, 80, 40), 12);

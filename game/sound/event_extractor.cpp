@@ -88,9 +88,8 @@ void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::
   const std::optional<tire::TireId> player_id = simulation.player();
   const std::optional<tire::TireView> player = player_id ? simulation.tire(*player_id) : std::nullopt;
   listener_x_ = player ? std::optional<double>(player->centroid.x) : std::nullopt;
-  const std::size_t tires = simulation.tire_count();
-  for (std::size_t i = 0; i < tires; ++i) {
-    const tire::TireView t = simulation.tire_at(i);
+  for (std::size_t i = 0; const std::optional<tire::TireView> view = simulation.tire_at(i); ++i) {
+    const tire::TireView& t = *view;
     if (t.asleep) continue;  // not simulated: silent, and its figures are those it fell asleep with
     impacts(t, tick, out);
     const double pitch_scale = size_pitch(t);
@@ -116,7 +115,7 @@ void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::
     }
   }
   // Forget tires that are gone, now and then (ids are never reused).
-  if (tires_.size() > 2 * tires + 16)
+  if (tires_.size() > 2 * simulation.tire_count() + 16)
     std::erase_if(tires_, [&](const auto& entry) { return !simulation.tire(entry.first); });
   if (input.jump && player_grounded_ && player)
     out.push_back({tick, SoundKind::jump, Surface::none, -1, tuning_.jump_gain, 1.0});

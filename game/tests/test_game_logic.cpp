@@ -234,12 +234,12 @@ TEST_CASE("a run the tuning panel changed is marked tuned until the level restar
 TEST_CASE("drawing interpolates between the last two ticks", "[unit][game]") {
   GameSession session;
   session.start("flat.json", flat_level());
-  const tire::TireView t = session.simulation().tire_at(0);
+  const tire::TireView t = *session.simulation().tire_at(0);
   std::vector<tire::Vec2> out;
   session.interpolated_positions(t, 0.5, out);  // no previous tick yet: as it is
   CHECK(std::ranges::equal(out, t.positions));
   for (int i = 0; i < 30; ++i) session.step({1.0, false});
-  const tire::TireView moved = session.simulation().tire_at(0);
+  const tire::TireView moved = *session.simulation().tire_at(0);
   const std::vector<tire::Vec2> now(moved.positions.begin(), moved.positions.end());
   session.interpolated_positions(moved, 1.0, out);
   CHECK(out == now);

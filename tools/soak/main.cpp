@@ -162,9 +162,9 @@ int main(int argc, char** argv) {
     if (const std::size_t tires = simulation.tire_count();
         grab_ticks_left == 0 && unit(rng) < 1.0 / 240.0 && tires > 0) {
       // Press on a random tire's tread, then drag it about for up to two seconds.
-      const tire::TireView t =
+      const std::optional<tire::TireView> t =
           simulation.tire_at(static_cast<std::size_t>(unit(rng) * static_cast<double>(tires)) % tires);
-      in.grab = t.positions[0];
+      in.grab = t->positions[0];
       drag_target = *in.grab;
       grab_ticks_left = 1 + static_cast<int>(unit(rng) * 120.0);
       any = true;
@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
       simulation.apply(in, held);
       if (simulation.tire_count() > before) {
         ++spawns;
-        spawned.push_back(simulation.tire_at(simulation.tire_count() - 1).id);
+        spawned.push_back(simulation.tire_at(simulation.tire_count() - 1)->id);
       }
     }
     simulation.step(held);
@@ -206,12 +206,12 @@ int main(int argc, char** argv) {
       }
     }
 
-    for (std::size_t i = 0; i < simulation.tire_count(); ++i)
-      if (const tire::TireView t = simulation.tire_at(i); !finite(t)) {
+    for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i)
+      if (!finite(*t)) {
         ++nonfinite;
         if (nonfinite <= 5)
           std::fprintf(stderr, "tire-soak: tick %llu: tire %u is not finite\n",
-                       static_cast<unsigned long long>(tick + 1), t.id);
+                       static_cast<unsigned long long>(tick + 1), t->id);
       }
     if (simulation.tire_count() > static_cast<std::size_t>(budget)) {
       ++over_budget;  // a budget passed: the engine let more live than it was given
@@ -239,14 +239,13 @@ int main(int argc, char** argv) {
         rss_max_after = std::max(rss_max_after, rss), heap_max_after = std::max(heap_max_after, heap);
       double max_speed = 0.0;
       std::size_t outside = 0;  // tires whose hub is outside the level's bounding box (thrown out, falling)
-      for (std::size_t i = 0; i < simulation.tire_count(); ++i) {
-        const tire::TireView t = simulation.tire_at(i);
-        max_speed = std::max(max_speed, tire::length(t.velocity));
-        const tire::Vec2 c = t.centroid;
+      for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+        max_speed = std::max(max_speed, tire::length(t->velocity));
+        const tire::Vec2 c = t->centroid;
         outside += c.x < region.world_min.x || c.x > region.world_max.x || c.y < region.world_min.y - 1.0;
         if (c.y < region.world_min.y - 1.0 && std::getenv("TIRE_SOAK_DEBUG"))
-          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t.id, c.x, c.y,
-                       t.velocity.x, t.velocity.y);
+          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t->id, c.x, c.y,
+                       t->velocity.x, t->velocity.y);
       }
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

@@ -107,9 +107,11 @@ class Simulation {
   std::vector<TireId> tires() const;  // in the order they were added
   std::optional<TireView> tire(TireId id) const;
   // The tires without building a list, for what reads them every frame: index 0 .. tire_count() − 1,
-  // in the order they were added (an index moves when a tire before it is removed).
+  // in the order they were added (an index moves when a tire before it is removed); nullopt past
+  // the last, so that a walk reads
+  //   for (std::size_t i = 0; const std::optional<TireView> t = simulation.tire_at(i); ++i)
   std::size_t tire_count() const;
-  TireView tire_at(std::size_t index) const;
+  std::optional<TireView> tire_at(std::size_t index) const;
   std::size_t prop_count() const;  // ids 0 .. prop_count() − 1
   std::optional<PropView> prop(PropId id) const;
   std::span<const Obstacle> obstacles() const;
