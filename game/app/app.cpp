@@ -805,7 +805,7 @@ std::string App::summary_json(long long frames) const {
                   {"max_voices", sound_.max_playing()},
                   {"muted", sound_.muted()}};
   // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
-  // (World::step), the rendering (drawing, ImGui, present) and the whole frame.
+  // (Simulation::step), the rendering (drawing, ImGui, present) and the whole frame.
   const auto stats = [](const TimeStats& t) {
     return nlohmann::json{{"median", t.median}, {"p99", t.p99}, {"max", t.max}};
   };

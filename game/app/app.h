@@ -1,4 +1,4 @@
-// The game's window and main loop: input, the fixed-timestep simulation (World::step through
+// The game's window and main loop: input, the fixed-timestep simulation (Simulation::step through
 // GameSession), interpolated drawing, the HUD and panels, the level menu, win/lose screens and hot
 // reload. Wall-clock time paces the loop and feeds the FPS and physics-time readouts; it never
 // reaches the simulation, which only ever advances by whole ticks of the level's dt.

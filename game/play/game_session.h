@@ -20,7 +20,7 @@ namespace game {
 
 class GameSession {
  public:
-  // Builds a fresh simulation from `level` at once (no observer call: use a LoadLevelEvent for that).
+  // A fresh simulation of `level`, at once (no observer call: use a LoadLevelEvent for that).
   void start(std::string path, std::shared_ptr<const tire::Level> level);
 
   // Queues an event for the next flush. Consecutive MoveGrabEvents collapse into the last one.

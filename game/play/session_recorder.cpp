@@ -84,8 +84,8 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
               input(in);
               steer_ = inflate_ = 0.0;
               gravity_ = tire::level_info(*e.level).gravity;
-            } else {
-              begin(file, tire::level_info(*e.level).gravity);  // another level, or the file changed
+            } else {  // another level, or the file changed: a new recording
+              begin(file, tire::level_info(*e.level).gravity);
             }
           } else if constexpr (std::is_same_v<T, SpawnTireEvent>) {
             in.spawn = e.position;

@@ -1,7 +1,7 @@
-// Records every session as a replay (engine/replay.h): attached to the GameSession as its observer,
-// it turns each input the World receives into a replay input, at the replay's own tick count.
-// A restart of the same level is a "restart" input; loading another level (or a changed file)
-// starts a new recording. F5 saves the current one.
+// Records every session as a replay (tire/replay/replay_file.h): attached to the GameSession as its
+// observer, it turns each input the simulation receives into a replay input, at the replay's own
+// tick count. A restart of the same level is a "restart" input; loading another level (or a changed
+// file) starts a new recording. F5 saves the current one.
 #pragma once
 
 #include <filesystem>

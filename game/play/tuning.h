@@ -1,5 +1,5 @@
-// The live-tunable numbers of the tuning panel and how a change reaches the simulation. The keys are
-// the parameter table's rows that the panel may set (tire/parameters.h), in the table's order;
+// The live-tunable numbers of the tuning panel and how a change reaches the simulation. The keys
+// are the parameter table's rows that the panel may set (tire/parameters.h), in the table's order;
 // each slider's range lies inside its row's range. A change is always a key = value pair (a
 // TuneEvent), so a replay can log and re-apply it.
 #pragma once

@@ -1,7 +1,8 @@
 // The ghost of the best run: a replay (the existing tire-replay/1 format) played in a Simulation of
-// its own, stepped in lockstep with the player's (one tick of the ghost for each tick of the player's,
-// from the replay's inputs) and never touching it. Only its player tire is drawn, translucent
-// (ghost_draw.h). Replays are bit-exact, so the ghost is exactly the run that was recorded.
+// its own, stepped in lockstep with the player's (one tick of the ghost for each tick of the
+// player's, from the replay's inputs) and never touching it. Only its player tire is drawn,
+// translucent (ghost_draw.h). Replays are bit-exact, so the ghost is exactly the run that was
+// recorded.
 #pragma once
 
 #include <cstdint>

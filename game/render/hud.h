@@ -36,11 +36,11 @@ struct DevInfo {
   bool shown = false;  // F3
   std::uint64_t tick = 0;
   double fps = 0.0;
-  double physics_ms = 0.0;  // wall time spent in World::step per frame (smoothed)
+  double physics_ms = 0.0;  // wall time spent in Simulation::step per frame (smoothed)
   int steps_last_frame = 0;
   std::size_t tires = 0;
-  std::size_t asleep = 0;           // tires asleep (World::asleep_count)
-  std::uint64_t failed_solves = 0;  // World::failed_solves
+  std::size_t asleep = 0;           // tires asleep (Simulation::asleep_count)
+  std::uint64_t failed_solves = 0;  // Simulation::solver_failures
 };
 
 // Seconds left of a time limit, never below 0.

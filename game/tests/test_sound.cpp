@@ -91,7 +91,7 @@ TEST_CASE("a tire dropped from 3 m makes a louder first impact than one dropped 
 TEST_CASE("a tire resting 5 s makes no impact sound after it settles", "[sound]") {
   auto session = session_of(test_level("resting.json"));
   const auto events = play(*session, 360);
-  REQUIRE(!world_of(*session).tires().front().asleep);  // sleeping is off: it is simulated throughout
+  REQUIRE(!world_of(*session).tires().front().asleep);  // sleeping is off: simulated throughout
   for (const SoundEvent& e : of_kind(events, SoundKind::impact)) {
     INFO("impact at tick " << e.tick << " gain " << e.gain);
     CHECK(e.tick <= 60);

@@ -104,8 +104,9 @@ int main(int argc, char** argv) {
     for (const std::string& e : first.errors) std::fprintf(stderr, "%s\n", e.c_str());
     return 2;
   }
-  // --max-tires is the soak's own spawns; the level's run budget of live tires becomes its own tires
-  // and those (levels/README.md, "budgets"), so that a script spawning on top is held to it too.
+  // --max-tires is the soak's own spawns; the level's run budget of live tires becomes its own
+  // tires and those (levels/README.md, "budgets"), so that a script spawning on top is held to it
+  // too.
   const auto level_budget =
       static_cast<std::size_t>(tire::Simulation(first.level).parameter("budgets.tires").value_or(0.0));
   const int budget = static_cast<int>(std::min(level_budget, first.info.tires + opt.max_tires));

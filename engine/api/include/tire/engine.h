@@ -106,9 +106,9 @@ class Simulation {
   std::optional<TireId> player() const;
   std::vector<TireId> tires() const;  // in the order they were added
   std::optional<TireView> tire(TireId id) const;
-  // The tires without building a list, for what reads them every frame: index 0 .. tire_count() − 1,
-  // in the order they were added (an index moves when a tire before it is removed); nullopt past
-  // the last, so that a walk reads
+  // The tires without building a list, for what reads them every frame: by index from 0, in the
+  // order they were added (an index moves when a tire before it is removed); nullopt past the
+  // last, so that a walk reads
   //   for (std::size_t i = 0; const std::optional<TireView> t = simulation.tire_at(i); ++i)
   std::size_t tire_count() const;
   std::optional<TireView> tire_at(std::size_t index) const;

@@ -77,7 +77,7 @@ struct PropView {
   double radius = 0.0;            // a circle's (m)
   double thickness = 0.0;         // a chain's: how far behind its line still counts as inside (m)
   bool loop = false;              // a chain's: closed
-  Aabb local_bounds;              // the shape's box in its frame (a chain's widened by its thickness)
+  Aabb local_bounds;              // its box in its frame (a chain's widened by its thickness)
   std::span<const Vec2> path;     // a kinematic prop's waypoints, in the world; empty for none
 };
 
