@@ -93,6 +93,89 @@ TEST_CASE("a world built in code is read through ids and views and driven by com
   CHECK(sim.take_warnings().empty());
 }
 
+TEST_CASE("what a game draws and hears is read through views: tires, props, the script", "[unit][api]") {
+  const LevelOpen open = open_level_file(kRoot / "levels/01-first-roll.json");
+  REQUIRE(open.level);
+  CHECK(open.info.tires == 1);
+  CHECK_FALSE(open.info.bounds_min_given);  // computed from its geometry
+  CHECK(open.info.bounds.min.y < 0.0);
+  Simulation sim(open.level);
+
+  // The tires, walked by index without a list; nullopt past the last.
+  REQUIRE(sim.tire_count() == 1);
+  const std::optional<TireView> player = sim.tire_at(0);
+  REQUIRE(player);
+  CHECK_FALSE(sim.tire_at(1));
+  CHECK(player->player);
+  CHECK(player->outer_radius > player->inner_radius);
+  CHECK(player->inner_radius > 0.0);
+  CHECK(player->mass > 0.0);
+  CHECK_FALSE(player->grab);
+
+  // The script: its regions and goal, and the message its start trigger shows.
+  REQUIRE(sim.goal());
+  REQUIRE(*sim.goal() < sim.regions().size());
+  CHECK(sim.regions()[*sim.goal()].name == "flag");
+  REQUIRE(sim.messages().size() == 1);
+  CHECK(sim.messages().front().text.starts_with("Hold right"));
+  CHECK_FALSE(sim.checkpoint());
+  CHECK_FALSE(sim.next_level_requested());
+  CHECK((!sim.obstacles().empty() || sim.prop_count() > 0));  // it has ground
+
+  // A tire spawned within the budgets, a grab by a point near its tread, dragged and let go.
+  TireSpec spec;
+  spec.position = {5.0, 3.0};
+  spec.player = false;
+  const std::optional<TireId> spawned = sim.spawn_tire(spec);
+  REQUIRE(spawned);
+  CHECK(sim.tire_count() == 2);
+  const std::optional<TireId> grabbed = sim.grab_at({5.0, 3.0 + sim.tire(*spawned)->outer_radius}, 0.3);
+  CHECK(grabbed == spawned);
+  sim.move_grab({5.0, 4.0});
+  REQUIRE(sim.tire(*spawned)->grab);
+  CHECK(sim.tire(*spawned)->grab->target == Vec2{5.0, 4.0});
+  sim.release_grab();
+  CHECK_FALSE(sim.tire(*spawned)->grab);
+  CHECK_FALSE(sim.grab_at({-500.0, 500.0}, 0.3));  // nothing there
+
+  // Sleeping off, then on: the setting follows, every tire awake.
+  sim.set_sleep(false);
+  CHECK_FALSE(sim.config().sleep);
+  sim.set_sleep(true);
+  CHECK(sim.config().sleep);
+  sim.wake_all();
+  CHECK(sim.asleep_count() == 0);
+}
+
+TEST_CASE("a prop's view holds its shape in its own frame", "[unit][api]") {
+  Simulation sim(SolverConfig{}, {0.0, -9.81});
+  PropSpec box;
+  box.size = {2.0, 1.0};
+  box.position = {1.0, 2.0};
+  PropSpec wheel;
+  wheel.shape = PropShape::circle;
+  wheel.radius = 0.25;
+  PropSpec ground;
+  ground.shape = PropShape::chain;
+  ground.points = {{-5.0, 0.0}, {0.0, -1.0}, {5.0, 0.0}};
+  ground.thickness = 0.4;
+  const std::optional<PropView> b = sim.prop(sim.add_prop(box));
+  const std::optional<PropView> w = sim.prop(sim.add_prop(wheel));
+  const std::optional<PropView> g = sim.prop(sim.add_prop(ground));
+  REQUIRE((b && w && g));
+  CHECK(b->vertices.size() == 4);
+  CHECK(b->local_bounds.min == Vec2{-1.0, -0.5});
+  CHECK(b->state.pose.position == Vec2{1.0, 2.0});
+  CHECK(w->shape == PropShape::circle);
+  CHECK(w->radius == 0.25);
+  CHECK(w->vertices.empty());
+  CHECK(g->vertices.size() == 3);
+  CHECK(g->normals.size() == 2);
+  CHECK(g->thickness == 0.4);
+  CHECK_FALSE(g->loop);
+  CHECK(g->path.empty());
+}
+
 TEST_CASE("a shipped replay checks out, and one whose level changed does not", "[unit][api]") {
   const ReplayCheck ok = check_replay(kRoot / "tests/replays/01-first-roll-goal.json");
   CHECK(ok.passed);

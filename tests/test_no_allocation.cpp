@@ -28,6 +28,7 @@
 #include <new>
 #include <vector>
 
+#include "tire/engine.h"
 #include "tire_fixtures.h"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -301,6 +302,31 @@ TEST_CASE("stepping a world does not allocate", "[unit][performance]") {
   const HeapActivity before = HeapActivity::now();
   for (int i = 0; i < 600; ++i) world.step({i % 100 < 50 ? 1.0 : -1.0, i % 60 == 0});
   check_untouched(before);
+}
+
+TEST_CASE("reading a simulation's views, as a game does every frame, does not allocate",
+          "[unit][performance]") {
+  Simulation sim(SolverConfig{}, {0, -9.81});
+  sim.add_obstacle({{{-100, -1}, {100, 0}}});
+  PropSpec crate;
+  crate.type = PropType::dynamic_body;
+  crate.position = {3.0, 0.5};
+  sim.add_prop(crate);
+  for (int i = 0; i < 4; ++i) sim.add_tire(tire_at({1.5 * i, 0.6 + i}));
+  for (int i = 0; i < 10; ++i) sim.step({1.0, false});
+  const HeapActivity before = HeapActivity::now();
+  double sum = 0.0;
+  for (int frame = 0; frame < 60; ++frame) {
+    for (std::size_t i = 0; const std::optional<TireView> t = sim.tire_at(i); ++i)
+      sum += t->positions.front().x + t->outer_radius + (t->grab ? 1.0 : 0.0);
+    for (PropId i = 0; i < sim.prop_count(); ++i)
+      if (const std::optional<PropView> p = sim.prop(i))
+        sum += p->state.pose.position.x + static_cast<double>(p->vertices.size());
+    for (const Obstacle& o : sim.obstacles()) sum += o.box.min.x;
+    sum += static_cast<double>(sim.regions().size() + sim.messages().size());
+  }
+  check_untouched(before);
+  CHECK(std::isfinite(sum));
 }
 
 TEST_CASE("stepping a pile of tires on two threads does not allocate", "[unit][performance]") {

@@ -43,6 +43,9 @@ SimulationLoad Simulation::load(const std::filesystem::path& level_file) {
 }
 
 TireId Simulation::add_tire(const TireSpec& spec) { return session_->world().add_tire(spec); }
+std::optional<TireId> Simulation::spawn_tire(const TireSpec& spec) {
+  return session_->world().spawn_tire(spec);
+}
 PropId Simulation::add_prop(const PropSpec& spec) { return session_->world().add_prop(spec); }
 void Simulation::add_obstacle(const Obstacle& obstacle) { session_->world().add_obstacle(obstacle); }
 bool Simulation::remove_tire(TireId id) { return session_->world().remove_tire(id); }
@@ -73,8 +76,27 @@ std::vector<TireId> Simulation::tires() const {
 }
 
 std::optional<TireView> Simulation::tire(TireId id) const { return session_->world().tire_view(id); }
+std::size_t Simulation::tire_count() const { return session_->world().tires().size(); }
+std::optional<TireView> Simulation::tire_at(std::size_t index) const {
+  const World& world = session_->world();
+  if (index >= world.tires().size()) return std::nullopt;
+  return world.view_of(world.tires()[index]);
+}
 std::size_t Simulation::prop_count() const { return session_->world().rigid().props().size(); }
 std::optional<PropView> Simulation::prop(PropId id) const { return session_->world().prop_view(id); }
+std::span<const Obstacle> Simulation::obstacles() const { return session_->world().rigid().obstacles(); }
+
+std::span<const Region> Simulation::regions() const {
+  const ScriptRunner* script = session_->script();
+  return script ? std::span<const Region>(script->spec().regions) : std::span<const Region>();
+}
+std::optional<std::size_t> Simulation::goal() const {
+  const ScriptRunner* script = session_->script();
+  return script ? script->spec().goal : std::nullopt;
+}
+std::span<const ScriptMessage> Simulation::messages() const { return session_->messages(); }
+std::optional<Vec2> Simulation::checkpoint() const { return session_->checkpoint(); }
+bool Simulation::next_level_requested() const { return session_->next_level_requested(); }
 std::size_t Simulation::asleep_count() const { return session_->world().asleep_count(); }
 std::uint64_t Simulation::solver_failures() const { return session_->world().failed_solves(); }
 
@@ -124,6 +146,15 @@ bool Simulation::move_grab(TireId id, Vec2 target) {
   return session_->world().move_grabbed_particle(id, target);
 }
 bool Simulation::release(TireId id) { return session_->world().release_particle(id); }
+std::optional<TireId> Simulation::grab_at(Vec2 point, double radius) { return session_->grab(point, radius); }
+void Simulation::move_grab(Vec2 target) { session_->move_grab(target); }
+void Simulation::release_grab() { session_->release_grab(); }
+
+void Simulation::set_sleep(bool on) {
+  session_->world().config().sleep = on;
+  session_->world().wake_all();
+}
+void Simulation::wake_all() { session_->world().wake_all(); }
 
 void Simulation::set_threads(unsigned threads) { session_->world().set_threads(threads); }
 

@@ -20,7 +20,7 @@ LevelOpen opened(LevelLoad load) {
 
 LevelOpen open_level_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::string error;
-  const std::optional<std::string> text = read_file(file, LevelLimits::max_file_bytes, error);
+  const std::optional<std::string> text = read_level_text(file, error);
   if (!text) {
     LevelOpen out;
     out.errors.push_back(printable(file.string()) + ": " + error);
@@ -37,8 +37,20 @@ LevelOpen open_level_text(const std::string& text, const std::string& file,
 }
 
 LevelInfo level_info(const Level& level) {
-  return {level.name,      level.description,       level.gravity,
-          level.solver.dt, level.script.time_limit, level.medals};
+  return {level.name,
+          level.description,
+          level.gravity,
+          level.solver.dt,
+          level.script.time_limit,
+          level.medals,
+          level.tires.size(),
+          level.bounds.box,
+          level.bounds.min.has_value(),
+          level.bounds.max.has_value()};
+}
+
+std::optional<std::string> read_level_text(const std::filesystem::path& file, std::string& error) {
+  return read_file(file, LevelLimits::max_file_bytes, error);
 }
 
 std::vector<std::filesystem::path> level_files(const std::filesystem::path& dir, std::string& error) {

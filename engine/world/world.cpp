@@ -364,14 +364,19 @@ TireView World::view_of(const Tire& t) const {
   v.player = player_ && *player_ == t.id;
   v.asleep = t.asleep;
   v.grounded = t.grounded();
+  v.may_jump = t.touched_ground_within(config_.jump_grace);
   v.centroid = m.centroid;
   v.velocity = m.velocity;
   v.spin = m.omega;
   v.area_ratio = t.area_ratio();
   v.pressure = t.spec.pressure;
+  v.outer_radius = t.spec.outer_radius;
+  v.inner_radius = t.spec.inner_radius;
+  v.mass = t.total_mass();
   v.segments = t.n;
   v.positions = t.particles.x;
   v.contacts = t.tick_contacts;
+  if (t.grabbed) v.grab = TireGrab{t.grab_particle, t.grab_target};
   return v;
 }
 
@@ -386,6 +391,14 @@ std::optional<PropView> World::prop_view(PropId id) const {
   v.alive = p.alive;
   v.name = p.spec.name;
   if (p.alive) v.state = rigid_.prop_state(id);
+  const PropGeometry& g = p.geometry;
+  v.vertices = g.vertices;
+  v.normals = g.normals;
+  v.radius = g.radius;
+  v.thickness = g.thickness;
+  v.loop = g.loop;
+  v.local_bounds = g.local_bounds();
+  v.path = p.spec.path.waypoints;
   return v;
 }
 

@@ -76,16 +76,16 @@ bool App::open_window() {
 // ---- Levels --------------------------------------------------------------------------------------
 
 bool App::load_level(const std::filesystem::path& file) {
-  tire::LevelLoad load = tire::load_level_file(file);
+  tire::LevelOpen load = tire::open_level_file(file);
   if (!load.level) {
     level_errors_ = std::move(load.errors);
     error_file_ = file.string();
     return false;
   }
   level_errors_.clear();
-  auto level = std::make_shared<const tire::Level>(std::move(*load.level));
+  std::shared_ptr<const tire::Level> level = std::move(load.level);
   if (!session_.loaded()) {
-    recorder_.begin(file, level->gravity);
+    recorder_.begin(file, load.info.gravity);
     session_.start(file.string(), std::move(level));
     session_.set_observer(&recorder_);
   } else {
@@ -119,10 +119,10 @@ void App::go_to_level(int delta) {
 void App::after_level_change() {
   seen_generation_ = session_.generation();
   level_tuning_ = session_.tuning();
-  bounds_ = level_bounds(session_.level_session());
-  world_renderer_.set_underground(underground(session_.world()));
-  const tire::Tire* player = session_.world().player();
-  camera_.snap(player ? camera_.aim(player->centroid(), {}) : (bounds_.min + bounds_.max) * 0.5, bounds_);
+  bounds_ = level_bounds(session_.simulation());
+  world_renderer_.set_underground(underground(session_.simulation()));
+  const std::optional<tire::TireView> player = player_view();
+  camera_.snap(player ? camera_.aim(player->centroid, {}) : (bounds_.min + bounds_.max) * 0.5, bounds_);
   accumulator_ = 0.0;
   pending_jump_ = false;
   grabbing_ = false;
@@ -131,7 +131,7 @@ void App::after_level_change() {
   run_result_.reset();
   std::vector<std::string> messages;
   best_runs_.level_started(session_.path(), session_.level_ptr(), messages);
-  best_runs_.ticked(session_.world().tick());
+  best_runs_.ticked(session_.simulation().tick());
   for (const std::string& m : messages) warn(m);
   hud_target_ = best_runs_.target(session_.path(), session_.level().medals);
   respawns_seen_ = 0;
@@ -163,7 +163,7 @@ void App::play_edited_level() {
   }
   const std::string path = editor_->document().file().string();
   if (!session_.loaded()) {
-    recorder_.begin(path, level->gravity);
+    recorder_.begin(path, editor_->document().info().gravity);
     session_.start(path, level);
     session_.set_observer(&recorder_);
   } else {
@@ -199,7 +199,12 @@ void App::editor_frame() {
   }
 }
 
-bool App::level_over() const { return session_.level_session().status() != tire::ScriptStatus::running; }
+bool App::level_over() const { return session_.simulation().status() != tire::ScriptStatus::running; }
+
+std::optional<tire::TireView> App::player_view() const {
+  const std::optional<tire::TireId> id = session_.simulation().player();
+  return id ? session_.simulation().tire(*id) : std::nullopt;
+}
 
 // Saves the session so far into replays/ beside the levels folder, under a name with the level and
 // the time, written atomically and never over an earlier save (a second save in the same second is
@@ -207,7 +212,7 @@ bool App::level_over() const { return session_.level_session().status() != tire:
 void App::save_replay() {
   const std::filesystem::path dir = std::filesystem::absolute(options_.levels_dir).parent_path() / "replays";
   std::string error;
-  if (const auto file = recorder_.save_new(session_.level_session(), recorder_.default_file(dir), error))
+  if (const auto file = recorder_.save_new(session_.simulation(), recorder_.default_file(dir), error))
     warn("replay saved: " + file->string() + " (" + std::to_string(recorder_.ticks()) + " ticks)");
   else
     warn("cannot save the replay: " + error);
@@ -336,7 +341,7 @@ void App::key_down(SDL_Scancode k) {
     return;
   }
   if (level_over()) {
-    const bool won = session_.level_session().status() == tire::ScriptStatus::won;
+    const bool won = session_.simulation().status() == tire::ScriptStatus::won;
     if (k == SDL_SCANCODE_N || (won && is_any(k, {SDL_SCANCODE_RETURN, SDL_SCANCODE_KP_ENTER}))) {
       go_to_level(+1);
       return;
@@ -388,8 +393,9 @@ void App::take_clicks() {
 void App::mouse_down(int x, int y) {
   const tire::Vec2 p = mouse_to_world(x, y);
   const double radius = std::max(0.2, camera_.metres(14.0));
-  for (const tire::Tire& t : session_.world().tires()) {
-    if (length(t.centroid() - p) <= t.spec.outer_radius + radius) {
+  const tire::Simulation& simulation = session_.simulation();
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+    if (length(t->centroid - p) <= t->outer_radius + radius) {
       session_.queue(GrabEvent{p, radius});
       grabbing_ = true;
       return;
@@ -426,12 +432,12 @@ void App::step_once() {
   const Uint64 start = SDL_GetPerformanceCounter();
   session_.step(input);
   frame_physics_seconds_ += seconds_since(start);
-  sound_.after_tick(session_.level_session(), input);
+  sound_.after_tick(session_.simulation(), input);
   pending_jump_ = false;
   ++steps_this_frame_;
   for (const std::string& w : session_.take_warnings()) warn(w);
-  best_runs_.ticked(session_.world().tick());
-  if (const int respawns = session_.level_session().respawns(); respawns > respawns_seen_) {
+  best_runs_.ticked(session_.simulation().tick());
+  if (const int respawns = session_.simulation().respawns(); respawns > respawns_seen_) {
     respawns_seen_ = respawns;
     warn("out of the level: back to the checkpoint");
   }
@@ -466,16 +472,16 @@ void App::pad_event(const SDL_Event& e) {
 
 // The level was just won or lost: the time goes into the progress, a best run becomes the ghost.
 void App::level_finished() {
-  finished_at_ = session_.world().time();
-  const bool won = session_.level_session().status() == tire::ScriptStatus::won;
+  finished_at_ = session_.simulation().time();
+  const bool won = session_.simulation().status() == tire::ScriptStatus::won;
   // A level played from the editor with unsaved changes is not the file: its time is not recorded.
   const bool is_file =
       !(editor_ && editor_->document().modified() && editor_->document().file() == session_.path());
   // Nor is a run the tuning panel changed (gravity, friction, the solver...): it is not the level.
   const bool tuned = session_.tuned();
   std::vector<std::string> messages;
-  run_result_ = best_runs_.finished(won, *finished_at_, session_.world().tick(), is_file && !tuned, recorder_,
-                                    session_.level_session(), messages);
+  run_result_ = best_runs_.finished(won, *finished_at_, session_.simulation().tick(), is_file && !tuned,
+                                    recorder_, session_.simulation(), messages);
   if (tuned) run_result_->medal = tire::Medal::none;  // not the level's times
   if (tuned && best_runs_.enabled()) run_result_->note = "tuned (F2): not a best time";
   for (const std::string& m : messages) warn(m);
@@ -487,19 +493,20 @@ void App::advance(double frame_seconds) {
   frame_physics_seconds_ = 0.0;
   const bool running = !paused_ && !menu_open_;
   if (running) accumulator_ += frame_seconds;
-  while (running && accumulator_ >= session_.world().config().dt && steps_this_frame_ < kMaxStepsPerFrame) {
-    accumulator_ -= session_.world().config().dt;
+  while (running && accumulator_ >= session_.simulation().config().dt &&
+         steps_this_frame_ < kMaxStepsPerFrame) {
+    accumulator_ -= session_.simulation().config().dt;
     step_once();
     if (session_.generation() != seen_generation_) after_level_change();
-    if (session_.level_session().next_level_requested()) break;
+    if (session_.simulation().next_level_requested()) break;
   }
   // A slow frame: drop the time the cap left over rather than owe it to the next frames.
-  const double dt = session_.world().config().dt;
+  const double dt = session_.simulation().config().dt;
   if (accumulator_ >= dt) accumulator_ = std::fmod(accumulator_, dt);
   if (step_requested_ && paused_) step_once();
   step_requested_ = false;
   // A script asked for the next level.
-  if (session_.level_session().next_level_requested() && !next_level_handled_) {
+  if (session_.simulation().next_level_requested() && !next_level_handled_) {
     next_level_handled_ = true;
     go_to_level(+1);
   }
@@ -532,13 +539,13 @@ void App::draw_frame(double wall_seconds) {
     return;
   }
 
-  const double dt = session_.world().config().dt;
+  const double dt = session_.simulation().config().dt;
   const double alpha = paused_ || menu_open_ ? 1.0 : std::clamp(accumulator_ / dt, 0.0, 1.0);
   // The camera holds still while the mouse drags a tire, so the cursor keeps pointing where it pulls,
   // and once the tire has left the level: it watches it fall away rather than follow it down.
-  const bool gone = session_.level_session().end_reason() == tire::EndReason::out_of_bounds;
-  if (const tire::Tire* p = session_.world().player(); p && !grabbing_ && !gone)
-    camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity()), bounds_,
+  const bool gone = session_.simulation().end_reason() == tire::EndReason::out_of_bounds;
+  if (const std::optional<tire::TireView> p = player_view(); p && !grabbing_ && !gone)
+    camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity), bounds_,
                    wall_seconds);
 
   SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
@@ -551,30 +558,29 @@ void App::draw_frame(double wall_seconds) {
 }
 
 void App::draw_ui() {
-  const tire::World& world = session_.world();
+  const tire::Simulation& simulation = session_.simulation();
   HudInfo hud;
   hud.level = session_.level().name;
-  hud.time = finished_at_.value_or(world.time());  // the clock stops when the level ends
-  if (const tire::ScriptRunner* script = session_.level_session().script())
-    hud.time_limit = script->spec().time_limit;
+  hud.time = finished_at_.value_or(simulation.time());  // the clock stops when the level ends
+  hud.time_limit = session_.level().time_limit;
   hud.target = hud_target_;
-  if (const tire::Tire* p = world.player()) {
-    hud.speed = length(p->velocity());
-    hud.grounded = p->touched_ground_within(world.config().jump_grace);
+  if (const std::optional<tire::TireView> p = player_view()) {
+    hud.speed = length(p->velocity);
+    hud.grounded = p->may_jump;
   }
   hud.paused = paused_;
   hud.over = level_over();
   DevInfo dev;
   dev.shown = debug_.enabled;
-  dev.tick = world.tick();
+  dev.tick = simulation.tick();
   dev.fps = fps_;
   dev.physics_ms = physics_ms_;
   dev.steps_last_frame = steps_this_frame_;
-  dev.tires = world.tires().size();
-  dev.asleep = world.asleep_count();
-  dev.failed_solves = world.failed_solves();
+  dev.tires = simulation.tire_count();
+  dev.asleep = simulation.asleep_count();
+  dev.failed_solves = simulation.solver_failures();
   draw_hud(hud, dev);
-  draw_script_messages(session_.level_session(), imgui_->big_font());
+  draw_script_messages(simulation, imgui_->big_font());
 
   if (show_tuning_) {
     SoundSettings sound{sound_.volume(), sound_.muted()};
@@ -599,10 +605,10 @@ void App::draw_ui() {
     else if (choice == MenuChoice::quit)
       quit_ = true;
   } else if (level_over()) {
-    switch (draw_end_screen(
-        session_.level_session().status(), session_.level_session().end_reason(), session_.level().name,
-        finished_at_.value_or(world.time()), run_result_ ? run_result_->note : "",
-        run_result_ ? run_result_->medal : tire::Medal::none, session_.level().medals, imgui_->big_font())) {
+    switch (draw_end_screen(simulation.status(), simulation.end_reason(), session_.level().name,
+                            finished_at_.value_or(simulation.time()), run_result_ ? run_result_->note : "",
+                            run_result_ ? run_result_->medal : tire::Medal::none, session_.level().medals,
+                            imgui_->big_font())) {
       case EndChoice::next: go_to_level(+1); break;
       case EndChoice::retry: restart(); break;
       case EndChoice::none: break;
@@ -704,7 +710,7 @@ bool App::frame() {
   if (wall > 0.0) fps_ = fps_ == 0.0 ? 1.0 / wall : fps_ * 0.95 + 0.05 / wall;
   // --frames: every frame is exactly one tick, so automated runs are reproducible.
   const double frame_seconds =
-      options_.frames ? (session_.loaded() ? session_.world().config().dt : 1.0 / 60.0) : wall;
+      options_.frames ? (session_.loaded() ? session_.simulation().config().dt : 1.0 / 60.0) : wall;
   sound_.set_paused(editing_ || paused_ || menu_open_);
   if (!editing_) advance(frame_seconds);
   physics_ms_ = physics_ms_ * 0.9 + 0.1 * frame_physics_seconds_ * 1000.0;
@@ -752,7 +758,7 @@ int App::finish() {
     output_failed_ = true;
   }
   if (!options_.record.empty()) {
-    if (const std::string err = recorder_.save(session_.level_session(), options_.record); !err.empty()) {
+    if (const std::string err = recorder_.save(session_.simulation(), options_.record); !err.empty()) {
       std::cerr << "tire-game: cannot save the replay " << options_.record << ": " << err << "\n";
       return 2;
     }
@@ -775,31 +781,31 @@ std::string App::summary_json(long long frames) const {
   }
   if (!session_.loaded()) return out.dump();
   out["level"] = session_.level().name;
-  out["ticks"] = session_.world().tick();
-  out["status"] = tire::to_string(session_.level_session().status());
-  out["hash"] = tire::to_hex(session_.level_session().state_hash());
-  if (const tire::Tire* p = session_.world().player()) {
-    const tire::Vec2 c = p->centroid();
+  out["ticks"] = session_.simulation().tick();
+  out["status"] = tire::to_string(session_.simulation().status());
+  out["hash"] = tire::to_hex(session_.simulation().state_hash());
+  if (const std::optional<tire::TireView> p = player_view()) {
+    const tire::Vec2 c = p->centroid;
     out["player"] = {c.x, c.y};
   } else {
     out["player"] = nullptr;
   }
-  out["tires"] = session_.world().tires().size();
+  out["tires"] = session_.simulation().tire_count();
   out["gamepads"] = gamepads_.connected();
   out["progress"] = best_runs_.summary(session_.path());
   if (run_result_) {
     out["finished"] = {{"status", run_result_->won ? "won" : "lost"},
-                       {"reason", tire::to_string(session_.level_session().end_reason())},
+                       {"reason", tire::to_string(session_.simulation().end_reason())},
                        {"tick", run_result_->ticks},
                        {"time", run_result_->time}};
   }
-  out["asleep"] = session_.world().asleep_count();
+  out["asleep"] = session_.simulation().asleep_count();
   out["sound"] = {{"device", sound_.device_open()},
                   {"events", sound_.events()},
                   {"max_voices", sound_.max_playing()},
                   {"muted", sound_.muted()}};
   // Wall time per frame in ms (median, p99, max over the frames sampled): the simulation
-  // (World::step), the rendering (drawing, ImGui, present) and the whole frame.
+  // (Simulation::step), the rendering (drawing, ImGui, present) and the whole frame.
   const auto stats = [](const TimeStats& t) {
     return nlohmann::json{{"median", t.median}, {"p99", t.p99}, {"max", t.max}};
   };

@@ -1,4 +1,4 @@
-// The game's window and main loop: input, the fixed-timestep simulation (World::step through
+// The game's window and main loop: input, the fixed-timestep simulation (Simulation::step through
 // GameSession), interpolated drawing, the HUD and panels, the level menu, win/lose screens and hot
 // reload. Wall-clock time paces the loop and feeds the FPS and physics-time readouts; it never
 // reaches the simulation, which only ever advances by whole ticks of the level's dt.
@@ -106,6 +106,7 @@ class App {
   void draw_ui();
   std::string summary_json(long long frames) const;
   bool level_over() const;
+  std::optional<tire::TireView> player_view() const;  // the player tire, if there is one
   void warn(const std::string& text);
   void save_replay();
   // "" when the outputs asked for (--record, --screenshot, --audio-log) may be written, else why
@@ -182,7 +183,7 @@ class App {
   GhostRenderer ghost_renderer_;
   std::optional<RunResult> run_result_;  // the finished level's time and whether it is a best
   std::string hud_target_;               // the HUD's time to beat (BestRuns::note)
-  int respawns_seen_ = 0;                // LevelSession::respawns() already told
+  int respawns_seen_ = 0;                // Simulation::respawns() already told
   // Heard after every tick (sound/sound_system.h).
   sound::SoundSystem sound_;
 };

@@ -1,7 +1,7 @@
-// Wall time per rendered frame, split into the simulation (World::step, every tick of the frame)
-// and the rendering (drawing the world, the HUD and ImGui, and presenting), kept for the summary the
-// game prints at exit. The samples live in a buffer reserved up front: add() never allocates. When
-// more frames run than it holds, it keeps the latest ones.
+// Wall time per rendered frame, split into the simulation (Simulation::step, every tick of the
+// frame) and the rendering (drawing the world, the HUD and ImGui, and presenting), kept for the
+// summary the game prints at exit. The samples live in a buffer reserved up front: add() never
+// allocates. When more frames run than it holds, it keeps the latest ones.
 #pragma once
 
 #include <cstddef>
@@ -10,7 +10,7 @@
 namespace game {
 
 struct FrameSample {
-  float sim_ms = 0.0f;      // World::step, all ticks of the frame
+  float sim_ms = 0.0f;      // Simulation::step, all ticks of the frame
   float render_ms = 0.0f;   // drawing (world, HUD, ImGui) and SDL_RenderPresent
   float present_ms = 0.0f;  // SDL_RenderPresent alone (part of render_ms)
   float frame_ms = 0.0f;    // the whole frame: events, simulation, rendering, presenting

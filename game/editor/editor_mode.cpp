@@ -574,7 +574,7 @@ void Editor::draw(Draw& d, WorldRenderer& renderer, int width, int height) {
   camera_.set_view(center_, scale_);
   update_preview();
   if (preview_.loaded()) {
-    renderer.set_underground(underground(preview_.world()));
+    renderer.set_underground(underground(preview_.simulation()));
     DebugOptions plain;
     renderer.draw(d, camera_, preview_, 1.0, plain);
   } else {
@@ -608,14 +608,12 @@ void Editor::draw_grid(Draw& d) {
 // world outside them tinted, their edge drawn, and a label saying whether they are the level's own
 // or computed. A computed top is open: the tint and the sides go up out of the view.
 void Editor::draw_bounds(Draw& d) {
-  const std::shared_ptr<const tire::Level>& level = doc_.level();
-  if (!level) return;
-  const tire::LevelBounds& bounds = level->bounds;
+  if (!doc_.level()) return;
+  const tire::LevelInfo& info = doc_.info();
+  const tire::Aabb& box = info.bounds;
   const tire::Aabb view = camera_.view();
-  const tire::Vec2 lo{std::max(bounds.box.min.x, view.min.x - 1.0),
-                      std::max(bounds.box.min.y, view.min.y - 1.0)};
-  const tire::Vec2 hi{std::min(bounds.box.max.x, view.max.x + 1.0),
-                      std::min(bounds.box.max.y, view.max.y + 1.0)};
+  const tire::Vec2 lo{std::max(box.min.x, view.min.x - 1.0), std::max(box.min.y, view.min.y - 1.0)};
+  const tire::Vec2 hi{std::min(box.max.x, view.max.x + 1.0), std::min(box.max.y, view.max.y + 1.0)};
   const SDL_Color outside = rgba(120, 0, 0, 60), edge = rgba(230, 60, 50, 220);
   const auto rect = [&](tire::Vec2 a, tire::Vec2 b) {
     if (a.x < b.x && a.y < b.y) d.rect(camera_.to_screen(a), camera_.to_screen(b), outside);
@@ -627,15 +625,16 @@ void Editor::draw_bounds(Draw& d) {
   rect({std::max(hi.x, vlo.x), lo.y}, {vhi.x, hi.y});  // right
   if (lo.x >= hi.x || lo.y >= hi.y) return;
   const ScreenPoint a = camera_.to_screen(lo), b = camera_.to_screen(hi);
-  if (bounds.box.min.y >= view.min.y) d.line(a, {b.x, a.y}, 2.0f, edge);
-  if (bounds.box.max.y <= view.max.y) d.line({a.x, b.y}, b, 2.0f, edge);
-  if (bounds.box.min.x >= view.min.x) d.line(a, {a.x, b.y}, 2.0f, edge);
-  if (bounds.box.max.x <= view.max.x) d.line({b.x, a.y}, b, 2.0f, edge);
+  if (box.min.y >= view.min.y) d.line(a, {b.x, a.y}, 2.0f, edge);
+  if (box.max.y <= view.max.y) d.line({a.x, b.y}, b, 2.0f, edge);
+  if (box.min.x >= view.min.x) d.line(a, {a.x, b.y}, 2.0f, edge);
+  if (box.max.x <= view.max.x) d.line({b.x, a.y}, b, 2.0f, edge);
   char label[96];
   std::snprintf(label, sizeof label, "bounds (%s)",
-                bounds.min && bounds.max   ? "the level's"
-                : bounds.min || bounds.max ? "partly computed"
-                                           : "computed: margin below and beside the level");
+                info.bounds_min_given && info.bounds_max_given ? "the level's"
+                : info.bounds_min_given || info.bounds_max_given
+                    ? "partly computed"
+                    : "computed: margin below and beside the level");
   ImGui::GetBackgroundDrawList()->AddText(
       {std::max(a.x, palette_width_ + 10.0f) + 6, std::min(a.y, static_cast<float>(height_) - 30.0f) - 20},
       IM_COL32(255, 120, 110, 255), label);

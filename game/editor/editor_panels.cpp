@@ -332,7 +332,7 @@ void Editor::draw_item_properties(const editor::Pick& item) {
 Json Editor::computed_default(const std::string& pointer, const LevelKey& key) const {
   // A bounds corner the level does not give: the one in force, computed from the level.
   if (pointer == "/bounds" && (key.key == "min" || key.key == "max") && doc_.level()) {
-    const tire::Aabb& box = doc_.level()->bounds.box;
+    const tire::Aabb& box = doc_.info().bounds;
     const tire::Vec2 v = key.key == "min" ? box.min : box.max;
     return Json::array({v.x, v.y});
   }

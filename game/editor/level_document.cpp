@@ -13,11 +13,11 @@ std::string LevelDocument::open(const std::filesystem::path& file) {
   std::error_code ec;
   if (std::filesystem::exists(file, ec)) {
     std::string error;
-    const auto text = tire::read_file(file, tire::LevelLimits::max_file_bytes, error);
+    const auto text = tire::read_level_text(file, error);
     if (!text) return file.string() + ": " + error;
     // The loader's bounded parse judges the text first (size, depth, syntax with line and column);
     // the editor then keeps its own ordered copy, so that keys stay in the author's order.
-    const tire::LevelLoad load = tire::load_level_text(*text, file.string());
+    const tire::LevelOpen load = tire::open_level_text(*text, file.string());
     doc = Json::parse(*text, nullptr, false);
     if (doc.is_discarded()) return load.errors.empty() ? file.string() + ": not JSON" : load.errors.front();
     if (!doc.is_object()) return file.string() + ": a level is a JSON object";
@@ -36,11 +36,8 @@ std::string LevelDocument::open(const std::filesystem::path& file) {
 LevelDocument::Judgement LevelDocument::judge(const Json& doc) const {
   // Judged by the loader itself, from the text the document would be saved as: the messages are
   // tirectl validate's, and nothing is judged twice in two ways.
-  tire::LevelLoad load = tire::load_level_text(doc.dump(), file_.string());
-  Judgement j;
-  j.errors = std::move(load.errors);
-  if (load.level) j.level = std::make_shared<const tire::Level>(std::move(*load.level));
-  return j;
+  tire::LevelOpen load = tire::open_level_text(doc.dump(), file_.string());
+  return {std::move(load.errors), std::move(load.level), std::move(load.info)};
 }
 
 namespace {
@@ -58,6 +55,7 @@ void LevelDocument::set(Json doc, Judgement judgement) {
   doc_ = std::move(doc);
   errors_ = std::move(judgement.errors);
   level_ = std::move(judgement.level);
+  info_ = std::move(judgement.info);
   ++version_;
 }
 

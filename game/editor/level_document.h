@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "level_items.h"
-#include "tire/io/level.h"
+#include "tire/level.h"
 
 namespace editor {
 
@@ -51,6 +51,8 @@ class LevelDocument {
   const std::vector<std::string>& errors() const { return errors_; }
   // The document as a level, or null while it does not validate.
   const std::shared_ptr<const tire::Level>& level() const { return level_; }
+  // What it shows (name, bounds, ...) while it validates; empty otherwise.
+  const tire::LevelInfo& info() const { return info_; }
   // Goes up with every change of the document, previews included.
   std::uint64_t version() const { return version_; }
 
@@ -62,6 +64,7 @@ class LevelDocument {
   struct Judgement {
     std::vector<std::string> errors;
     std::shared_ptr<const tire::Level> level;
+    tire::LevelInfo info;
   };
   Judgement judge(const Json& doc) const;
   void set(Json doc, Judgement judgement);
@@ -73,6 +76,7 @@ class LevelDocument {
   Json saved_ = Json::object();
   std::vector<std::string> errors_;
   std::shared_ptr<const tire::Level> level_;
+  tire::LevelInfo info_;
   std::uint64_t version_ = 0;
   std::vector<Json> undo_, redo_;
   bool in_gesture_ = false;

@@ -1,6 +1,6 @@
-// Everything that reaches the World from the player, in one place: per tick a TickInput (steer,
-// jump) and, between ticks, a list of events (spawn a tire, grab/move/release, a tuning change, a
-// level (re)load). GameSession applies them, always between two World::step calls, and reports
+// Everything that reaches the simulation from the player, in one place: per tick a TickInput
+// (steer, jump) and, between ticks, a list of events (spawn a tire, grab/move/release, a tuning
+// change, a level (re)load). GameSession applies them, always between two steps, and reports
 // each batch to a SessionObserver, so a replay recorder can be attached there and see exactly what
 // the simulation saw, tick by tick. Nothing here knows about SDL.
 #pragma once
@@ -11,8 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "tire/io/level.h"
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace game {
 
@@ -20,27 +19,27 @@ namespace game {
 struct SpawnTireEvent {
   tire::Vec2 position;
 };
-// A press on a tire: LevelSession::grab(point, radius).
+// A press on a tire: Simulation::grab_at(point, radius).
 struct GrabEvent {
   tire::Vec2 point;
   double radius = 0.0;  // m
 };
-// Dragging: LevelSession::move_grab(target).
+// Dragging: Simulation::move_grab(target).
 struct MoveGrabEvent {
   tire::Vec2 target;
 };
-// Button released: LevelSession::release_grab().
+// Button released: Simulation::release_grab().
 struct ReleaseGrabEvent {};
 // A tuning change, key = value. Keys are the parameter table's rows the panel may set
 // ("tires.compliance.outer", "tires.pressure", "tires.mass_scale", "solver.substeps", "gravity.x",
-// ...; tire/parameters.h), applied through World::set_parameter; "tires.friction" sets the static
-// and the kinetic friction together; "solver.sleep" (1 or 0) turns sleeping on or off. Applying one
-// wakes every sleeping tire. See tuning.h.
+// ...; tire/parameters.h), applied through Simulation::set_parameter; "tires.friction" sets the
+// static and the kinetic friction together; "solver.sleep" (1 or 0) turns sleeping on or off.
+// Applying one wakes every sleeping tire. See tuning.h.
 struct TuneEvent {
   std::string key;
   double value = 0.0;
 };
-// Restart, level change or hot reload: a fresh World built from `level` (already validated).
+// Restart, level change or hot reload: a fresh Simulation of `level` (already validated).
 struct LoadLevelEvent {
   std::string path;
   std::shared_ptr<const tire::Level> level;
@@ -53,13 +52,13 @@ using SessionEvent =
 class SessionObserver {
  public:
   virtual ~SessionObserver() = default;
-  // `events` were applied just now, before the step of tick `tick` (the world's tick() at the time;
-  // a LoadLevelEvent resets it to 0 for the events after it).
+  // `events` were applied just now, before the step of tick `tick` (the simulation's tick() at the
+  // time; a LoadLevelEvent resets it to 0 for the events after it).
   virtual void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) = 0;
-  // World::step(input) is about to advance the world from tick `tick` to `tick + 1`.
+  // Simulation::step(input) is about to advance it from tick `tick` to `tick + 1`.
   virtual void on_step(std::uint64_t tick, const tire::TickInput& input) = 0;
   // ... and has just done so.
-  virtual void on_stepped(const tire::LevelSession& session) = 0;
+  virtual void on_stepped(const tire::Simulation& simulation) = 0;
 };
 
 }  // namespace game

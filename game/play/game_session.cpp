@@ -16,10 +16,11 @@ tire::Vec2 lerp(tire::Vec2 a, tire::Vec2 b, double t) {
 }  // namespace
 
 void GameSession::start(std::string path, std::shared_ptr<const tire::Level> level) {
-  session_ = tire::make_session(*level);
+  simulation_ = std::make_unique<tire::Simulation>(level);
+  info_ = tire::level_info(*level);
   level_ = std::move(level);
   path_ = std::move(path);
-  tuning_ = Tuning::from_world(session_->world());
+  tuning_ = Tuning::from_simulation(*simulation_);
   tuned_ = false;
   previous_x_.clear();
   previous_poses_.clear();
@@ -42,10 +43,10 @@ void GameSession::flush() {
   for (SessionEvent& e : queue_) {
     const bool load = std::holds_alternative<LoadLevelEvent>(e);
     if (load && !batch.empty()) {
-      if (observer_) observer_->on_events(session_->world().tick(), batch);
+      if (observer_) observer_->on_events(simulation_->tick(), batch);
       batch.clear();
     }
-    const std::uint64_t tick = session_ ? session_->world().tick() : 0;
+    const std::uint64_t tick = simulation_ ? simulation_->tick() : 0;
     apply(e);
     batch.push_back(std::move(e));
     if (load) {
@@ -53,7 +54,7 @@ void GameSession::flush() {
       batch.clear();
     }
   }
-  if (!batch.empty() && observer_) observer_->on_events(session_->world().tick(), batch);
+  if (!batch.empty() && observer_) observer_->on_events(simulation_->tick(), batch);
   queue_.clear();
 }
 
@@ -67,16 +68,16 @@ void GameSession::apply(const SessionEvent& event) {
           tire::TireSpec spec;
           spec.position = e.position;
           spec.player = false;
-          session_->world().spawn_tire(spec);  // within the level's budgets
+          simulation_->spawn_tire(spec);  // within the level's budgets
         } else if constexpr (std::is_same_v<T, GrabEvent>) {
-          session_->grab(e.point, e.radius);
+          simulation_->grab_at(e.point, e.radius);
         } else if constexpr (std::is_same_v<T, MoveGrabEvent>) {
-          session_->move_grab(e.target);
+          simulation_->move_grab(e.target);
         } else if constexpr (std::is_same_v<T, ReleaseGrabEvent>) {
-          session_->release_grab();
+          simulation_->release_grab();
         } else if constexpr (std::is_same_v<T, TuneEvent>) {
           // Wakes the world when the change is made (tuning.h).
-          if (apply_tuning(session_->world(), e.key, e.value)) {
+          if (apply_tuning(*simulation_, e.key, e.value)) {
             tuning_.set(e.key, e.value);
             tuned_ = true;
           }
@@ -87,24 +88,23 @@ void GameSession::apply(const SessionEvent& event) {
 
 void GameSession::step(const tire::TickInput& input) {
   flush();
-  for (const tire::Tire& t : session_->world().tires())  // reuses capacity
-    previous_x_[t.id].assign(t.particles.x.begin(), t.particles.x.end());
-  if (previous_x_.size() > 2 * session_->world().tires().size() + 16) {
-    std::erase_if(previous_x_,
-                  [this](const auto& entry) { return !session_->world().find_tire(entry.first); });
-  }
-  const auto& props = session_->world().rigid().props();
-  previous_poses_.resize(props.size());
-  for (std::uint32_t i = 0; i < props.size(); ++i)
-    if (props[i].alive) previous_poses_[i] = session_->world().rigid().current_pose(i);
-  if (observer_) observer_->on_step(session_->world().tick(), input);
-  session_->step(input);
-  if (observer_) observer_->on_stepped(*session_);
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation_->tire_at(i); ++i)
+    previous_x_[t->id].assign(t->positions.begin(), t->positions.end());  // reuses capacity
+  if (previous_x_.size() > 2 * simulation_->tire_count() + 16)
+    std::erase_if(previous_x_, [this](const auto& entry) { return !simulation_->tire(entry.first); });
+  const std::size_t props = simulation_->prop_count();
+  previous_poses_.resize(props);
+  for (std::uint32_t i = 0; i < props; ++i)
+    if (const std::optional<tire::PropView> p = simulation_->prop(i); p && p->alive)
+      previous_poses_[i] = p->state.pose;
+  if (observer_) observer_->on_step(simulation_->tick(), input);
+  simulation_->step(input);
+  if (observer_) observer_->on_stepped(*simulation_);
 }
 
-void GameSession::interpolated_positions(const tire::Tire& t, double alpha,
+void GameSession::interpolated_positions(const tire::TireView& t, double alpha,
                                          std::vector<tire::Vec2>& out) const {
-  interpolated_positions(t.id, t.particles.x, alpha, out);
+  interpolated_positions(t.id, t.positions, alpha, out);
 }
 
 void GameSession::interpolated_positions(tire::TireId id, std::span<const tire::Vec2> now, double alpha,
@@ -119,10 +119,10 @@ void GameSession::interpolated_positions(tire::TireId id, std::span<const tire::
   for (std::size_t i = 0; i < now.size(); ++i) out[i] = lerp(before[i], now[i], alpha);
 }
 
-tire::Vec2 GameSession::interpolated_centroid(const tire::Tire& t, double alpha) const {
-  const tire::Vec2 now = t.centroid();
+tire::Vec2 GameSession::interpolated_centroid(const tire::TireView& t, double alpha) const {
+  const tire::Vec2 now = t.centroid;
   const auto it = previous_x_.find(t.id);
-  if (it == previous_x_.end() || it->second.empty() || it->second.size() != t.particles.x.size()) return now;
+  if (it == previous_x_.end() || it->second.empty() || it->second.size() != t.positions.size()) return now;
   tire::Vec2 sum;
   for (const tire::Vec2& p : it->second) sum += p;
   const tire::Vec2 before = sum / static_cast<double>(it->second.size());
@@ -130,7 +130,8 @@ tire::Vec2 GameSession::interpolated_centroid(const tire::Tire& t, double alpha)
 }
 
 tire::Pose GameSession::interpolated_pose(std::uint32_t prop, double alpha) const {
-  const tire::Pose now = session_->world().rigid().current_pose(prop);
+  const std::optional<tire::PropView> view = simulation_->prop(prop);
+  const tire::Pose now = view ? view->state.pose : tire::Pose{};
   if (prop >= previous_poses_.size()) return now;
   const tire::Pose& before = previous_poses_[prop];
   return tire::Pose::make(lerp(before.position, now.position, alpha),
@@ -139,7 +140,7 @@ tire::Pose GameSession::interpolated_pose(std::uint32_t prop, double alpha) cons
 
 std::vector<std::string> GameSession::take_warnings() {
   std::vector<std::string> out;
-  if (session_) out.swap(session_->world().warnings());
+  if (simulation_) out = simulation_->take_warnings();
   return out;
 }
 

@@ -1,12 +1,11 @@
-// One level being played: the engine's LevelSession (world and script), the Level it was built
+// One level being played: the engine's Simulation (world and script), the level it was built
 // from, the tuning in force and what rendering needs to interpolate between ticks. Every input
-// reaches the session through here (session_input.h): events are queued, then applied between
-// ticks by flush(); step() flushes and then calls LevelSession::step, the same fixed tick tirectl
+// reaches the simulation through here (session_input.h): events are queued, then applied between
+// ticks by flush(); step() flushes and then calls Simulation::step, the same fixed tick tirectl
 // runs.
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <span>
 #include <string>
@@ -15,31 +14,28 @@
 
 #include "input/session_input.h"
 #include "play/tuning.h"
-#include "tire/io/level.h"
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace game {
 
 class GameSession {
  public:
-  // Builds a fresh world from `level` at once (no observer call: use a LoadLevelEvent for that).
+  // A fresh simulation of `level`, at once (no observer call: use a LoadLevelEvent for that).
   void start(std::string path, std::shared_ptr<const tire::Level> level);
 
   // Queues an event for the next flush. Consecutive MoveGrabEvents collapse into the last one.
   void queue(SessionEvent event);
   // Applies the queued events now (between ticks) and tells the observer.
   void flush();
-  // flush(), remember the positions for interpolation, then World::step(input).
+  // flush(), remember the positions for interpolation, then Simulation::step(input).
   void step(const tire::TickInput& input);
 
   void set_observer(SessionObserver* observer) { observer_ = observer; }
 
-  bool loaded() const { return session_ != nullptr; }
-  tire::LevelSession& level_session() { return *session_; }
-  const tire::LevelSession& level_session() const { return *session_; }
-  tire::World& world() { return session_->world(); }
-  const tire::World& world() const { return session_->world(); }
-  const tire::Level& level() const { return *level_; }
+  bool loaded() const { return simulation_ != nullptr; }
+  tire::Simulation& simulation() { return *simulation_; }
+  const tire::Simulation& simulation() const { return *simulation_; }
+  const tire::LevelInfo& level() const { return info_; }
   const std::shared_ptr<const tire::Level>& level_ptr() const { return level_; }
   const std::string& path() const { return path_; }
   const Tuning& tuning() const { return tuning_; }
@@ -51,22 +47,23 @@ class GameSession {
 
   // Particle positions blended between the previous tick and the current one: alpha 0 is the
   // previous tick, 1 the current. A tire with no previous tick (just spawned) is drawn as it is.
-  void interpolated_positions(const tire::Tire& tire, double alpha, std::vector<tire::Vec2>& out) const;
+  void interpolated_positions(const tire::TireView& tire, double alpha, std::vector<tire::Vec2>& out) const;
   // The same for tire `id`, whose particles are at `now`.
   void interpolated_positions(tire::TireId id, std::span<const tire::Vec2> now, double alpha,
                               std::vector<tire::Vec2>& out) const;
-  tire::Vec2 interpolated_centroid(const tire::Tire& tire, double alpha) const;
+  tire::Vec2 interpolated_centroid(const tire::TireView& tire, double alpha) const;
   // A live prop's pose, blended the same way.
   tire::Pose interpolated_pose(std::uint32_t prop, double alpha) const;
 
-  // Warnings the world raised since the last call.
+  // Warnings the simulation raised since the last call.
   std::vector<std::string> take_warnings();
 
  private:
   void apply(const SessionEvent& event);
 
-  std::unique_ptr<tire::LevelSession> session_;
+  std::unique_ptr<tire::Simulation> simulation_;
   std::shared_ptr<const tire::Level> level_;
+  tire::LevelInfo info_;
   std::string path_;
   Tuning tuning_;
   bool tuned_ = false;

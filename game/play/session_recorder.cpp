@@ -5,12 +5,13 @@
 #include <ctime>
 
 #include "tire/io/file_io.h"
+#include "tire/tire/parameters.h"
 
 namespace game {
 
 std::string level_file_sha256(const std::filesystem::path& file) {
   std::string error;
-  const auto bytes = tire::read_file(file, tire::LevelLimits::max_file_bytes, error);
+  const auto bytes = tire::read_level_text(file, error);
   return bytes ? tire::sha256_hex(*bytes) : std::string();
 }
 
@@ -82,9 +83,9 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
               in.restart = true;  // the same level, restarted: one recording goes on
               input(in);
               steer_ = inflate_ = 0.0;
-              gravity_ = e.level->gravity;
-            } else {
-              begin(file, e.level->gravity);  // another level, or the file changed: a new recording
+              gravity_ = tire::level_info(*e.level).gravity;
+            } else {  // another level, or the file changed: a new recording
+              begin(file, tire::level_info(*e.level).gravity);
             }
           } else if constexpr (std::is_same_v<T, SpawnTireEvent>) {
             in.spawn = e.position;
@@ -143,11 +144,11 @@ void SessionRecorder::on_step(std::uint64_t, const tire::TickInput& input_now) {
   if (in.steer || in.jump || in.inflate) input(in);
 }
 
-void SessionRecorder::on_stepped(const tire::LevelSession& session) {
+void SessionRecorder::on_stepped(const tire::Simulation& session) {
   if (recorder_) recorder_->after_step(session.state_hash());
 }
 
-std::optional<std::string> SessionRecorder::replay_json(const tire::LevelSession& session,
+std::optional<std::string> SessionRecorder::replay_json(const tire::Simulation& session,
                                                         const std::filesystem::path& target,
                                                         bool last_run_only, std::string& error) const {
   if (!recorder_) {
@@ -166,7 +167,7 @@ std::optional<std::string> SessionRecorder::replay_json(const tire::LevelSession
   return tire::replay_to_json(replay);
 }
 
-std::string SessionRecorder::save(const tire::LevelSession& session, const std::filesystem::path& file,
+std::string SessionRecorder::save(const tire::Simulation& session, const std::filesystem::path& file,
                                   bool last_run_only) const {
   const std::filesystem::path target = std::filesystem::absolute(file);
   std::string error;
@@ -175,7 +176,7 @@ std::string SessionRecorder::save(const tire::LevelSession& session, const std::
   return "";
 }
 
-std::optional<std::filesystem::path> SessionRecorder::save_new(const tire::LevelSession& session,
+std::optional<std::filesystem::path> SessionRecorder::save_new(const tire::Simulation& session,
                                                                const std::filesystem::path& file,
                                                                std::string& error) const {
   // Every name tried is in the same folder, so the level's path inside is right for any of them.

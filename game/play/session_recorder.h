@@ -1,7 +1,7 @@
-// Records every session as a replay (engine/replay.h): attached to the GameSession as its observer,
-// it turns each input the World receives into a replay input, at the replay's own tick count.
-// A restart of the same level is a "restart" input; loading another level (or a changed file)
-// starts a new recording. F5 saves the current one.
+// Records every session as a replay (tire/replay/replay_file.h): attached to the GameSession as its
+// observer, it turns each input the simulation receives into a replay input, at the replay's own
+// tick count. A restart of the same level is a "restart" input; loading another level (or a changed
+// file) starts a new recording. F5 saves the current one.
 #pragma once
 
 #include <filesystem>
@@ -27,17 +27,17 @@ class SessionRecorder final : public SessionObserver {
 
   void on_events(std::uint64_t tick, const std::vector<SessionEvent>& events) override;
   void on_step(std::uint64_t tick, const tire::TickInput& input) override;
-  void on_stepped(const tire::LevelSession& session) override;
+  void on_stepped(const tire::Simulation& session) override;
 
   // Writes the recording so far (atomically) to `file`; the level path inside is relative to it.
   // `last_run_only`: only what followed the last restart (last_attempt). Returns an error text, or
   // "" when saved.
-  std::string save(const tire::LevelSession& session, const std::filesystem::path& file,
+  std::string save(const tire::Simulation& session, const std::filesystem::path& file,
                    bool last_run_only = false) const;
   // As save, but never over an existing file (F5): `file` when free, else the first free one of
   // <stem>-2.json, <stem>-3.json, ... (tire::write_new_file_atomically). Returns the file written,
   // or nullopt with `error` set.
-  std::optional<std::filesystem::path> save_new(const tire::LevelSession& session,
+  std::optional<std::filesystem::path> save_new(const tire::Simulation& session,
                                                 const std::filesystem::path& file, std::string& error) const;
   // A file name the player can find: <dir>/<level name>-<YYYYmmdd-HHMMSS>.json (save_new numbers
   // a second save in the same second).
@@ -49,9 +49,8 @@ class SessionRecorder final : public SessionObserver {
   void input(tire::ReplayInput in);
   // The recording as replay JSON to be written at `target` (absolute; its folder is made), the
   // level named relative to it.
-  std::optional<std::string> replay_json(const tire::LevelSession& session,
-                                         const std::filesystem::path& target, bool last_run_only,
-                                         std::string& error) const;
+  std::optional<std::string> replay_json(const tire::Simulation& session, const std::filesystem::path& target,
+                                         bool last_run_only, std::string& error) const;
 
   std::optional<tire::ReplayRecorder> recorder_;
   std::filesystem::path level_file_;  // absolute

@@ -53,19 +53,19 @@ std::size_t index_of(std::string_view key) {
 }
 
 // apply_tuning's change, without the waking.
-bool set_tuned(tire::World& world, std::string_view key, double value) {
+bool set_tuned(tire::Simulation& simulation, std::string_view key, double value) {
   if (key == kSleepKey) {
     if (value != 0.0 && value != 1.0) return false;
-    world.config().sleep = value == 1.0;
+    simulation.set_sleep(value == 1.0);
     return true;
   }
   const tire::Parameter* p = tire::find_parameter(key);
   if (!p || !p->may(tire::by_panel) || key != p->key) return false;
   if (p->integer) value = std::round(value);
   if (p->id == tire::ParamId::tire_friction)
-    return world.set_parameter("tires.friction", value) &&
-           world.set_parameter("tires.kinetic_friction", value);
-  return world.set_parameter(key, value);
+    return simulation.set_parameter("tires.friction", value) &&
+           simulation.set_parameter("tires.kinetic_friction", value);
+  return simulation.set_parameter(key, value);
 }
 
 }  // namespace
@@ -93,12 +93,12 @@ Tuning::Tuning() {
   for (const tire::Parameter* p : tuning_parameters()) values.push_back(p->default_value);
 }
 
-Tuning Tuning::from_world(const tire::World& world) {
+Tuning Tuning::from_simulation(const tire::Simulation& simulation) {
   Tuning t;
   for (std::size_t i = 0; i < t.values.size(); ++i)
     t.values[i] =
-        world.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
-  t.sleep = world.config().sleep;
+        simulation.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
+  t.sleep = simulation.config().sleep;
   return t;
 }
 
@@ -164,11 +164,11 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to) {
   return out;
 }
 
-bool apply_tuning(tire::World& world, std::string_view key, double value) {
-  if (!set_tuned(world, key, value)) return false;
+bool apply_tuning(tire::Simulation& simulation, std::string_view key, double value) {
+  if (!set_tuned(simulation, key, value)) return false;
   // No sleeping island can tell whether it still rests under the new rules, and turning sleep off
   // must leave no tire asleep.
-  world.wake_all();
+  simulation.wake_all();
   return true;
 }
 

@@ -1,5 +1,5 @@
-// The live-tunable numbers of the tuning panel and how a change reaches the World. The keys are
-// the parameter table's rows that the panel may set (tire/parameters.h), in the table's order;
+// The live-tunable numbers of the tuning panel and how a change reaches the simulation. The keys
+// are the parameter table's rows that the panel may set (tire/parameters.h), in the table's order;
 // each slider's range lies inside its row's range. A change is always a key = value pair (a
 // TuneEvent), so a replay can log and re-apply it.
 #pragma once
@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "input/session_input.h"
+#include "tire/engine.h"
 #include "tire/tire/parameters.h"
-#include "tire/world/world.h"
 
 namespace game {
 
@@ -30,9 +30,9 @@ struct Tuning {
 
   // The table's defaults.
   Tuning();
-  // The values in force in a freshly loaded world: the player's tire (or the first one; the
+  // The values in force in a freshly loaded simulation: the player's tire (or the first one; the
   // table's defaults without tires), the solver's settings and the gravity.
-  static Tuning from_world(const tire::World& world);
+  static Tuning from_simulation(const tire::Simulation& simulation);
 
   // Sets the value a key names (kSleepKey: on unless 0); false for a key the panel does not tune.
   bool set(std::string_view key, double value);
@@ -52,12 +52,12 @@ const tire::Material* material_of(const Tuning& t);
 // The key = value changes that turn `from` into `to`.
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 
-// Applies one change to the world through World::set_parameter (an integer key's value rounded
-// first; "tires.friction" sets the kinetic friction too: the panel has one friction slider), or,
-// for kSleepKey, to SolverConfig::sleep; then wakes every sleeping tire (World::wake_all), as a
+// Applies one change through Simulation::set_parameter (an integer key's value rounded first;
+// "tires.friction" sets the kinetic friction too: the panel has one friction slider), or, for
+// kSleepKey, Simulation::set_sleep; then wakes every sleeping tire (Simulation::wake_all), as a
 // change of the rules does. False, changing and waking nothing, for a key the panel does not tune
 // or a value outside its range (kSleepKey: other than 0 and 1).
-bool apply_tuning(tire::World& world, std::string_view key, double value);
+bool apply_tuning(tire::Simulation& simulation, std::string_view key, double value);
 
 // How the panel shows a key: its slider. The slider's range may be narrower than the table's
 // range, for usability and to keep to what the solver holds without folding the tire

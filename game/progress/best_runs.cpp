@@ -24,8 +24,9 @@ std::vector<std::string> BestRuns::open(std::optional<std::filesystem::path> dir
 void BestRuns::level_started(const std::string& level_path, std::shared_ptr<const tire::Level> level,
                              std::vector<std::string>& messages) {
   last_.reset();
-  medals_ = level ? level->medals : std::nullopt;
-  dt_ = level ? level->solver.dt : 0.0;
+  const tire::LevelInfo info = level ? tire::level_info(*level) : tire::LevelInfo{};
+  medals_ = info.medals;
+  dt_ = info.dt;
   if (!enabled_) return;
   const std::string key = level_key(levels_dir_, level_path);
   const std::string sha = level_file_sha256(level_path);
@@ -42,7 +43,7 @@ void BestRuns::level_started(const std::string& level_path, std::shared_ptr<cons
 }
 
 RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool record,
-                             const SessionRecorder& recorder, const tire::LevelSession& session,
+                             const SessionRecorder& recorder, const tire::Simulation& session,
                              std::vector<std::string>& messages) {
   RunResult r;
   r.won = won;
@@ -124,8 +125,8 @@ nlohmann::json BestRuns::summary(const std::string& level_path) const {
     g["file"] = ghost_.file().string();
     g["tick"] = ghost_.tick();
     g["ticks"] = ghost_.ticks();
-    if (const tire::Tire* p = ghost_.player()) {
-      const tire::Vec2 c = p->centroid();
+    if (const std::optional<tire::TireView> p = ghost_.player()) {
+      const tire::Vec2 c = p->centroid;
       g["position"] = {c.x, c.y};
     }
   }

@@ -43,7 +43,7 @@ class BestRuns {
   // since the last restart) as the level's ghost. `record`: false for a level that is not the file
   // on disk (an unsaved edit), which is not recorded.
   RunResult finished(bool won, double time, std::uint64_t ticks, bool record, const SessionRecorder& recorder,
-                     const tire::LevelSession& session, std::vector<std::string>& messages);
+                     const tire::Simulation& session, std::vector<std::string>& messages);
 
   // How many times the progress or a ghost was written (or a damaged file set aside) so far: the
   // browser build copies the data folder to the page's IndexedDB when it changes.

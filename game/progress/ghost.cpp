@@ -28,7 +28,7 @@ std::string Ghost::load(const std::filesystem::path& file, std::shared_ptr<const
 }
 
 void Ghost::clear() {
-  session_.reset();
+  simulation_.reset();
   level_.reset();
   replay_ = {};
   file_.clear();
@@ -36,7 +36,7 @@ void Ghost::clear() {
 }
 
 void Ghost::restart() {
-  session_ = tire::make_session(*level_);
+  simulation_ = std::make_unique<tire::Simulation>(level_);
   tick_ = 0;
   next_input_ = 0;
   held_ = {};
@@ -44,30 +44,34 @@ void Ghost::restart() {
 }
 
 void Ghost::sync(std::uint64_t tick) {
-  if (!session_) return;
+  if (!simulation_) return;
   if (tick < tick_) restart();
   while (tick_ < tick && tick_ < replay_.ticks) {
     held_.jump = false;
     while (next_input_ < replay_.inputs.size() && replay_.inputs[next_input_].tick == tick_)
-      tire::apply_input(replay_.inputs[next_input_++], *session_, *level_, held_);
-    if (const tire::Tire* p = session_->world().player())
-      previous_.assign(p->particles.x.begin(), p->particles.x.end());
-    session_->step(held_);
+      simulation_->apply(replay_.inputs[next_input_++], held_);
+    if (const std::optional<tire::TireView> p = player())
+      previous_.assign(p->positions.begin(), p->positions.end());
+    simulation_->step(held_);
     ++tick_;
   }
   // Its run is over: it holds still where it finished.
   if (tick > tick_)
-    if (const tire::Tire* p = session_->world().player())
-      previous_.assign(p->particles.x.begin(), p->particles.x.end());
+    if (const std::optional<tire::TireView> p = player())
+      previous_.assign(p->positions.begin(), p->positions.end());
 }
 
-const tire::Tire* Ghost::player() const { return session_ ? session_->world().player() : nullptr; }
+std::optional<tire::TireView> Ghost::player() const {
+  if (!simulation_) return std::nullopt;
+  const std::optional<tire::TireId> id = simulation_->player();
+  return id ? simulation_->tire(*id) : std::nullopt;
+}
 
 void Ghost::interpolated_positions(double alpha, std::vector<tire::Vec2>& out) const {
-  const tire::Tire* p = player();
+  const std::optional<tire::TireView> p = player();
   out.clear();
   if (!p) return;
-  const std::span<const tire::Vec2> now = p->particles.x;
+  const std::span<const tire::Vec2> now = p->positions;
   out.resize(now.size());
   const bool blend = previous_.size() == now.size();
   for (std::size_t i = 0; i < now.size(); ++i)

@@ -1,7 +1,8 @@
-// The ghost of the best run: a replay (the existing tire-replay/1 format) played in a World of its
-// own, stepped in lockstep with the player's (one tick of the ghost for each tick of the player's,
-// from the replay's inputs) and never touching it. Only its player tire is drawn, translucent
-// (ghost_draw.h). Replays are bit-exact, so the ghost is exactly the run that was recorded.
+// The ghost of the best run: a replay (the existing tire-replay/1 format) played in a Simulation of
+// its own, stepped in lockstep with the player's (one tick of the ghost for each tick of the
+// player's, from the replay's inputs) and never touching it. Only its player tire is drawn,
+// translucent (ghost_draw.h). Replays are bit-exact, so the ghost is exactly the run that was
+// recorded.
 #pragma once
 
 #include <cstdint>
@@ -12,9 +13,7 @@
 #include <vector>
 
 #include "play/session_recorder.h"
-#include "tire/io/level.h"
-#include "tire/replay/replay.h"
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace game {
 
@@ -26,7 +25,7 @@ class Ghost {
   std::string load(const std::filesystem::path& file, std::shared_ptr<const tire::Level> level,
                    const std::string& level_sha256);
   void clear();
-  bool loaded() const { return session_ != nullptr; }
+  bool loaded() const { return simulation_ != nullptr; }
   const std::filesystem::path& file() const { return file_; }
 
   // Steps the ghost until it has run `tick` ticks (or its replay is over); a tick behind it (the
@@ -35,8 +34,8 @@ class Ghost {
   std::uint64_t tick() const { return tick_; }
   std::uint64_t ticks() const { return replay_.ticks; }
 
-  // The ghost's player tire, or nullptr.
-  const tire::Tire* player() const;
+  // The ghost's player tire, or nullopt.
+  std::optional<tire::TireView> player() const;
   // Its particles blended between the previous tick and the current one (as GameSession does).
   void interpolated_positions(double alpha, std::vector<tire::Vec2>& out) const;
 
@@ -47,7 +46,7 @@ class Ghost {
 
   tire::Replay replay_;
   std::shared_ptr<const tire::Level> level_;
-  std::unique_ptr<tire::LevelSession> session_;
+  std::unique_ptr<tire::Simulation> simulation_;
   std::filesystem::path file_;
   std::uint64_t tick_ = 0;
   std::size_t next_input_ = 0;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace game {
 
@@ -51,20 +51,19 @@ void Camera::clamp(const tire::Aabb& bounds) {
   center_.y = lo_y <= hi_y ? std::clamp(center_.y, lo_y, hi_y) : lo_y;
 }
 
-Underground underground(const tire::World& world) {
+Underground underground(const tire::Simulation& simulation) {
   double widest = -1.0;
   Underground out;
-  for (const tire::Obstacle& o : world.rigid().obstacles())
+  for (const tire::Obstacle& o : simulation.obstacles())
     if (const double w = o.box.max.x - o.box.min.x; w > widest) widest = w, out = {o.box.min.y, o.box.max.y};
   if (widest > 0.0) return out;
   double height = -1e9;
-  const auto& props = world.rigid().props();
   bool any = false;
-  for (std::uint32_t i = 0; i < props.size(); ++i) {
-    if (!props[i].alive || props[i].spec.type != tire::PropType::static_body) continue;
-    const tire::Pose pose = world.rigid().current_pose(i);
-    for (const tire::Vec2& v : props[i].geometry.vertices) {
-      const double y = pose.to_world(v).y - props[i].geometry.thickness;
+  for (tire::PropId i = 0; i < simulation.prop_count(); ++i) {
+    const std::optional<tire::PropView> p = simulation.prop(i);
+    if (!p || !p->alive || p->type != tire::PropType::static_body) continue;
+    for (const tire::Vec2& v : p->vertices) {
+      const double y = p->state.pose.to_world(v).y - p->thickness;
       height = any ? std::min(height, y) : y;
       any = true;
     }
@@ -72,36 +71,32 @@ Underground underground(const tire::World& world) {
   return {height, height};
 }
 
-tire::Aabb level_bounds(const tire::LevelSession& session, double margin, double below) {
-  const tire::World& world = session.world();
+tire::Aabb level_bounds(const tire::Simulation& simulation, double margin, double below) {
   tire::Aabb box = tire::Aabb::none();
-  for (const tire::Obstacle& o : world.rigid().obstacles()) {
+  for (const tire::Obstacle& o : simulation.obstacles()) {
     box.include(o.box.min);
     box.include(o.box.max);
   }
-  const auto& props = world.rigid().props();
-  for (std::uint32_t i = 0; i < props.size(); ++i) {
-    if (!props[i].alive) continue;
-    const tire::Pose pose = world.rigid().current_pose(i);
-    const tire::Aabb local = props[i].geometry.local_bounds();
+  for (tire::PropId i = 0; i < simulation.prop_count(); ++i) {
+    const std::optional<tire::PropView> p = simulation.prop(i);
+    if (!p || !p->alive) continue;
+    const tire::Aabb& local = p->local_bounds;
     for (const tire::Vec2 c :
          {local.min, local.max, tire::Vec2{local.min.x, local.max.y}, tire::Vec2{local.max.x, local.min.y}})
-      box.include(pose.to_world(c));
-    for (const tire::Vec2& w : props[i].spec.path.waypoints) {
+      box.include(p->state.pose.to_world(c));
+    for (const tire::Vec2& w : p->path) {
       box.include(w + local.min);
       box.include(w + local.max);
     }
   }
-  if (const tire::ScriptRunner* script = session.script())
-    for (const tire::Region& r : script->spec().regions) {
-      box.include(r.box.min);
-      box.include(r.box.max);
-    }
-  for (const tire::Tire& t : world.tires()) {
-    const tire::Vec2 c = t.centroid();
-    const double r = t.spec.outer_radius;
-    box.include(c - tire::Vec2{r, r});
-    box.include(c + tire::Vec2{r, r});
+  for (const tire::Region& r : simulation.regions()) {
+    box.include(r.box.min);
+    box.include(r.box.max);
+  }
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+    const double r = t->outer_radius;
+    box.include(t->centroid - tire::Vec2{r, r});
+    box.include(t->centroid + tire::Vec2{r, r});
   }
   if (box.holds_nothing()) return {{-10, -2}, {10, 8}};
   box.min -= tire::Vec2{margin, below};

@@ -5,8 +5,7 @@
 #include "tire/math/geometry.h"
 
 namespace tire {
-class LevelSession;
-class World;
+class Simulation;
 }  // namespace tire
 
 namespace game {
@@ -74,10 +73,10 @@ struct Underground {
   double floor = -1e9;
   double surface = -1e9;
 };
-Underground underground(const tire::World& world);
+Underground underground(const tire::Simulation& simulation);
 
 constexpr double kBoundsMarginBelow = 0.75;  // m
-tire::Aabb level_bounds(const tire::LevelSession& session, double margin = 1.5,
+tire::Aabb level_bounds(const tire::Simulation& simulation, double margin = 1.5,
                         double below = kBoundsMarginBelow);
 
 }  // namespace game

@@ -1,7 +1,7 @@
-// The game's tire::DebugDraw: the engine walks the world (World::debug_draw) and this draws each
-// shape it reports on the screen, in the colour and width its kind has always had, and what it
-// reports about a sleeping tire in the darker shade of that colour (asleep_shade, draw.h). Tires are
-// drawn where the renderer draws them, blended between the last two ticks by `alpha`.
+// The game's tire::DebugDraw: the engine walks the world (Simulation::debug_draw) and this draws
+// each shape it reports on the screen, in the colour and width its kind has always had, and what it
+// reports about a sleeping tire in the darker shade of that colour (asleep_shade, draw.h). Tires
+// are drawn where the renderer draws them, blended between the last two ticks by `alpha`.
 #pragma once
 
 #include <vector>
@@ -42,8 +42,8 @@ class SdlDebugDraw final : public tire::DebugDraw {
   double alpha_;
   std::vector<tire::Vec2>& positions_;
   std::vector<ScreenPoint>& points_;
-  // Whether the tire whose shapes come now is asleep: World::debug_draw asks tire_positions() for
-  // a tire before reporting its shapes.
+  // Whether the tire whose shapes come now is asleep: the engine's debug_draw asks tire_positions()
+  // for a tire before reporting its shapes.
   bool asleep_ = false;
   SDL_Color color(SDL_Color c, tire::DebugShape kind) const;
 };

@@ -7,10 +7,10 @@
 namespace game {
 
 void GhostRenderer::draw(Draw& d, const Camera& camera, const Ghost& ghost, double alpha) {
-  const tire::Tire* t = ghost.player();
+  const std::optional<tire::TireView> t = ghost.player();
   if (!ghost.visible || !t) return;
   ghost.interpolated_positions(alpha, positions_);
-  const std::uint32_t n = t->n;
+  const std::uint32_t n = t->segments;
   if (positions_.size() < 2 * n || n < 3) return;
   tire::Vec2 hub_world;
   for (std::uint32_t i = 0; i < 2 * n; ++i) hub_world += positions_[i];

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace game {
 
@@ -136,8 +136,8 @@ void draw_help(bool* open) {
   ImGui::End();
 }
 
-void draw_script_messages(const tire::LevelSession& session, ImFont* big) {
-  const auto& messages = session.messages();
+void draw_script_messages(const tire::Simulation& simulation, ImFont* big) {
+  const std::span<const tire::ScriptMessage> messages = simulation.messages();
   if (messages.empty()) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float max_width = vp->Size.x * 0.8f;

@@ -15,7 +15,7 @@
 struct ImFont;
 
 namespace tire {
-class LevelSession;
+class Simulation;
 }
 
 namespace game {
@@ -36,11 +36,11 @@ struct DevInfo {
   bool shown = false;  // F3
   std::uint64_t tick = 0;
   double fps = 0.0;
-  double physics_ms = 0.0;  // wall time spent in World::step per frame (smoothed)
+  double physics_ms = 0.0;  // wall time spent in Simulation::step per frame (smoothed)
   int steps_last_frame = 0;
   std::size_t tires = 0;
-  std::size_t asleep = 0;           // tires asleep (World::asleep_count)
-  std::uint64_t failed_solves = 0;  // World::failed_solves
+  std::size_t asleep = 0;           // tires asleep (Simulation::asleep_count)
+  std::uint64_t failed_solves = 0;  // Simulation::solver_failures
 };
 
 // Seconds left of a time limit, never below 0.
@@ -54,7 +54,7 @@ void draw_hud(const HudInfo& info, const DevInfo& dev);
 // (cut to fit, terminated); false, leaving `out` alone, when there are no tires or no room.
 bool format_asleep_line(std::span<char> out, std::size_t asleep, std::size_t tires);
 void draw_help(bool* open);
-void draw_script_messages(const tire::LevelSession& session, ImFont* big);
+void draw_script_messages(const tire::Simulation& simulation, ImFont* big);
 // A red window listing why the level file failed to reload (the last good level keeps playing).
 void draw_level_errors(const std::string& file, const std::vector<std::string>& errors);
 // Recent warnings (a diverged tire that was reset, a failed screenshot ...).

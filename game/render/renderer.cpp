@@ -8,7 +8,6 @@
 #include <numbers>
 
 #include "render/debug_draw_sdl.h"
-#include "tire/world/world.h"
 
 namespace game {
 
@@ -35,8 +34,8 @@ constexpr SDL_Color kRimPlayer = rgba(240, 176, 48);
 constexpr SDL_Color kRimOther = rgba(176, 182, 194);
 constexpr SDL_Color kHubCap = rgba(60, 60, 66);
 
-SDL_Color prop_color(const tire::Prop& p) {
-  switch (p.spec.type) {
+SDL_Color prop_color(const tire::PropView& p) {
+  switch (p.type) {
     case tire::PropType::dynamic_body: return kDynamic;
     case tire::PropType::kinematic_body: return kKinematic;
     case tire::PropType::static_body: break;
@@ -109,12 +108,12 @@ void WorldRenderer::release() {
   tire_textures_.clear();
 }
 
-WorldRenderer::TireTexture* WorldRenderer::tire_texture(SDL_Renderer* renderer, const tire::Tire& t,
+WorldRenderer::TireTexture* WorldRenderer::tire_texture(SDL_Renderer* renderer, const tire::TireView& t,
                                                         float radius_px, bool is_player) {
   if (!renderer) return nullptr;
   int size = 16;
   while (size < 128 && static_cast<float>(size) < 2.0f * radius_px) size *= 2;
-  const int ratio = static_cast<int>(std::lround(t.spec.inner_radius / t.spec.outer_radius * 50.0));
+  const int ratio = static_cast<int>(std::lround(t.inner_radius / t.outer_radius * 50.0));
   for (TireTexture& e : tire_textures_)
     if (e.size == size && e.ratio == ratio && e.player == is_player) return e.texture ? &e : nullptr;
   // First use of this look at this size: made once, kept until the renderer goes.
@@ -137,19 +136,20 @@ WorldRenderer::TireTexture* WorldRenderer::tire_texture(SDL_Renderer* renderer, 
 
 void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                          const DebugOptions& debug) {
-  const tire::World& world = session.world();
+  const tire::Simulation& simulation = session.simulation();
   draw_background(d, camera);
-  draw_goal(d, camera, session.level_session());
-  draw_obstacles(d, camera, world);
+  draw_goal(d, camera, simulation);
+  draw_obstacles(d, camera, simulation);
   draw_props(d, camera, session, alpha);
-  const tire::Tire* player = world.player();
+  const std::optional<tire::TireId> player_id = simulation.player();
+  const std::optional<tire::TireView> player = player_id ? simulation.tire(*player_id) : std::nullopt;
   // The tires are opaque: a batch of their own is drawn without blending. Small ones go into one
   // textured batch per look, drawn first.
   d.flush();
   // The debug view shades sleeping tires.
-  const auto shaded = [&debug](const tire::Tire& t) { return debug.enabled && t.asleep; };
-  for (const tire::Tire& t : world.tires())
-    if (&t != player) draw_tire(d, camera, session, t, alpha, false, shaded(t));
+  const auto shaded = [&debug](const tire::TireView& t) { return debug.enabled && t.asleep; };
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i)
+    if (!t->player) draw_tire(d, camera, session, *t, alpha, false, shaded(*t));
   for (TireTexture& tex : tire_textures_) {
     if (tex.vertices.empty()) continue;
     SDL_RenderGeometry(d.renderer(), tex.texture, tex.vertices.data(), static_cast<int>(tex.vertices.size()),
@@ -194,10 +194,10 @@ void WorldRenderer::draw_background(Draw& d, const Camera& camera) {
   }
 }
 
-void WorldRenderer::draw_obstacles(Draw& d, const Camera& camera, const tire::World& world) {
+void WorldRenderer::draw_obstacles(Draw& d, const Camera& camera, const tire::Simulation& simulation) {
   const tire::Aabb view = camera.view();
   const float grass = std::max(3.0f, camera.pixels(0.08));
-  for (const tire::Obstacle& o : world.rigid().obstacles()) {
+  for (const tire::Obstacle& o : simulation.obstacles()) {
     // An obstacle that stands on the ground (its bottom below the ground's surface): rock goes on
     // under it to the bottom of the view. A platform floats.
     if (o.box.min.y < surface_ && o.box.min.y > view.min.y && o.box.min.x < view.max.x &&
@@ -212,14 +212,14 @@ void WorldRenderer::draw_obstacles(Draw& d, const Camera& camera, const tire::Wo
 }
 
 void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
-  const auto& props = session.world().rigid().props();
-  for (std::uint32_t i = 0; i < props.size(); ++i) {
-    const tire::Prop& p = props[i];
-    if (!p.alive) continue;
+  const tire::Simulation& simulation = session.simulation();
+  for (tire::PropId i = 0; i < simulation.prop_count(); ++i) {
+    const std::optional<tire::PropView> view = simulation.prop(i);
+    if (!view || !view->alive) continue;
+    const tire::PropView& g = *view;
     const tire::Pose pose = session.interpolated_pose(i, alpha);
-    const SDL_Color fill = prop_color(p);
+    const SDL_Color fill = prop_color(g);
     const SDL_Color edge = darker(fill);
-    const tire::PropGeometry& g = p.geometry;
     shape_.clear();
     for (const tire::Vec2& v : g.vertices) shape_.push_back(camera.to_screen(pose.to_world(v)));
     switch (g.shape) {
@@ -245,7 +245,7 @@ void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession&
         const std::size_t count = g.vertices.size();
         const std::size_t edges = std::min(g.loop ? count : count - 1, g.normals.size());
         const double depth = std::max(g.thickness, 0.1);
-        const bool terrain = p.spec.type == tire::PropType::static_body;
+        const bool terrain = g.type == tire::PropType::static_body;
         const SDL_Color body = terrain ? kEarth : darker(fill, 0.85f);
         const auto vertex_offset = [&](std::size_t v) {
           const bool has_prev = edges > 0 && (g.loop || v > 0), has_next = v < edges;
@@ -283,10 +283,10 @@ void WorldRenderer::draw_props(Draw& d, const Camera& camera, const GameSession&
   }
 }
 
-void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::LevelSession& session) {
-  const tire::ScriptRunner* script = session.script();
-  if (!script || !script->spec().goal) return;
-  const tire::Region& goal = script->spec().regions[*script->spec().goal];
+void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::Simulation& simulation) {
+  const std::optional<std::size_t> goal_index = simulation.goal();
+  if (!goal_index) return;
+  const tire::Region& goal = simulation.regions()[*goal_index];
   const ScreenPoint a = camera.to_screen(goal.box.min), b = camera.to_screen(goal.box.max);
   d.rect(a, b, rgba(80, 220, 110, 46));
   d.rect_outline(a, b, 1.5f, rgba(40, 160, 70, 120));
@@ -305,11 +305,11 @@ void WorldRenderer::draw_goal(Draw& d, const Camera& camera, const tire::LevelSe
     }
 }
 
-void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::Tire& t,
-                              double alpha, bool is_player, bool shaded) {
+void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& session,
+                              const tire::TireView& t, double alpha, bool is_player, bool shaded) {
   const auto shade = [shaded](SDL_Color c) { return shaded ? asleep_shade(c) : c; };
   session.interpolated_positions(t, alpha, positions_);
-  const std::uint32_t n = t.n;
+  const std::uint32_t n = t.segments;
   tire::Vec2 hub_world;
   for (std::uint32_t i = 0; i < 2 * n; ++i) hub_world += positions_[i];
   hub_world = hub_world / static_cast<double>(2 * n);
@@ -317,7 +317,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
   // Level of detail: the rings are drawn through every `step`-th particle, so that the drawn tread
   // segments are about kMinSegmentPixels long on screen or longer (at least 8 points a ring). A pile
   // of small tires then costs a fraction of the triangles and looks the same.
-  const float segment_px = camera.pixels(2.0 * std::numbers::pi * t.spec.outer_radius / n);
+  const float segment_px = camera.pixels(2.0 * std::numbers::pi * t.outer_radius / n);
   const std::uint32_t step = std::clamp<std::uint32_t>(
       segment_px > 0.0f ? static_cast<std::uint32_t>(std::lround(kMinSegmentPixels / segment_px)) : n, 1u,
       std::max(1u, n / 8));
@@ -331,7 +331,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
   // A reduced tire is one fan of triangles over its tread, textured with a picture of the tire:
   // particle i keeps its place in the picture, so the picture turns and squashes with the tire.
   if (step > 1)
-    if (TireTexture* tex = tire_texture(d.renderer(), t, camera.pixels(t.spec.outer_radius), is_player)) {
+    if (TireTexture* tex = tire_texture(d.renderer(), t, camera.pixels(t.outer_radius), is_player)) {
       // Where drawn point k sits in the picture; the same for every tire of this segment count.
       const float uv_radius = 0.5f - 1.0f / static_cast<float>(tex->size);
       if (uv_.size() != m || uv_segments_ != n || uv_step_ != step || uv_radius_ != uv_radius) {
@@ -359,7 +359,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
         tex->vertices.push_back(vertex(outer_[k], uv_[k]));
         tex->vertices.push_back(vertex(outer_[l], uv_[l]));
       }
-      if (t.grabbed) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
+      if (t.grab) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
       return;
     }
   // Sidewall: the whole tire as a fan from the hub over the tread.
@@ -389,7 +389,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
     }
   }
   d.fan(hub, inner_, rim);
-  const float spoke_width = std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.12));
+  const float spoke_width = std::max(2.0f, camera.pixels(t.inner_radius * 0.12));
   if (m >= 4) {
     if (step == 1)
       for (std::uint32_t k = 0; k < 4; ++k) d.line(hub, inner_[k * m / 4], spoke_width, darker(rim, 0.7f));
@@ -398,17 +398,18 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
         d.line(inner_[k * m / 4], inner_[(k + 2) * m / 4], spoke_width, darker(rim, 0.7f));
   }
   // The cap: a circle of about one triangle per 1.5 px of radius, 4 to 16.
-  const float cap = std::max(2.0f, camera.pixels(t.spec.inner_radius * 0.3));
+  const float cap = std::max(2.0f, camera.pixels(t.inner_radius * 0.3));
   d.circle(hub, cap, shade(kHubCap), std::clamp(static_cast<int>(cap / 1.5f), 4, 16));
-  if (t.grabbed) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
+  if (t.grab) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
 }
 
 void WorldRenderer::draw_grab(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
-  for (const tire::Tire& t : session.world().tires()) {
-    if (!t.grabbed) continue;
-    session.interpolated_positions(t, alpha, positions_);
-    const ScreenPoint from = camera.to_screen(positions_[t.grab_particle]);
-    const ScreenPoint to = camera.to_screen(t.grab_target);
+  const tire::Simulation& simulation = session.simulation();
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+    if (!t->grab) continue;
+    session.interpolated_positions(*t, alpha, positions_);
+    const ScreenPoint from = camera.to_screen(positions_[t->grab->particle]);
+    const ScreenPoint to = camera.to_screen(t->grab->target);
     d.line(from, to, 2.0f, rgba(255, 230, 90));
     d.circle(to, 5.0f, rgba(255, 230, 90), 12);
     d.circle(from, 4.0f, rgba(230, 80, 40), 12);
@@ -417,19 +418,18 @@ void WorldRenderer::draw_grab(Draw& d, const Camera& camera, const GameSession& 
 
 void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                                const DebugOptions& debug) {
-  const tire::World& world = session.world();
+  const tire::Simulation& simulation = session.simulation();
   ImDrawList* labels = ImGui::GetBackgroundDrawList();
 
   if (debug.regions)
-    if (const tire::ScriptRunner* script = session.level_session().script())
-      for (const tire::Region& r : script->spec().regions) {
-        const ScreenPoint a = camera.to_screen({r.box.min.x, r.box.max.y});
-        d.rect_outline(a, camera.to_screen({r.box.max.x, r.box.min.y}), 1.5f, rgba(40, 70, 220, 200));
-        labels->AddText({a.x + 4, a.y + 2}, IM_COL32(30, 50, 200, 255), r.name.c_str());
-      }
+    for (const tire::Region& r : simulation.regions()) {
+      const ScreenPoint a = camera.to_screen({r.box.min.x, r.box.max.y});
+      d.rect_outline(a, camera.to_screen({r.box.max.x, r.box.min.y}), 1.5f, rgba(40, 70, 220, 200));
+      labels->AddText({a.x + 4, a.y + 2}, IM_COL32(30, 50, 200, 255), r.name.c_str());
+    }
 
   // The level's bounds (a computed top is open: drawn at the top of the view).
-  if (const std::optional<tire::Aabb>& b = session.level_session().bounds()) {
+  if (const std::optional<tire::Aabb> b = simulation.bounds()) {
     const tire::Aabb view = camera.view();
     const tire::Vec2 hi{b->max.x, std::min(b->max.y, view.max.y + 1.0)};
     d.rect_outline(camera.to_screen(b->min), camera.to_screen(hi), 2.0f, rgba(220, 50, 40, 200));
@@ -438,7 +438,7 @@ void WorldRenderer::draw_debug(Draw& d, const Camera& camera, const GameSession&
   // What the engine shows of its own state (debug_draw_sdl.h).
   SdlDebugDraw shapes(d, camera, session, alpha, positions_, shape_);
   shapes.set_flags(debug_flags(debug));
-  world.debug_draw(shapes);
+  simulation.debug_draw(shapes);
 }
 
 }  // namespace game

@@ -57,12 +57,12 @@ class WorldRenderer {
 
  private:
   void draw_background(Draw& d, const Camera& camera);
-  void draw_obstacles(Draw& d, const Camera& camera, const tire::World& world);
+  void draw_obstacles(Draw& d, const Camera& camera, const tire::Simulation& simulation);
   void draw_props(Draw& d, const Camera& camera, const GameSession& session, double alpha);
-  void draw_goal(Draw& d, const Camera& camera, const tire::LevelSession& session);
+  void draw_goal(Draw& d, const Camera& camera, const tire::Simulation& simulation);
   // `shaded`: in asleep_shade() (draw.h), as the debug view draws a sleeping tire.
-  void draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::Tire& t, double alpha,
-                 bool is_player, bool shaded);
+  void draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::TireView& t,
+                 double alpha, bool is_player, bool shaded);
   void draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                   const DebugOptions& debug);
 
@@ -74,7 +74,7 @@ class WorldRenderer {
     SDL_Texture* texture = nullptr;
     std::vector<SDL_Vertex> vertices;
   };
-  TireTexture* tire_texture(SDL_Renderer* renderer, const tire::Tire& t, float radius_px, bool is_player);
+  TireTexture* tire_texture(SDL_Renderer* renderer, const tire::TireView& t, float radius_px, bool is_player);
 
   double floor_ = -1e9;
   double surface_ = -1e9;

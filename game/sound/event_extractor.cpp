@@ -32,11 +32,11 @@ std::string_view surface_name(Surface surface) {
 namespace {
 
 // A smaller tire sounds higher: pitch scales with 1/√r about the usual 0.5 m.
-double size_pitch(const tire::Tire& t) { return std::sqrt(0.5 / std::max(t.spec.outer_radius, 0.01)); }
+double size_pitch(const tire::TireView& t) { return std::sqrt(0.5 / std::max(t.outer_radius, 0.01)); }
 
 }  // namespace
 
-void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Surface surface,
+void EventExtractor::follow(Rise& rise, double impulse, const tire::TireView& t, Surface surface,
                             std::uint64_t tick, std::vector<SoundEvent>& out) {
   if (!rise.rising && impulse > rise.last) {
     rise.rising = true;
@@ -45,7 +45,7 @@ void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Sur
     // The rise peaked last tick: its size is the hit.
     rise.rising = false;
     const double hit = rise.last - rise.before;  // N·s
-    if (hit >= tuning_.impact_min_speed * t.total_mass()) {
+    if (hit >= tuning_.impact_min_speed * t.mass) {
       const ExtractorTuning& k = tuning_;
       const double strength = std::min(1.0, hit / k.impact_full);
       const double surface_gain = surface == Surface::tire ? k.impact_gain_tire : 1.0;
@@ -68,32 +68,34 @@ void EventExtractor::follow(Rise& rise, double impulse, const tire::Tire& t, Sur
   rise.last = impulse;
 }
 
-double EventExtractor::pan_of(const tire::Tire& t) const {
+double EventExtractor::pan_of(const tire::TireView& t) const {
   if (!listener_x_) return 0.0;
-  const double side = (t.centroid().x - *listener_x_) / tuning_.pan_width;
+  const double side = (t.centroid.x - *listener_x_) / tuning_.pan_width;
   return tuning_.pan_most * std::clamp(side, -1.0, 1.0);
 }
 
-void EventExtractor::impacts(const tire::Tire& t, std::uint64_t tick, std::vector<SoundEvent>& out) {
+void EventExtractor::impacts(const tire::TireView& t, std::uint64_t tick, std::vector<SoundEvent>& out) {
   TireState& s = tires_[t.id];
-  const tire::TickContacts& c = t.tick_contacts;
+  const tire::TickContacts& c = t.contacts;
   follow(s.surfaces[0], c.ground, t, Surface::ground, tick, out);
   follow(s.surfaces[1], c.prop, t, Surface::prop, tick, out);
   follow(s.surfaces[2], c.tire, t, Surface::tire, tick, out);
 }
 
-void EventExtractor::after_tick(const tire::World& world, const tire::TickInput& input,
+void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::TickInput& input,
                                 std::vector<SoundEvent>& out) {
-  const std::uint64_t tick = world.tick();
-  const tire::Tire* listener = world.player();
-  listener_x_ = listener ? std::optional<double>(listener->centroid().x) : std::nullopt;
-  for (const tire::Tire& t : world.tires()) {
+  const std::uint64_t tick = simulation.tick();
+  const std::optional<tire::TireId> player_id = simulation.player();
+  const std::optional<tire::TireView> player = player_id ? simulation.tire(*player_id) : std::nullopt;
+  listener_x_ = player ? std::optional<double>(player->centroid.x) : std::nullopt;
+  for (std::size_t i = 0; const std::optional<tire::TireView> view = simulation.tire_at(i); ++i) {
+    const tire::TireView& t = *view;
     if (t.asleep) continue;  // not simulated: silent, and its figures are those it fell asleep with
     impacts(t, tick, out);
     const double pitch_scale = size_pitch(t);
-    if (t.touched_ground_within(world.config().jump_grace)) {
-      const double omega = std::abs(t.angular_velocity());
-      const double tread_speed = omega * t.spec.outer_radius;
+    if (t.may_jump) {
+      const double omega = std::abs(t.spin);
+      const double tread_speed = omega * t.outer_radius;
       if (tread_speed >= tuning_.roll_min_speed) {
         SoundEvent e{tick, SoundKind::roll, Surface::ground, t.id};
         e.pan = pan_of(t);
@@ -103,7 +105,7 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
         out.push_back(e);
       }
     }
-    if (const double slip = t.tick_contacts.slip_speed; slip >= tuning_.skid_min_speed) {
+    if (const double slip = t.contacts.slip_speed; slip >= tuning_.skid_min_speed) {
       SoundEvent e{tick, SoundKind::skid, Surface::ground, t.id};
       e.pan = pan_of(t);
       e.gain = tuning_.skid_gain * std::min(1.0, slip / tuning_.skid_full_speed);
@@ -113,33 +115,27 @@ void EventExtractor::after_tick(const tire::World& world, const tire::TickInput&
     }
   }
   // Forget tires that are gone, now and then (ids are never reused).
-  if (tires_.size() > 2 * world.tires().size() + 16) {
-    std::erase_if(tires_, [&](const auto& entry) {
-      return std::none_of(world.tires().begin(), world.tires().end(),
-                          [&](const tire::Tire& t) { return t.id == entry.first; });
-    });
-  }
-  const tire::Tire* player = world.player();
+  if (tires_.size() > 2 * simulation.tire_count() + 16)
+    std::erase_if(tires_, [&](const auto& entry) { return !simulation.tire(entry.first); });
   if (input.jump && player_grounded_ && player)
     out.push_back({tick, SoundKind::jump, Surface::none, -1, tuning_.jump_gain, 1.0});
-  player_grounded_ = player && player->touched_ground_within(world.config().jump_grace);
+  player_grounded_ = player && player->may_jump;
+  script_events(simulation, out);
 }
 
-void EventExtractor::after_tick(const tire::LevelSession& session, const tire::TickInput& input,
-                                std::vector<SoundEvent>& out) {
-  after_tick(session.world(), input, out);
-  const std::uint64_t tick = session.world().tick();
-  if (session.checkpoint() && session.checkpoint() != checkpoint_)
+void EventExtractor::script_events(const tire::Simulation& simulation, std::vector<SoundEvent>& out) {
+  const std::uint64_t tick = simulation.tick();
+  if (simulation.checkpoint() && simulation.checkpoint() != checkpoint_)
     out.push_back({tick, SoundKind::checkpoint, Surface::none, -1, tuning_.checkpoint_gain, 1.0});
-  checkpoint_ = session.checkpoint();
-  for (const tire::ScriptMessage& m : session.messages()) {
+  checkpoint_ = simulation.checkpoint();
+  for (const tire::ScriptMessage& m : simulation.messages()) {
     const bool seen = std::any_of(messages_.begin(), messages_.end(), [&](const tire::ScriptMessage& o) {
       return o.text == m.text && o.until_tick == m.until_tick;
     });
     if (!seen) out.push_back({tick, SoundKind::message, Surface::none, -1, tuning_.message_gain, 1.0});
   }
-  messages_ = session.messages();
-  const tire::ScriptStatus status = session.status();
+  messages_.assign(simulation.messages().begin(), simulation.messages().end());
+  const tire::ScriptStatus status = simulation.status();
   if (status != status_ && status == tire::ScriptStatus::won)
     out.push_back({tick, SoundKind::win, Surface::none, -1, tuning_.end_gain, 1.0});
   if (status != status_ && status == tire::ScriptStatus::lost)

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "sound_event.h"
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace game::sound {
 
@@ -67,10 +67,9 @@ class EventExtractor {
  public:
   explicit EventExtractor(ExtractorTuning tuning = {}) : tuning_(tuning) {}
 
-  // After a tick of `world`, in which the player's input was `input`: appends its events to `out`.
-  void after_tick(const tire::World& world, const tire::TickInput& input, std::vector<SoundEvent>& out);
-  // The same, with the script's events (checkpoint, message, won, lost) from `session`.
-  void after_tick(const tire::LevelSession& session, const tire::TickInput& input,
+  // After a tick of `simulation`, in which the player's input was `input`: appends its events to
+  // `out`, the tires' and then the script's (checkpoint, message, won, lost).
+  void after_tick(const tire::Simulation& simulation, const tire::TickInput& input,
                   std::vector<SoundEvent>& out);
   // A new world (level load, restart): forget every tire and the script's state.
   void reset();
@@ -85,10 +84,11 @@ class EventExtractor {
   struct TireState {
     Rise surfaces[3];  // ground, prop, tire
   };
-  void impacts(const tire::Tire& t, std::uint64_t tick, std::vector<SoundEvent>& out);
+  void script_events(const tire::Simulation& simulation, std::vector<SoundEvent>& out);
+  void impacts(const tire::TireView& t, std::uint64_t tick, std::vector<SoundEvent>& out);
   // Where `t` sounds from (SoundEvent::pan), heard from listener_x_.
-  double pan_of(const tire::Tire& t) const;
-  void follow(Rise& rise, double impulse, const tire::Tire& t, Surface surface, std::uint64_t tick,
+  double pan_of(const tire::TireView& t) const;
+  void follow(Rise& rise, double impulse, const tire::TireView& t, Surface surface, std::uint64_t tick,
               std::vector<SoundEvent>& out);
 
   ExtractorTuning tuning_;

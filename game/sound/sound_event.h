@@ -29,7 +29,7 @@ std::string_view kind_name(SoundKind kind);
 std::string_view surface_name(Surface surface);
 
 struct SoundEvent {
-  std::uint64_t tick = 0;  // World::tick() after the step that made it
+  std::uint64_t tick = 0;  // Simulation::tick() after the step that made it
   SoundKind kind = SoundKind::impact;
   Surface surface = Surface::none;
   std::int64_t tire = -1;  // the tire's id, or −1 for a game event

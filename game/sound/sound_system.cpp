@@ -27,16 +27,16 @@ void SoundSystem::close() {
   log_.close();
 }
 
-void SoundSystem::after_tick(const tire::LevelSession& session, const tire::TickInput& input) {
+void SoundSystem::after_tick(const tire::Simulation& simulation, const tire::TickInput& input) {
   tick_events_.clear();
-  extractor_.after_tick(session, input, tick_events_);
+  extractor_.after_tick(simulation, input, tick_events_);
   for (const SoundEvent& e : tick_events_) log_.write(e);
   events_ += tick_events_.size();
   output_.lock();
   for (const SoundEvent& e : tick_events_) mixer_->play(e);
-  const MixStats stats = mixer_->end_tick(session.world().config().dt);
+  const MixStats stats = mixer_->end_tick(simulation.config().dt);
   output_.unlock();
-  log_.write_mix(session.world().tick(), stats);
+  log_.write_mix(simulation.tick(), stats);
   max_playing_ = std::max(max_playing_, stats.playing);
 }
 

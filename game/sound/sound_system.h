@@ -37,8 +37,8 @@ class SoundSystem {
   std::string close_log();
   void close();
 
-  // After each tick of `session`, driven by `input`.
-  void after_tick(const tire::LevelSession& session, const tire::TickInput& input);
+  // After each tick of `simulation`, driven by `input`.
+  void after_tick(const tire::Simulation& simulation, const tire::TickInput& input);
   // A new world: forget its tires and end their held sounds.
   void new_level();
   // While the game stands still (paused, a menu), held sounds must not drone on.

@@ -12,6 +12,7 @@
 #include "editor/level_document.h"
 #include "editor/level_edits.h"
 #include "editor/level_format.h"
+#include "tire/io/level.h"
 #include "tire/io/level_keys.h"
 #include "tire/session/level_session.h"
 #include "tire/world/world.h"

@@ -14,6 +14,7 @@
 #include "app/level_list.h"
 #include "app/menus.h"
 #include "input/key_script.h"
+#include "internals.h"
 #include "play/game_session.h"
 #include "play/tuning.h"
 #include "render/camera.h"
@@ -40,17 +41,17 @@ struct Recorder : SessionObserver {
     batches.emplace_back(tick, events.size());
   }
   void on_step(std::uint64_t tick, const tire::TickInput&) override { steps.push_back(tick); }
-  void on_stepped(const tire::LevelSession&) override {}
+  void on_stepped(const tire::Simulation&) override {}
 };
 
 // Steps the session, no key held, until every tire has come to rest and fallen asleep.
 void put_to_sleep(GameSession& session) {
-  const std::size_t tires = session.world().tires().size();
-  for (int i = 0; i < 900 && session.world().asleep_count() < tires; ++i) session.step({});
-  for (const tire::Tire& t : session.world().tires())
+  const std::size_t tires = world_of(session).tires().size();
+  for (int i = 0; i < 900 && world_of(session).asleep_count() < tires; ++i) session.step({});
+  for (const tire::Tire& t : world_of(session).tires())
     UNSCOPED_INFO("tire " << t.id << " at " << t.centroid().x << ", " << t.centroid().y << " moving "
                           << tire::length(t.velocity()) << " m/s, still " << t.still_time << " s");
-  REQUIRE(session.world().asleep_count() == tires);
+  REQUIRE(world_of(session).asleep_count() == tires);
 }
 
 }  // namespace
@@ -105,7 +106,7 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   session.start("flat.json", flat_level());
   session.queue(SpawnTireEvent{{3, 2}});
   session.flush();
-  REQUIRE(session.world().tires().size() == 2);
+  REQUIRE(world_of(session).tires().size() == 2);
 
   Tuning wanted = session.tuning();
   REQUIRE(wanted.set("tires.pressure", 1.5));
@@ -119,21 +120,21 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   for (const TuneEvent& e : changes) session.queue(e);
   session.flush();
 
-  for (const tire::Tire& t : session.world().tires()) {
+  for (const tire::Tire& t : world_of(session).tires()) {
     CHECK(t.spec.pressure == 1.5);
     CHECK(t.spec.mass == Approx(20.0));  // default spec mass 10 kg, times 2
     CHECK(t.spec.friction == 0.3);
     CHECK(t.spec.kinetic_friction == 0.3);
     CHECK(t.spec.compliance.spoke == 1e-4);
   }
-  CHECK(session.world().gravity().y == -3.0);
-  CHECK(session.world().config().substeps == 12);
+  CHECK(world_of(session).gravity().y == -3.0);
+  CHECK(world_of(session).config().substeps == 12);
   CHECK(tuning_value(session.tuning(), "tires.mass_scale") == 2.0);
 
   // Scaling again multiplies the spawn mass, not the current one.
   session.queue(TuneEvent{"tires.mass_scale", 0.5});
   session.flush();
-  CHECK(session.world().tires()[0].spec.mass == Approx(5.0));
+  CHECK(world_of(session).tires()[0].spec.mass == Approx(5.0));
   // An unknown key changes nothing.
   session.queue(TuneEvent{"tires.nonsense", 1.0});
   session.flush();
@@ -142,7 +143,7 @@ TEST_CASE("tuning changes are key = value pairs that reach every tire", "[unit][
   session.queue(TuneEvent{"tires.mass_scale", 0.0});
   session.flush();
   CHECK(tuning_value(session.tuning(), "tires.mass_scale") == 0.5);
-  CHECK(session.world().tires()[0].spec.mass == Approx(5.0));
+  CHECK(world_of(session).tires()[0].spec.mass == Approx(5.0));
 }
 
 TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside the table's ranges",
@@ -178,7 +179,7 @@ TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside
   session.start("flat.json", flat_level());
   for (const tire::Parameter* p : tuning_parameters()) {
     INFO(p->key);
-    CHECK_FALSE(apply_tuning(session.world(), p->key, p->range.max + 1.0));
+    CHECK_FALSE(apply_tuning(session.simulation(), p->key, p->range.max + 1.0));
   }
 }
 
@@ -197,20 +198,20 @@ TEST_CASE("every input reaches the world through the session, between ticks", "[
   REQUIRE(recorder.batches.size() == 1);
   CHECK(recorder.batches[0] == std::make_pair(std::uint64_t{0}, std::size_t{3}));
   CHECK(recorder.steps == std::vector<std::uint64_t>{0});
-  CHECK(session.world().tires().size() == 2);
-  CHECK(session.world().tires()[0].grabbed);
-  CHECK(session.world().tires()[0].grab_target == tire::Vec2{0, 2.0});
+  CHECK(world_of(session).tires().size() == 2);
+  CHECK(world_of(session).tires()[0].grabbed);
+  CHECK(world_of(session).tires()[0].grab_target == tire::Vec2{0, 2.0});
 
   session.queue(ReleaseGrabEvent{});
   session.step({});
-  CHECK_FALSE(session.world().tires()[0].grabbed);
+  CHECK_FALSE(world_of(session).tires()[0].grabbed);
 
   // A level load starts a fresh world.
   session.queue(LoadLevelEvent{"flat.json", session.level_ptr()});
   session.flush();
   CHECK(session.generation() == first_generation + 1);
-  CHECK(session.world().tick() == 0);
-  CHECK(session.world().tires().size() == 1);
+  CHECK(world_of(session).tick() == 0);
+  CHECK(world_of(session).tires().size() == 1);
 }
 
 TEST_CASE("a run the tuning panel changed is marked tuned until the level restarts", "[unit][game]") {
@@ -233,20 +234,20 @@ TEST_CASE("a run the tuning panel changed is marked tuned until the level restar
 TEST_CASE("drawing interpolates between the last two ticks", "[unit][game]") {
   GameSession session;
   session.start("flat.json", flat_level());
-  const tire::Tire& t = session.world().tires()[0];
+  const tire::TireView t = *session.simulation().tire_at(0);
   std::vector<tire::Vec2> out;
   session.interpolated_positions(t, 0.5, out);  // no previous tick yet: as it is
-  CHECK(std::ranges::equal(out, t.particles.x));
+  CHECK(std::ranges::equal(out, t.positions));
   for (int i = 0; i < 30; ++i) session.step({1.0, false});
-  const tire::ArrayView<tire::Vec2>& x = session.world().tires()[0].particles.x;
-  const std::vector<tire::Vec2> now(x.begin(), x.end());
-  session.interpolated_positions(session.world().tires()[0], 1.0, out);
+  const tire::TireView moved = *session.simulation().tire_at(0);
+  const std::vector<tire::Vec2> now(moved.positions.begin(), moved.positions.end());
+  session.interpolated_positions(moved, 1.0, out);
   CHECK(out == now);
-  session.interpolated_positions(session.world().tires()[0], 0.0, out);
+  session.interpolated_positions(moved, 0.0, out);
   CHECK(out != now);
-  const tire::Vec2 half = session.interpolated_centroid(session.world().tires()[0], 0.5);
-  const tire::Vec2 before = session.interpolated_centroid(session.world().tires()[0], 0.0);
-  const tire::Vec2 after = session.world().tires()[0].centroid();
+  const tire::Vec2 half = session.interpolated_centroid(moved, 0.5);
+  const tire::Vec2 before = session.interpolated_centroid(moved, 0.0);
+  const tire::Vec2 after = moved.centroid;
   CHECK(half.x == Approx(0.5 * (before.x + after.x)));
 }
 
@@ -306,10 +307,9 @@ TEST_CASE("the 300-tire level is all on one screen at the game's zoom", "[unit][
   const tire::LevelLoad load =
       tire::load_level_file(std::filesystem::path(TIRE_LEVELS_DIR) / "08-three-hundred.json");
   REQUIRE(load.level);
-  const std::unique_ptr<tire::LevelSession> session = tire::make_session(*load.level);
-  const tire::World& world = session->world();
-  const tire::Aabb bounds = level_bounds(*session);
-  const tire::Tire* player = world.player();
+  const tire::Simulation simulation(std::make_shared<const tire::Level>(*load.level));
+  const tire::Aabb bounds = level_bounds(simulation);
+  const tire::Tire* player = world_of(simulation).player();
   REQUIRE(player);
   // 16:9, 4:3 and a tall window: the walls (x in [-4.5, 4.5]), the floor and the height the pile
   // reaches (about 3.5 m) are in view while the player waits at the gate.
@@ -403,7 +403,7 @@ TEST_CASE("every tuning change the session applies wakes the sleeping tires; a r
     session.start("flat.json", flat_level());
     session.queue(SpawnTireEvent{{3, 2}});
     session.flush();
-    REQUIRE(session.world().tires().size() == 2);
+    REQUIRE(world_of(session).tires().size() == 2);
   };
   // A key of each kind: a tire's, the one friction slider (two keys), the solver's, the gravity,
   // the sleep checkbox. Each on a session of its own (a sideways gravity rolls the tires away).
@@ -418,8 +418,8 @@ TEST_CASE("every tuning change the session applies wakes the sleeping tires; a r
     session.queue(change);
     session.flush();
     CHECK(tuning_value(session.tuning(), change.key) == change.value);
-    CHECK(session.world().asleep_count() == 0);
-    for (const tire::Tire& t : session.world().tires()) CHECK_FALSE(t.asleep);
+    CHECK(world_of(session).asleep_count() == 0);
+    for (const tire::Tire& t : world_of(session).tires()) CHECK_FALSE(t.asleep);
   }
   // Changes the world refuses change nothing, and wake nothing.
   GameSession session;
@@ -430,14 +430,14 @@ TEST_CASE("every tuning change the session applies wakes the sleeping tires; a r
     session.queue(refused);
     session.flush();
   }
-  CHECK(session.world().asleep_count() == 2);
-  CHECK(session.world().config().sleep);
+  CHECK(world_of(session).asleep_count() == 2);
+  CHECK(world_of(session).config().sleep);
 }
 
 TEST_CASE("the sleep checkbox is SolverConfig::sleep, carried as key = 1 or 0", "[unit][game]") {
   GameSession session;
   session.start("flat.json", flat_level());
-  REQUIRE(session.world().config().sleep);  // the engine's default
+  REQUIRE(world_of(session).config().sleep);  // the engine's default
   const Tuning level = session.tuning();
   CHECK(level.sleep);
   CHECK(Tuning().sleep);
@@ -451,15 +451,15 @@ TEST_CASE("the sleep checkbox is SolverConfig::sleep, carried as key = 1 or 0", 
   CHECK(changes[0].value == 0.0);
   session.queue(changes[0]);
   session.flush();
-  CHECK_FALSE(session.world().config().sleep);
+  CHECK_FALSE(world_of(session).config().sleep);
   CHECK(session.tuning() == off);
   // A freshly loaded world's tuning reads the flag from the world.
-  CHECK_FALSE(Tuning::from_world(session.world()).sleep);
+  CHECK_FALSE(Tuning::from_simulation(session.simulation()).sleep);
 
   // "Reset to the level's values" turns it back on.
   for (const TuneEvent& e : tuning_changes(session.tuning(), level)) session.queue(e);
   session.flush();
-  CHECK(session.world().config().sleep);
+  CHECK(world_of(session).config().sleep);
   CHECK(session.tuning() == level);
 }
 
@@ -482,7 +482,7 @@ TEST_CASE("the HUD counts the sleeping tires, when there are tires", "[unit][gam
   session.queue(SpawnTireEvent{{3, 2}});
   session.flush();
   put_to_sleep(session);
-  REQUIRE(format_asleep_line(line, session.world().asleep_count(), session.world().tires().size()));
+  REQUIRE(format_asleep_line(line, world_of(session).asleep_count(), world_of(session).tires().size()));
   CHECK(std::string_view(line) == "asleep       2 / 2");
 }
 
@@ -521,9 +521,8 @@ TEST_CASE("the HUD counts a time limit down and the end screen names what ended 
   REQUIRE(load.level);
   GameSession session;
   session.start("01.json", std::make_shared<const tire::Level>(*load.level));
-  for (int i = 0; i < 4000 && session.level_session().status() == ScriptStatus::running; ++i)
-    session.step({});
-  CHECK(session.level_session().end_reason() == EndReason::time_limit);
+  for (int i = 0; i < 4000 && session.simulation().status() == ScriptStatus::running; ++i) session.step({});
+  CHECK(session.simulation().end_reason() == EndReason::time_limit);
 }
 
 TEST_CASE("a chasm is drawn open to the deep, rock only under the ground", "[unit][game]") {
@@ -534,7 +533,7 @@ TEST_CASE("a chasm is drawn open to the deep, rock only under the ground", "[uni
   REQUIRE(load.level);
   GameSession session;
   session.start("02.json", std::make_shared<const tire::Level>(*load.level));
-  const Underground ground = underground(session.world());
+  const Underground ground = underground(session.simulation());
   CHECK(ground.floor == -1.0);
   CHECK(ground.surface == 0.0);
   SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormat(0, 400, 300, 32, SDL_PIXELFORMAT_RGBA32);

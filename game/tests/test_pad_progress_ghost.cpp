@@ -7,11 +7,13 @@
 
 #include "input/gamepad.h"
 #include "input/pad_script.h"
+#include "internals.h"
 #include "play/session_recorder.h"
 #include "progress/best_runs.h"
 #include "progress/ghost.h"
 #include "progress/progress.h"
 #include "tire/math/state_hash.h"
+#include "tire/replay/replay.h"
 
 using namespace game;
 
@@ -145,7 +147,7 @@ TEST_CASE("a win is a new best only once saved, and a data folder that cannot be
   const auto level = level_01();
   SessionRecorder recorder;
   recorder.begin(level_path, level->gravity);
-  const auto session = tire::make_session(*level);
+  const auto session = std::make_unique<tire::Simulation>(level);
   const auto win = [&](const std::filesystem::path& data, std::vector<std::string>& messages) {
     BestRuns runs;
     messages = runs.open(data, TIRE_LEVELS_DIR);
@@ -224,7 +226,7 @@ TEST_CASE("the ghost steps in lockstep from its replay and ends where the run en
   const std::filesystem::path level_file = std::filesystem::path(TIRE_LEVELS_DIR) / "01-first-roll.json";
   SessionRecorder recorder;
   recorder.begin(level_file, level->gravity);
-  std::unique_ptr<tire::LevelSession> session = tire::make_session(*level);
+  std::unique_ptr<tire::Simulation> session = std::make_unique<tire::Simulation>(level);
   for (std::uint64_t t = 0; t < 120; ++t) {
     const tire::TickInput in{t < 80 ? 1.0 : 0.0, t == 40};
     recorder.on_step(t, in);
@@ -242,8 +244,8 @@ TEST_CASE("the ghost steps in lockstep from its replay and ends where the run en
   ghost.sync(500);  // past its end it holds still
   CHECK(ghost.tick() == 120);
   REQUIRE(ghost.player());
-  CHECK(ghost.player()->centroid().x == session->world().player()->centroid().x);
-  CHECK(ghost.player()->centroid().y == session->world().player()->centroid().y);
+  CHECK(ghost.player()->centroid.x == world_of(*session).player()->centroid().x);
+  CHECK(ghost.player()->centroid.y == world_of(*session).player()->centroid().y);
   ghost.sync(0);  // the player restarted
   CHECK(ghost.tick() == 0);
   // Another version of the level: dropped.
@@ -265,11 +267,11 @@ TEST_CASE("F5's saves never reuse a name: a second save in the same second is <n
   const std::filesystem::path level_file = std::filesystem::path(TIRE_LEVELS_DIR) / "01-first-roll.json";
   SessionRecorder recorder;
   recorder.begin(level_file, level->gravity);
-  std::unique_ptr<tire::LevelSession> session = tire::make_session(*level);
+  std::unique_ptr<tire::Simulation> session = std::make_unique<tire::Simulation>(level);
   std::vector<std::filesystem::path> saved;
   for (int save = 0; save < 3; ++save) {
     for (int t = 0; t < 10; ++t) {
-      recorder.on_step(session->world().tick(), {1.0, false});
+      recorder.on_step(session->tick(), {1.0, false});
       session->step({1.0, false});
       recorder.on_stepped(*session);
     }

@@ -10,20 +10,21 @@
 #include <string>
 #include <vector>
 
+#include "internals.h"
 #include "sound/audio_log.h"
 #include "sound/event_extractor.h"
 #include "sound/sound_bank.h"
 #include "sound/voice_mixer.h"
-#include "tire/io/level.h"
 
 using namespace game::sound;
+using game::world_of;
 
 namespace {
 
-std::unique_ptr<tire::LevelSession> session_of(const std::string& file) {
+std::unique_ptr<tire::Simulation> session_of(const std::string& file) {
   tire::LevelLoad load = tire::load_level_file(file);
   if (!load.level) throw std::runtime_error(load.errors.front());
-  return tire::make_session(*load.level);
+  return std::make_unique<tire::Simulation>(std::make_shared<const tire::Level>(std::move(*load.level)));
 }
 
 std::string test_level(const std::string& name) {
@@ -32,7 +33,7 @@ std::string test_level(const std::string& name) {
 std::string level(const std::string& name) { return std::string(TIRE_LEVELS_DIR) + "/" + name; }
 
 // Steps `session` `ticks` ticks with `input` (its jump at tick `jump_at` only), extracting events.
-std::vector<SoundEvent> play(tire::LevelSession& session, int ticks, tire::TickInput input = {},
+std::vector<SoundEvent> play(tire::Simulation& session, int ticks, tire::TickInput input = {},
                              int jump_at = -1) {
   EventExtractor extractor;
   std::vector<SoundEvent> events;
@@ -57,8 +58,8 @@ std::vector<SoundEvent> of_kind(const std::vector<SoundEvent>& events, SoundKind
 TEST_CASE("a resting tire's tick contacts report its weight times dt against the ground", "[sound]") {
   auto session = session_of(test_level("resting.json"));
   play(*session, 120);
-  const tire::Tire& t = session->world().tires().front();
-  const double weight_dt = t.total_mass() * 9.81 * session->world().config().dt;
+  const tire::Tire& t = world_of(*session).tires().front();
+  const double weight_dt = t.total_mass() * 9.81 * world_of(*session).config().dt;
   CHECK(t.tick_contacts.ground == Approx(weight_dt).epsilon(0.02));
   CHECK(t.tick_contacts.prop == 0.0);
   CHECK(t.tick_contacts.tire == 0.0);
@@ -90,7 +91,7 @@ TEST_CASE("a tire dropped from 3 m makes a louder first impact than one dropped 
 TEST_CASE("a tire resting 5 s makes no impact sound after it settles", "[sound]") {
   auto session = session_of(test_level("resting.json"));
   const auto events = play(*session, 360);
-  REQUIRE(!session->world().tires().front().asleep);  // sleeping is off: it is simulated throughout
+  REQUIRE(!world_of(*session).tires().front().asleep);  // sleeping is off: simulated throughout
   for (const SoundEvent& e : of_kind(events, SoundKind::impact)) {
     INFO("impact at tick " << e.tick << " gain " << e.gain);
     CHECK(e.tick <= 60);
@@ -101,10 +102,10 @@ TEST_CASE("a tire resting 5 s makes no impact sound after it settles", "[sound]"
 
 TEST_CASE("a tire landing on another makes a tire impact", "[sound]") {
   auto session = session_of(test_level("resting.json"));
-  tire::TireSpec spec = session->world().tires().front().spec;
+  tire::TireSpec spec = world_of(*session).tires().front().spec;
   spec.player = false;
   spec.position = {0.0, 2.6};
-  session->world().add_tire(spec);
+  world_of(*session).add_tire(spec);
   const auto hits = of_kind(play(*session, 120), SoundKind::impact);
   CHECK(
       std::any_of(hits.begin(), hits.end(), [](const SoundEvent& e) { return e.surface == Surface::tire; }));
@@ -129,13 +130,13 @@ TEST_CASE("a tire to the player's right sounds from the right, the player's own 
   // resting.json's tire is the player's; a second one 6 m to its right, spinning on the ground,
   // rolls and skids there: pan 0.8 × 6/7 = 0.69 while it stays there.
   auto session = session_of(test_level("resting.json"));
-  REQUIRE(session->world().player() != nullptr);
-  const double player_x = session->world().player()->centroid().x;
-  tire::TireSpec spec = session->world().tires().front().spec;
+  REQUIRE(world_of(*session).player() != nullptr);
+  const double player_x = world_of(*session).player()->centroid().x;
+  tire::TireSpec spec = world_of(*session).tires().front().spec;
   spec.player = false;
   spec.position = {player_x + 6.0, spec.position.y};
   spec.angular_velocity = -20.0;
-  const tire::TireId other = session->world().add_tire(spec);
+  const tire::TireId other = world_of(*session).add_tire(spec);
   const ExtractorTuning tuning;
   bool heard = false;
   for (const SoundEvent& e : play(*session, 30)) {
@@ -182,8 +183,8 @@ TEST_CASE("a voice panned left is louder on the left, and as loud in all as in t
 
 TEST_CASE("a tire set spinning on the ground skids until it grips", "[sound]") {
   auto session = session_of(test_level("resting.json"));
-  session->world().reset_tire(0);
-  tire::Tire& t = *session->world().find_tire(0);
+  world_of(*session).reset_tire(0);
+  tire::Tire& t = *world_of(*session).find_tire(0);
   const tire::RigidMotion m = t.rigid_motion();
   for (std::size_t i = 0; i < t.particles.size(); ++i)
     t.particles.v[i] += tire::perp(t.particles.x[i] - m.centroid) * -30.0;
@@ -207,7 +208,7 @@ TEST_CASE("a level lost on its time limit ends with the lose sound", "[sound]") 
   tire::LevelLoad load = tire::load_level_file(test_level("resting.json"));
   REQUIRE(load.level);
   load.level->script.time_limit = 0.5;  // a level file's "time_limit": 0.5
-  auto session = tire::make_session(*load.level);
+  auto session = std::make_unique<tire::Simulation>(std::make_shared<const tire::Level>(*load.level));
   const auto events = play(*session, 60);
   REQUIRE(session->status() == tire::ScriptStatus::lost);
   const auto lose = of_kind(events, SoundKind::lose);
@@ -222,7 +223,8 @@ TEST_CASE("a new checkpoint sounds once", "[sound]") {
   EventExtractor extractor;
   std::vector<SoundEvent> events;
   for (int tick = 0; tick < 5; ++tick) {
-    if (tick == 2) session->set_checkpoint({1.0, 1.0});  // what the script's checkpoint action does
+    if (tick == 2)  // what the script's checkpoint action does
+      tire::SimulationInternals::session(*session).set_checkpoint({1.0, 1.0});
     session->step({});
     extractor.after_tick(*session, {}, events);
   }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "internals.h"
 #include "play/game_session.h"
 #include "play/tuning.h"
 
@@ -81,7 +82,7 @@ Trial run_trial(const std::vector<TuneEvent>& changes) {
   for (const TuneEvent& e : changes) session.queue(e);
   session.flush();
   Trial out;
-  const tire::Tire& t = session.world().tires().front();
+  const tire::Tire& t = world_of(session).tires().front();
   const std::uint32_t n = t.segments();
   std::vector<double> rest(n);
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -96,7 +97,7 @@ Trial run_trial(const std::vector<TuneEvent>& changes) {
     session.step(input);
     for (const std::string& w : session.take_warnings())
       if (w.find("diverged") != std::string::npos) out.diverged = true;
-    look(session.world().tires().front(), rest, out);
+    look(world_of(session).tires().front(), rest, out);
   }
   return out;
 }
@@ -178,7 +179,7 @@ TEST_CASE("each material preset chosen in the panel is the preset a level names,
     session.flush();
     tire::TireSpec named;
     m.apply_to(named);
-    const tire::TireSpec& got = session.world().tires().front().spec;
+    const tire::TireSpec& got = world_of(session).tires().front().spec;
     CHECK(got.compliance.outer == named.compliance.outer);
     CHECK(got.compliance.inner == named.compliance.inner);
     CHECK(got.compliance.spoke == named.compliance.spoke);
@@ -208,8 +209,8 @@ TEST_CASE("the tuning panel's changes reach the tires spawned after them", "[uni
   for (const TuneEvent& e : tuning_changes(session.tuning(), wanted)) session.queue(e);
   session.queue(SpawnTireEvent{{3, 3}});  // the player's click, after the changes
   session.flush();
-  REQUIRE(session.world().tires().size() == 2);
-  for (const tire::Tire& t : session.world().tires()) {
+  REQUIRE(world_of(session).tires().size() == 2);
+  for (const tire::Tire& t : world_of(session).tires()) {
     INFO("tire " << t.id);
     CHECK(t.spec.friction == 0.25);
     CHECK(t.spec.kinetic_friction == 0.25);
@@ -218,7 +219,7 @@ TEST_CASE("the tuning panel's changes reach the tires spawned after them", "[uni
   }
   // A new level starts from its own values: the tuning belonged to the run before.
   session.start("trial.json", trial_level());
-  CHECK(session.world().tires().front().spec.friction == tire::TireSpec{}.friction);
+  CHECK(world_of(session).tires().front().spec.friction == tire::TireSpec{}.friction);
 }
 
 TEST_CASE("the tuning sweep: pairs of slider ends", "[.tuning_sweep]") {

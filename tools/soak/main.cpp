@@ -3,7 +3,7 @@
 // checks that
 //   - every tire stays finite, every tick, and no divergence warning fires;
 //   - no more tires are alive than the level's own and --max-tires: the run budget of live tires
-//     it sets (run_budgets.h) holds, a script spawning on top included;
+//     it sets (levels/README.md, "budgets") holds, a script spawning on top included;
 //   - resident memory stays flat: after the warm-up minutes (the tire count reaches its cap and
 //     stays there, since the oldest spawned tire is removed for each new one) RSS may not grow by
 //     more than a small bound.
@@ -23,9 +23,7 @@
 
 #include "cli_numbers.h"
 #include "process_memory.h"
-#include "tire/io/level.h"
-#include "tire/replay/replay.h"
-#include "tire/session/level_session.h"
+#include "tire/engine.h"
 
 namespace {
 
@@ -48,10 +46,10 @@ struct Region {
   tire::Vec2 world_min{-1e300, -1e300}, world_max{1e300, 1e300};  // the obstacles' bounding box
 };
 
-Region region_of(const tire::Level& level) {
-  if (level.obstacles.empty()) return {};
+Region region_of(const tire::Simulation& simulation) {
+  if (simulation.obstacles().empty()) return {};
   tire::Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
-  for (const tire::Obstacle& o : level.obstacles) {
+  for (const tire::Obstacle& o : simulation.obstacles()) {
     lo = {std::min(lo.x, o.box.min.x), std::min(lo.y, o.box.min.y)};
     hi = {std::max(hi.x, o.box.max.x), std::max(hi.y, o.box.max.y)};
   }
@@ -62,6 +60,13 @@ Region region_of(const tire::Level& level) {
   r.max = {hi.x - 1.5, hi.y - 3.0};
   if (!(r.min.x < r.max.x) || !(r.min.y < r.max.y)) return {};
   return r;
+}
+
+// Every position finite, and the velocities as far as the view shows them: their mean and the spin
+// (a particle's infinite or NaN velocity makes both so).
+bool finite(const tire::TireView& t) {
+  const auto ok = [](tire::Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); };
+  return std::all_of(t.positions.begin(), t.positions.end(), ok) && ok(t.velocity) && std::isfinite(t.spin);
 }
 
 }  // namespace
@@ -94,20 +99,25 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
 
-  const tire::LevelLoad load = tire::load_level_file(opt.level);
+  const tire::LevelOpen first = tire::open_level_file(opt.level);
+  if (!first.level) {
+    for (const std::string& e : first.errors) std::fprintf(stderr, "%s\n", e.c_str());
+    return 2;
+  }
+  // --max-tires is the soak's own spawns; the level's run budget of live tires becomes its own
+  // tires and those (levels/README.md, "budgets"), so that a script spawning on top is held to it
+  // too.
+  const auto level_budget =
+      static_cast<std::size_t>(tire::Simulation(first.level).parameter("budgets.tires").value_or(0.0));
+  const int budget = static_cast<int>(std::min(level_budget, first.info.tires + opt.max_tires));
+  const tire::LevelOpen load = tire::open_level_file(opt.level, {"budgets.tires=" + std::to_string(budget)});
   if (!load.level) {
     for (const std::string& e : load.errors) std::fprintf(stderr, "%s\n", e.c_str());
     return 2;
   }
-  // --max-tires is the soak's own spawns; the level's run budget of live tires becomes its own tires
-  // and those (run_budgets.h), so that a script spawning on top is held to it too.
-  tire::Level level = *load.level;
-  level.budgets.tires = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(level.budgets.tires),
-                                                               level.tires.size() + opt.max_tires));
-  std::unique_ptr<tire::LevelSession> session = tire::make_session(level);
-  tire::World* const world = &session->world();  // the same object after a restart (assigned in place)
-  const Region region = region_of(level);
-  const double dt = level.solver.dt;
+  tire::Simulation simulation(load.level);
+  const Region region = region_of(simulation);
+  const double dt = load.info.dt;
   const auto ticks_per_minute = static_cast<std::uint64_t>(std::llround(60.0 / dt));
   const auto total_ticks = static_cast<std::uint64_t>(std::llround(opt.minutes * 60.0 / dt));
 
@@ -141,7 +151,7 @@ int main(int argc, char** argv) {
 
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
     held.jump = false;
-    // Random inputs, through the same apply_input the game and replays use.
+    // Random inputs, applied as the game's and replays' are.
     tire::ReplayInput in;
     in.tick = tick;
     bool any = false;
@@ -150,12 +160,12 @@ int main(int argc, char** argv) {
     if (unit(rng) < 1.0 / 150.0) in.jump = true, any = true, ++jumps;
     if (unit(rng) < 1.0 / 120.0) in.inflate = std::round(unit(rng) * 2.0 - 1.0), any = true;  // -1, 0 or 1
     if (unit(rng) < 1.0 / 30.0) in.spawn = random_point(), any = true;
-    if (grab_ticks_left == 0 && unit(rng) < 1.0 / 240.0 && !world->tires().empty()) {
+    if (const std::size_t tires = simulation.tire_count();
+        grab_ticks_left == 0 && unit(rng) < 1.0 / 240.0 && tires > 0) {
       // Press on a random tire's tread, then drag it about for up to two seconds.
-      const tire::Tire& t =
-          world->tires()[static_cast<std::size_t>(unit(rng) * static_cast<double>(world->tires().size())) %
-                         world->tires().size()];
-      in.grab = t.particles.x[0];
+      const std::optional<tire::TireView> t =
+          simulation.tire_at(static_cast<std::size_t>(unit(rng) * static_cast<double>(tires)) % tires);
+      in.grab = t->positions[0];
       drag_target = *in.grab;
       grab_ticks_left = 1 + static_cast<int>(unit(rng) * 120.0);
       any = true;
@@ -173,23 +183,23 @@ int main(int argc, char** argv) {
     }
     if (any) {
       if (in.spawn && spawned.size() >= opt.max_tires) {  // room first: the oldest spawned goes
-        if (world->remove_tire(spawned.front())) ++removals;
+        if (simulation.remove_tire(spawned.front())) ++removals;
         spawned.pop_front();
       }
-      const std::size_t before = world->tires().size();
-      tire::apply_input(in, *session, level, held);
-      if (world->tires().size() > before) {
+      const std::size_t before = simulation.tire_count();
+      simulation.apply(in, held);
+      if (simulation.tire_count() > before) {
         ++spawns;
-        spawned.push_back(world->tires().back().id);
+        spawned.push_back(simulation.tire_at(simulation.tire_count() - 1)->id);
       }
     }
-    session->step(held);
+    simulation.step(held);
     // Tires thrown over the level's walls fall for ever: like the game, remove spawned ones once
     // they are well below the level (they count as lost).
     for (auto it = spawned.begin(); it != spawned.end();) {
-      const tire::Tire* t = world->find_tire(*it);
-      if (t && t->centroid().y < region.world_min.y - 20.0) {
-        world->remove_tire(*it);
+      const std::optional<tire::TireView> t = simulation.tire(*it);
+      if (t && t->centroid.y < region.world_min.y - 20.0) {
+        simulation.remove_tire(*it);
         it = spawned.erase(it);
         ++lost;
       } else {
@@ -197,20 +207,20 @@ int main(int argc, char** argv) {
       }
     }
 
-    for (const tire::Tire& t : world->tires())
-      if (!t.is_finite()) {
+    for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i)
+      if (!finite(*t)) {
         ++nonfinite;
         if (nonfinite <= 5)
           std::fprintf(stderr, "tire-soak: tick %llu: tire %u is not finite\n",
-                       static_cast<unsigned long long>(tick + 1), t.id);
+                       static_cast<unsigned long long>(tick + 1), t->id);
       }
-    if (world->tires().size() > static_cast<std::size_t>(level.budgets.tires)) {
+    if (simulation.tire_count() > static_cast<std::size_t>(budget)) {
       ++over_budget;  // a budget passed: the engine let more live than it was given
       if (over_budget == 1)
         std::fprintf(stderr, "tire-soak: tick %llu: %zu tires alive, past budgets.tires (%d)\n",
-                     static_cast<unsigned long long>(tick + 1), world->tires().size(), level.budgets.tires);
+                     static_cast<unsigned long long>(tick + 1), simulation.tire_count(), budget);
     }
-    for (const std::string& w : world->warnings()) {
+    for (const std::string& w : simulation.take_warnings()) {
       if (w.starts_with("budgets.")) {  // a budget reached and held: reported, not a fault
         if (++budget_notes <= 5) std::fprintf(stderr, "tire-soak: %s\n", w.c_str());
         continue;
@@ -218,8 +228,7 @@ int main(int argc, char** argv) {
       ++warnings;
       if (warnings <= 5) std::fprintf(stderr, "tire-soak: warning: %s\n", w.c_str());
     }
-    world->warnings().clear();
-    max_tires_seen = std::max(max_tires_seen, world->tires().size());
+    max_tires_seen = std::max(max_tires_seen, simulation.tire_count());
 
     if ((tick + 1) % ticks_per_minute == 0 || tick + 1 == total_ticks) {
       const std::uint64_t minute = (tick + 1 + ticks_per_minute - 1) / ticks_per_minute;
@@ -231,13 +240,13 @@ int main(int argc, char** argv) {
         rss_max_after = std::max(rss_max_after, rss), heap_max_after = std::max(heap_max_after, heap);
       double max_speed = 0.0;
       std::size_t outside = 0;  // tires whose hub is outside the level's bounding box (thrown out, falling)
-      for (const tire::Tire& t : world->tires()) {
-        max_speed = std::max(max_speed, tire::length(t.velocity()));
-        const tire::Vec2 c = t.centroid();
+      for (std::size_t i = 0; const std::optional<tire::TireView> t = simulation.tire_at(i); ++i) {
+        max_speed = std::max(max_speed, tire::length(t->velocity));
+        const tire::Vec2 c = t->centroid;
         outside += c.x < region.world_min.x || c.x > region.world_max.x || c.y < region.world_min.y - 1.0;
         if (c.y < region.world_min.y - 1.0 && std::getenv("TIRE_SOAK_DEBUG"))
-          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t.id, c.x, c.y,
-                       t.velocity().x, t.velocity().y);
+          std::fprintf(stderr, "  tire %u outside at (%.2f, %.2f) v (%.2f, %.2f)\n", t->id, c.x, c.y,
+                       t->velocity.x, t->velocity.y);
       }
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -247,10 +256,10 @@ int main(int argc, char** argv) {
           "%6.1f MiB  "
           "heap %6.1f MiB  wall %7.1f s\n",
           static_cast<unsigned long long>(minute), static_cast<unsigned long long>(tick + 1),
-          world->tires().size(), static_cast<unsigned long long>(spawns),
+          simulation.tire_count(), static_cast<unsigned long long>(spawns),
           static_cast<unsigned long long>(removals), static_cast<unsigned long long>(lost),
           static_cast<unsigned long long>(grabs), static_cast<unsigned long long>(jumps), max_speed, outside,
-          tire::to_string(session->status()), static_cast<unsigned long long>(nonfinite),
+          tire::to_string(simulation.status()), static_cast<unsigned long long>(nonfinite),
           static_cast<unsigned long long>(warnings), rss, heap, wall);
       std::fflush(stdout);
     }
@@ -269,7 +278,7 @@ int main(int argc, char** argv) {
       "divergence warnings %llu, ticks past budgets.tires %llu; "
       "RSS start %.1f MiB, after warm-up %.1f MiB, max after %.1f MiB, end %.1f MiB (growth %.1f MiB, "
       "allowed %.1f); heap in use start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB (growth %.1f MiB)\n",
-      failed ? "FAIL" : "ok", static_cast<double>(total_ticks) * dt / 60.0, wall, world->tires().size(),
+      failed ? "FAIL" : "ok", static_cast<double>(total_ticks) * dt / 60.0, wall, simulation.tire_count(),
       max_tires_seen, static_cast<unsigned long long>(spawns), static_cast<unsigned long long>(removals),
       static_cast<unsigned long long>(lost), static_cast<unsigned long long>(grabs),
       static_cast<unsigned long long>(jumps), static_cast<unsigned long long>(steers),

@@ -32,6 +32,7 @@ namespace tire {
 
 class LevelSession;
 class Simulation;
+struct SimulationInternals;  // the engine's own tests reach the world through it
 
 struct SimulationLoad {
   std::unique_ptr<Simulation> simulation;  // null when `errors` is not empty
@@ -76,6 +77,9 @@ class Simulation {
 
   // Building, between ticks. The first tire, or one whose spec says player, becomes the player.
   TireId add_tire(const TireSpec& spec);
+  // A tire added while the level runs (a click in the game): within the level's budgets
+  // (levels/README.md, "budgets"); nullopt, and a warning, past them.
+  std::optional<TireId> spawn_tire(const TireSpec& spec);
   PropId add_prop(const PropSpec& spec);
   void add_obstacle(const Obstacle& obstacle);
   bool remove_tire(TireId id);
@@ -102,8 +106,22 @@ class Simulation {
   std::optional<TireId> player() const;
   std::vector<TireId> tires() const;  // in the order they were added
   std::optional<TireView> tire(TireId id) const;
+  // The tires without building a list, for what reads them every frame: by index from 0, in the
+  // order they were added (an index moves when a tire before it is removed); nullopt past the
+  // last, so that a walk reads
+  //   for (std::size_t i = 0; const std::optional<TireView> t = simulation.tire_at(i); ++i)
+  std::size_t tire_count() const;
+  std::optional<TireView> tire_at(std::size_t index) const;
   std::size_t prop_count() const;  // ids 0 .. prop_count() − 1
   std::optional<PropView> prop(PropId id) const;
+  std::span<const Obstacle> obstacles() const;
+  // The script's regions (empty without a script), which of them is the goal, the messages it has
+  // on screen, the last checkpoint it set and whether it asked for the next level.
+  std::span<const Region> regions() const;
+  std::optional<std::size_t> goal() const;  // an index into regions()
+  std::span<const ScriptMessage> messages() const;
+  std::optional<Vec2> checkpoint() const;
+  bool next_level_requested() const;
   std::size_t asleep_count() const;
   // Solves that failed (not finite) since the start; each is also a warning, and the tire is reset.
   std::uint64_t solver_failures() const;
@@ -133,6 +151,16 @@ class Simulation {
   bool grab(TireId id, std::uint32_t particle, Vec2 target);
   bool move_grab(TireId id, Vec2 target);
   bool release(TireId id);
+  // The mouse's grab, as a replay's grab, drag and release inputs play it: the tire under `point`
+  // (within `radius` of its tread) pulled by its nearest tread particle until released. Returns
+  // the tire grabbed.
+  std::optional<TireId> grab_at(Vec2 point, double radius);
+  void move_grab(Vec2 target);
+  void release_grab();
+  // Sleeping on or off (SolverConfig::sleep), then every tire woken; wake_all() wakes them alone.
+  // No sleeping island can tell whether it still rests after a change of the rules.
+  void set_sleep(bool on);
+  void wake_all();
   // Threads for scenes of many tires; the results are the same for any count.
   void set_threads(unsigned threads);
 
@@ -140,6 +168,7 @@ class Simulation {
   void debug_draw(DebugDraw& draw) const;
 
  private:
+  friend struct SimulationInternals;
   std::shared_ptr<const Level> level_;  // what a restart rebuilds
   std::unique_ptr<LevelSession> session_;
 };

@@ -25,6 +25,13 @@ struct LevelInfo {
   double dt = 0.0;                    // s, its fixed tick
   std::optional<double> time_limit;   // s, from its script
   std::optional<LevelMedals> medals;  // the times that earn a medal, if it has them
+  std::size_t tires = 0;              // the tires it places (not those its script spawns)
+  // The box the player must stay in (levels/README.md, "bounds"), and whether the level gives its
+  // lower and upper corners; a corner it does not give is computed from its geometry (a computed
+  // top is open: +inf).
+  Aabb bounds;
+  bool bounds_min_given = false;
+  bool bounds_max_given = false;
 };
 
 struct LevelOpen {
@@ -42,6 +49,10 @@ LevelOpen open_level_text(const std::string& text, const std::string& file,
                           const std::vector<std::string>& overrides = {});
 
 LevelInfo level_info(const Level& level);
+
+// A level file's text, read within the size a level may have (what an editor keeps to edit), or
+// nullopt with `error` set.
+std::optional<std::string> read_level_text(const std::filesystem::path& file, std::string& error);
 
 // The levels of folder `dir` as the game's menu and tirectl course list them: its *.json files but
 // schema.json (the levels' JSON schema), sorted by file name. `error` says why the folder could not

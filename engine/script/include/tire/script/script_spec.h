@@ -12,6 +12,7 @@
 
 #include "tire/math/geometry.h"
 #include "tire/rigid/bodies.h"
+#include "tire/script/script_status.h"
 #include "tire/tire/tire_spec.h"
 
 namespace tire {
@@ -27,15 +28,6 @@ struct ScriptLimits {
   static constexpr std::size_t max_message_length = 500;
   static constexpr double max_seconds = 86400.0;        // any time or period: one day
   static constexpr int max_counter_value = 1000000000;  // counters saturate at ±this
-};
-
-// A named axis-aligned box. A point on the boundary is inside.
-struct Region {
-  std::string name;
-  Aabb box;
-  constexpr bool contains(Vec2 p) const {
-    return p.x >= box.min.x && p.x <= box.max.x && p.y >= box.min.y && p.y <= box.max.y;
-  }
 };
 
 struct Counter {

@@ -18,12 +18,6 @@
 
 namespace tire {
 
-// A message a level script put on screen.
-struct ScriptMessage {
-  std::string text;
-  std::uint64_t until_tick;  // shown while world().tick() < until_tick
-};
-
 class LevelSession {
  public:
   LevelSession(const SolverConfig& config, Vec2 gravity);

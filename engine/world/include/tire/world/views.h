@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -13,20 +14,32 @@
 
 namespace tire {
 
+// A tread particle pulled towards a target every substep (a mouse drag: Simulation::grab).
+struct TireGrab {
+  std::uint32_t particle = 0;  // 0 .. segments − 1
+  Vec2 target;
+};
+
 struct TireView {
   TireId id = 0;
   bool player = false;
   bool asleep = false;
-  bool grounded = false;    // a tread particle touched ground in the last substep
-  Vec2 centroid;            // of all particles: the hub (m)
-  Vec2 velocity;            // of the centroid (m/s)
-  double spin = 0.0;        // angular velocity about the hub (rad/s, counter-clockwise)
-  double area_ratio = 0.0;  // the tread's area over its rest area
-  double pressure = 0.0;    // the pressure in force (TireSpec::pressure, moved by inflating)
+  bool grounded = false;  // a tread particle touched ground in the last substep
+  // The tread touched ground within SolverConfig::jump_grace: a jump now would leave the ground.
+  bool may_jump = false;
+  Vec2 centroid;              // of all particles: the hub (m)
+  Vec2 velocity;              // of the centroid (m/s)
+  double spin = 0.0;          // angular velocity about the hub (rad/s, counter-clockwise)
+  double area_ratio = 0.0;    // the tread's area over its rest area
+  double pressure = 0.0;      // the pressure in force (TireSpec::pressure, moved by inflating)
+  double outer_radius = 0.0;  // m, as built (TireSpec)
+  double inner_radius = 0.0;  // m, the rim's
+  double mass = 0.0;          // kg, the whole tire's
   std::uint32_t segments = 0;
   // The particles' positions: the tread's `segments` counter-clockwise, then the rim's.
   std::span<const Vec2> positions;
-  TickContacts contacts;  // what its contacts did over the last tick
+  TickContacts contacts;         // what its contacts did over the last tick
+  std::optional<TireGrab> grab;  // while a particle of it is grabbed
 };
 
 // The world's mechanical energy between ticks, and what was brought into it from outside since it
@@ -56,7 +69,16 @@ struct PropView {
   PropShape shape = PropShape::box;
   bool alive = false;     // a removed prop stays, dead
   std::string_view name;  // as the level names it; "" for none
-  PropState state;
+  PropState state;        // a dead prop's is all zero
+  // Its shape in its own frame (state.pose places it in the world): a box's or polygon's corners
+  // counter-clockwise, a chain's points in order (closed when `loop`), none for a circle.
+  std::span<const Vec2> vertices;
+  std::span<const Vec2> normals;  // of edge i (vertex i to i + 1), out of the solid
+  double radius = 0.0;            // a circle's (m)
+  double thickness = 0.0;         // a chain's: how far behind its line still counts as inside (m)
+  bool loop = false;              // a chain's: closed
+  Aabb local_bounds;              // its box in its frame (a chain's widened by its thickness)
+  std::span<const Vec2> path;     // a kinematic prop's waypoints, in the world; empty for none
 };
 
 }  // namespace tire

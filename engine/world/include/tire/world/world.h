@@ -132,6 +132,7 @@ class World {
   // What a library's user reads (views.h): the tire or prop with this id, nullopt for none.
   std::optional<TireView> tire_view(TireId id) const;
   std::optional<PropView> prop_view(PropId id) const;
+  TireView view_of(const Tire& t) const;  // tire_view's, and debug_draw's for each tire
   std::optional<TireId> player_id() const { return player_; }
   const RigidWorld& rigid() const { return rigid_; }
   RigidWorld& rigid() { return rigid_; }
@@ -186,7 +187,6 @@ class World {
   double energy_now() const;
   bool set_parameter_unbooked(std::string_view key, double value);
   void set_gravity_unbooked(Vec2 g);
-  TireView view_of(const Tire& t) const;  // tire_view's, and debug_draw's for each tire
   void guard_divergence(Tire& t);
   // After a tick: refine_ from how far the awake tires' solves turned their constraints.
   void update_refinement();
