@@ -201,6 +201,10 @@ class GlobalSolver {
   static double along(const Body& b, Vec2 d, Vec2 r) {
     return d.x * b.dq[0] + d.y * b.dq[1] + cross(r, d) * b.dq[2];
   }
+  // The small dense system of the rows and the bodies (at most kMaxUnknowns), by Gaussian
+  // elimination with partial pivoting: false when it is singular or not finite.
+  bool solve_border(std::size_t size);
+
   void assemble(const Tire& t, const SubstepContext& ctx, double gamma);
   void add_ring_area_row(const Tire& t, const SubstepContext& ctx, bool rim, double gamma);
   double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
