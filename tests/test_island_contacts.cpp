@@ -33,7 +33,7 @@ struct SolvedTire {
     const SubstepContext ctx{h, 0.0, {0.0, -9.81}, &config, &rigid, false, nullptr};
     begin_tick(tire, config, rigid);
     begin_substep(tire, ctx);
-    solver.solve(tire, ctx, true);
+    solver.solve(tire, ctx);
   }
   // w = K̂⁻¹ r for a force f at particle i.
   std::vector<double> response(std::uint32_t i, Vec2 f) {

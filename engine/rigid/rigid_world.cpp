@@ -54,11 +54,6 @@ class RestitutionRule final : public b2ContactListener {
 
   void PreSolve(b2Contact* contact, const b2Manifold*) override {
     contact->ResetRestitution();
-    if (props && (solved_against_fixed(contact->GetFixtureA(), contact->GetFixtureB()) ||
-                  solved_against_fixed(contact->GetFixtureB(), contact->GetFixtureA()))) {
-      contact->SetEnabled(false);  // the tires' solve held it on this support (Prop::solved)
-      return;
-    }
     const float restitution = contact->GetRestitution();
     if (restitution <= 0.0f || !props) return;
     const Prop* a = pushed_prop(contact->GetFixtureA());
@@ -84,11 +79,6 @@ class RestitutionRule final : public b2ContactListener {
   }
 
  private:
-  bool solved_against_fixed(b2Fixture* f, b2Fixture* other) const {
-    const std::uintptr_t tag = f->GetUserData().pointer;
-    return (tag & kPropTag) && (*props)[tag & ~kPropTag].solved &&
-           other->GetBody()->GetType() != b2_dynamicBody;
-  }
   const Prop* pushed_prop(b2Fixture* f) const {
     const std::uintptr_t tag = f->GetUserData().pointer;
     if (!(tag & kPropTag)) return nullptr;
@@ -362,10 +352,6 @@ void RigidWorld::begin_tick(double dt, bool substep_motion, double time) {
     p.untravelled = {};
     p.untravelled_angle = 0.0;
     p.support_count = 0;
-    p.support_point_count = 0;
-    p.solved = false;
-    p.solved_velocity = {};
-    p.solved_spin = 0.0;
     p.airborne = false;
     p.awake = dynamic && b.IsAwake();
     if (!dynamic) continue;
@@ -378,18 +364,8 @@ void RigidWorld::begin_tick(double dt, bool substep_motion, double time) {
       b2WorldManifold manifold;
       contact->GetWorldManifold(&manifold);
       // Box2D's normal points from fixture A to fixture B; the support's normal points into us.
-      const Vec2 normal =
-          contact->GetFixtureA()->GetBody() == &b ? -from_b2(manifold.normal) : from_b2(manifold.normal);
-      p.supports[p.support_count++] = normal;
-      for (int k = 0; k < contact->GetManifold()->pointCount && p.support_point_count < Prop::kMaxSupports;
-           ++k)
-        p.support_points[p.support_point_count++] = {
-            from_b2(manifold.points[k]),
-            normal,
-            manifold.separations[k],
-            contact->GetFriction(),
-            from_b2(edge->other->GetLinearVelocityFromWorldPoint(manifold.points[k])),
-            p.support_count - 1};
+      const Vec2 normal = from_b2(manifold.normal);
+      p.supports[p.support_count++] = contact->GetFixtureA()->GetBody() == &b ? -normal : normal;
     }
   }
 }
@@ -403,14 +379,6 @@ void RigidWorld::begin_substep(double time, double h) {
     p.velocity += dv;
     p.untravelled += dv * (time - p.start_time);
   }
-}
-
-void RigidWorld::add_motion(std::uint32_t i, Vec2 velocity, double spin) {
-  Prop& p = props_[i];
-  if (!p.is_dynamic()) return;
-  p.solved = true;
-  p.solved_velocity += velocity;
-  p.solved_spin += spin;
 }
 
 void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t, double since) {
@@ -437,14 +405,6 @@ void RigidWorld::end_tick(double dt) {
     Prop& p = props_[i];
     p.pushed = false;
     if (!p.alive || !p.is_dynamic()) continue;
-    if (p.solved) {
-      // Box2D adds gravity's dt g in its step: taken off here, the solve's motion (its weight in it)
-      // is what the prop does.
-      const Vec2 v = from_b2(bodies_[i]->GetLinearVelocity()) + p.solved_velocity - gravity_ * dt;
-      bodies_[i]->SetLinearVelocity(to_b2(v));
-      bodies_[i]->SetAngularVelocity(static_cast<float>(bodies_[i]->GetAngularVelocity() + p.solved_spin));
-      bodies_[i]->SetAwake(true);
-    }
     if (p.untravelled != Vec2{} || p.untravelled_angle != 0.0) {
       // Box2D's step ends at its start plus dt times the final velocity (gravity and the pushes in
       // it): started this much short, it ends where the substeps left the prop.

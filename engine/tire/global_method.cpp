@@ -132,13 +132,13 @@ class GlobalMethod final : public TireMethod {
   }
 
   // Every constraint and surface contact of the tire at once (global_solver.h).
-  void solve_constraints(Tire& t, const SubstepContext& ctx, bool last) const override {
+  void solve_constraints(Tire& t, const SubstepContext& ctx, bool) const override {
     if (ctx.island) {
-      ctx.island->solver_of(t).solve(t, ctx, last);
+      ctx.island->solver_of(t).solve(t, ctx);
     } else {
       TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");
       const GlobalSolverPool::Lease solver = ctx.global->lend();
-      solver->solve(t, ctx, last);
+      solver->solve(t, ctx);
     }
     t.predicted_push = {};
   }

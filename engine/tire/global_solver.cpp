@@ -19,9 +19,6 @@ namespace {
 // through but a slide. (Kept at any distance, the anchor on a small ball spun under a tire at one
 // substep, 0.5 rad round it a substep, dragged the tread after it and threw the ball at 70 m/s.)
 constexpr double kAnchorReach = 1e-3;
-// Projected Gauss–Seidel sweeps over a held body's supports (solve_system): a ball has at most
-// kMaxSupports points and one friction a contact, eight unknowns, which settle in a few dozen.
-constexpr int kSupportSweeps = 64;
 
 // The unknowns, block by block: block i holds tread particle i (x, y) then rim particle i (x, y),
 // so every constraint of the tire couples a block to itself or to a neighbouring block.
@@ -268,23 +265,9 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
       c.anchored = length_squared(c.anchor - t.particles.x_prev[particle] - c.surface_displacement) <
                    kAnchorReach * kAnchorReach;
     }
-    // A dynamic prop is a body of the system when nothing holds it up, or when it is a ball, which
-    // comes with its supports (Body). A box or polygon held up keeps its give scaled by its
-    // mobility: with its supports in the solve, the velocity pass's kinetic friction, which
-    // Box2D still takes as an impulse, pushed a crate into a ground the solve had taken from
-    // Box2D (docs/at-rest.md).
-    if (body.is_dynamic() && body.inverse_inertia > 0.0 &&
-        (body.support_count == 0 || body.geometry.shape == PropShape::circle)) {
-      c.body = body_of(static_cast<std::uint32_t>(prop), body, ctx);
+    if (body.is_dynamic() && body.support_count == 0 && body.inverse_inertia > 0.0) {
+      c.body = body_of(static_cast<std::uint32_t>(prop), body);
       c.arm = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
-    }
-    if (c.body >= 0 && body.support_count > 0) {
-      // What the body gives way along the tangent, for the kinetic friction of a sliding contact
-      // (the velocity pass's reduced mass): a tread sliding over a light ball, stopped as if the
-      // ball were as heavy as the tire, threw it.
-      const Vec2 r = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
-      const double rt = cross(r, perp(normal));
-      c.give_t = body.inverse_mass + rt * rt * body.inverse_inertia;
     }
     if (body.is_dynamic() && c.body < 0) {
       // What the prop gives way at the contact, w = 1/M + (r × d)²/I along d (Müller 2020 eq. 2),
@@ -303,51 +286,14 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
   return c;
 }
 
-std::int32_t GlobalSolver::body_of(std::uint32_t prop, const Prop& body, const SubstepContext& ctx) {
+std::int32_t GlobalSolver::body_of(std::uint32_t prop, const Prop& body) {
   for (std::size_t j = 0; j < bodies_.size(); ++j)
     if (bodies_[j].prop == prop) return static_cast<std::int32_t>(j);
   if (bodies_.size() == kMaxBodies) return -1;
   bodies_.emplace_back();
-  Body& b = bodies_.back();
-  b.prop = prop;
-  b.mass = 1.0 / body.inverse_mass;
-  b.inertia = 1.0 / body.inverse_inertia;
-  b.support_count = 0;
-  static_assert(kMaxSupports == Prop::kMaxSupports);
-  if (body.support_count > 0) {
-    // Held up: Box2D leaves gravity out of its course within the tick (RigidWorld::begin_substep),
-    // so the solve gives it its weight, and its supports hold it against that and the tire.
-    const double h2 = ctx.h * ctx.h;
-    b.weight[0] = b.mass * ctx.gravity.x * h2;
-    b.weight[1] = b.mass * ctx.gravity.y * h2;
-    const Vec2 centre = body.center_at(ctx.time);
-    for (int k = 0; k < body.support_point_count; ++k) {
-      const Prop::SupportPoint& sp = body.support_points[k];
-      const bool first = k == 0 || body.support_points[k - 1].contact != sp.contact;
-      Vec2 middle = sp.point;
-      int points = 1;
-      for (int l = k + 1;
-           first && l < body.support_point_count && body.support_points[l].contact == sp.contact; ++l)
-        middle += body.support_points[l].point, ++points;
-      middle = middle * (1.0 / points);
-      Support& s = b.supports[b.support_count++];
-      const Vec2 r = sp.point - centre, rm = middle - centre, n = sp.normal, t = perp(sp.normal);
-      s.a_n[0] = n.x, s.a_n[1] = n.y, s.a_n[2] = cross(r, n);
-      s.a_t[0] = t.x, s.a_t[1] = t.y, s.a_t[2] = cross(rm, t);
-      // Over the substep the point goes by its predicted velocity, the surface by its own: the
-      // point may come down by the gap between them (none while they overlap: what Box2D holds
-      // apart it pushes out itself), and static friction keeps it with the surface.
-      const Vec2 relative = (body.point_velocity(sp.point, ctx.time) - sp.surface_velocity) * ctx.h;
-      const Vec2 relative_middle = (body.point_velocity(middle, ctx.time) - sp.surface_velocity) * ctx.h;
-      s.target_n = -std::max(0.0, sp.separation) - dot(n, relative);
-      s.target_t = -dot(t, relative_middle);
-      s.friction = sp.friction;
-      s.friction_row = first;
-      s.points = points;
-    }
-  } else {
-    b.weight[0] = b.weight[1] = 0.0;
-  }
+  bodies_.back().prop = prop;
+  bodies_.back().mass = 1.0 / body.inverse_mass;
+  bodies_.back().inertia = 1.0 / body.inverse_inertia;
   return static_cast<std::int32_t>(bodies_.size() - 1);
 }
 
@@ -496,10 +442,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
     for (auto& row : b.kqq) std::fill(std::begin(row), std::end(row), 0.0);
     b.kqq[0][0] = b.kqq[1][1] = b.mass;
     b.kqq[2][2] = b.inertia;
-    b.fq[0] = b.weight[0];
-    b.fq[1] = b.weight[1];
-    b.fq[2] = 0.0;
-    // Its supports are rows of the border system (solve_system).
+    std::fill(std::begin(b.fq), std::end(b.fq), 0.0);
   }
   std::fill(yb_.begin(), yb_.begin() + static_cast<std::ptrdiff_t>(3 * nb * stride_), 0.0);
   // A constraint C = d·x − plane − a·q of stiffness k (a = 0 off a body): k d dᵀ into K and its
@@ -644,27 +587,7 @@ bool GlobalSolver::solve_system(const Tire& t) {
   const auto column = [&](std::size_t u) {  // unknown u's column of Y: a row's, then the bodies'
     return u < m ? y_.data() + live[u] * stride_ : yb_.data() + (u - m) * stride_;
   };
-  // A held body's supports, unknowns after the bodies': each point's normal force and each
-  // contact's friction, μ along a on the body, a·Δq + α̃ μ = target while it holds (Support).
-  struct SupportRow {
-    std::size_t body;
-    Support* support;
-    bool friction;
-    std::size_t first_normal;  // a friction's contact's normal rows: [first_normal, first_normal + normals)
-    std::size_t normals;
-  };
-  SupportRow support_rows[2 * kMaxSupports * kMaxBodies];
-  std::size_t ns = 0;
-  for (std::size_t j = 0; j < nb; ++j)
-    for (int k = 0; k < bodies_[j].support_count; ++k) {
-      Support& s = bodies_[j].supports[k];
-      if (!s.friction_row) continue;
-      const std::size_t first = ns;
-      for (int l = k; l < k + s.points; ++l) support_rows[ns++] = {j, &bodies_[j].supports[l], false, 0, 0};
-      support_rows[ns++] = {j, &s, true, first, ns - first};
-    }
-  const std::size_t core = m + 3 * nb;  // the unknowns with a column of Y
-  const std::size_t unknowns = core + ns;
+  const std::size_t unknowns = m + 3 * nb;
   double z[kMaxUnknowns] = {};
   for (std::size_t u = 0; u < m; ++u) rows_[live[u]].yf = dot_n(column(u), f_.data(), size);
   if (nb == 0) {
@@ -677,10 +600,9 @@ bool GlobalSolver::solve_system(const Tire& t) {
     if (!cholesky(s, m)) return false;
     cholesky_solve(s, m, z);
   } else {
-    for (std::size_t r = 0; r < core; ++r) {
+    for (std::size_t r = 0; r < unknowns; ++r) {
       const double* yr = column(r);
-      for (std::size_t q = core; q < unknowns; ++q) border_[r][q] = 0.0;
-      for (std::size_t q = 0; q < core; ++q) {
+      for (std::size_t q = 0; q < unknowns; ++q) {
         const double yy = dot_n(yr, column(q), size);
         if (r < m)
           border_[r][q] = q < m ? yy + (q == r ? rows_[live[r]].alpha_tilde : 0.0) : -yy;
@@ -691,85 +613,20 @@ bool GlobalSolver::solve_system(const Tire& t) {
         border_[r][unknowns] = rows_[live[r]].b - rows_[live[r]].yf;
       } else {  // (K_qq − Y_Bᵀ Y_B) Δq + Y_Bᵀ Y_G μ = f_q − Y_Bᵀ L⁻¹ f
         const std::size_t j = (r - m) / 3, a = (r - m) % 3;
-        for (std::size_t q = m; q < core; ++q) border_[r][q] = -border_[r][q];
+        for (std::size_t q = m; q < unknowns; ++q) border_[r][q] = -border_[r][q];
         for (std::size_t q = 0; q < 3; ++q) border_[r][m + 3 * j + q] += bodies_[j].kqq[a][q];
         border_[r][unknowns] = bodies_[j].fq[a] - dot_n(yr, f_.data(), size);
-        for (std::size_t k = 0; k < ns; ++k)  // K_qq Δq = … + a μ: the supports' forces
-          if (support_rows[k].body == j) {
-            const Support& sup = *support_rows[k].support;
-            border_[r][core + k] = -(support_rows[k].friction ? sup.a_t : sup.a_n)[a];
-          }
       }
     }
-    for (std::size_t k = 0; k < ns; ++k) {
-      const std::size_t r = core + k;
-      const SupportRow& row = support_rows[k];
-      const Support& sup = *row.support;
-      std::fill(border_[r], border_[r] + unknowns + 1, 0.0);
-      const double* a = row.friction ? sup.a_t : sup.a_n;
-      for (std::size_t q = 0; q < 3; ++q) border_[r][m + 3 * row.body + q] = a[q];
-      border_[r][r] = rigid_alpha_tilde_;
-      border_[r][unknowns] = row.friction ? sup.target_t : sup.target_n;
-    }
-    // The core unknowns eliminated (pivoting among the core rows only): what is left in the
-    // supports' rows and columns is their Schur complement S λ = r, the contact problem of the
-    // bodies with their supports as the tire and its rows let them move. It is solved as one, by
-    // projected Gauss–Seidel (λ_n ≥ 0, |λ_t| ≤ μ Σ λ_n of the contact's points: Coulomb's cone as
-    // a box, as Box2D's solver clamps a friction impulse), then the core unknowns by back
-    // substitution. As equalities switched pass by pass, a ball in a corner (a normal and a
-    // friction at the floor and at the wall, four rows on its three unknowns) came out with
-    // opposed forces of 10⁴ times its weight, and a sliding friction kept the sign it slid with
-    // while the tire drove the ball the other way (docs/at-rest.md).
-    auto& a = border_;
-    for (std::size_t c = 0; c < core; ++c) {
-      std::size_t pivot = c;
-      for (std::size_t r = c + 1; r < core; ++r)
-        if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
-      if (!(std::abs(a[pivot][c]) > 0.0) || !std::isfinite(a[pivot][c])) return false;
-      if (pivot != c)
-        for (std::size_t k = c; k <= unknowns; ++k) std::swap(a[c][k], a[pivot][k]);
-      for (std::size_t r = c + 1; r < unknowns; ++r) {
-        const double factor = a[r][c] / a[c][c];
-        if (factor == 0.0) continue;
-        for (std::size_t k = c; k <= unknowns; ++k) a[r][k] -= factor * a[c][k];
-      }
-    }
-    double lambda[2 * kMaxSupports * kMaxBodies] = {};
-    for (int sweep = 0; sweep < kSupportSweeps; ++sweep)
-      for (std::size_t k = 0; k < ns; ++k) {
-        const std::size_t r = core + k;
-        double v = a[r][unknowns];
-        for (std::size_t q = 0; q < ns; ++q)
-          if (q != k) v -= a[r][core + q] * lambda[q];
-        double x = v / a[r][r];
-        const SupportRow& row = support_rows[k];
-        if (!row.friction) {
-          x = std::max(0.0, x);
-        } else {
-          double f_n = 0.0;
-          for (std::size_t l = 0; l < row.normals; ++l) f_n += lambda[row.first_normal + l];
-          const double bound = row.support->friction * f_n;
-          x = std::clamp(x, -bound, bound);
-        }
-        lambda[k] = x;
-      }
-    for (std::size_t k = 0; k < ns; ++k) z[core + k] = lambda[k];
-    for (std::size_t r = core; r-- > 0;) {
-      double v = a[r][unknowns];
-      for (std::size_t k = r + 1; k < unknowns; ++k) v -= a[r][k] * z[k];
-      z[r] = v / a[r][r];
-    }
+    if (!solve_border(unknowns)) return false;
+    for (std::size_t u = 0; u < unknowns; ++u) z[u] = border_[u][unknowns];
   }
   for (std::size_t r = 0; r < m; ++r) rows_[live[r]].mu = z[r];
   for (std::size_t j = 0; j < nb; ++j)
     for (std::size_t a = 0; a < 3; ++a) bodies_[j].dq[a] = z[m + 3 * j + a];
-  for (std::size_t k = 0; k < ns; ++k) {
-    Support& sup = *support_rows[k].support;
-    (support_rows[k].friction ? sup.f_t : sup.f_n) = z[core + k];
-  }
   // Δx = L⁻ᵀ (L⁻¹ f + Y_G μ − Y_B Δq).
   std::copy(f_.begin(), f_.begin() + static_cast<std::ptrdiff_t>(size), dx_.begin());
-  for (std::size_t u = 0; u < core; ++u) {
+  for (std::size_t u = 0; u < unknowns; ++u) {
     const double coefficient = u < m ? z[u] : -z[u];
     const double* y = column(u);
     for (std::size_t k = 0; k < size; ++k) dx_[k] += coefficient * y[k];
@@ -821,7 +678,7 @@ bool GlobalSolver::update_active_set(const Tire& t, const SubstepContext& ctx) {
   return find_contacts(t, ctx, dx_.data()) || changed;
 }
 
-void GlobalSolver::solve(Tire& t, const SubstepContext& ctx, bool last) {
+void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   TIRE_ASSERT(t.n <= segments_, "a global solver too small for the tire: reserve() it first");
   const std::uint32_t n = t.n;
   const double gamma = t.spec.material_damping / ctx.h;  // γ = α̃β̃/h with β = τ/α (XPBD eq. 26)
@@ -883,7 +740,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx, bool last) {
   t.newton_turn = std::max(t.newton_turn, largest_turn(t, dx_.data()));
   t.global_work += work_;
   for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
-  write_back(t, ctx, last);
+  write_back(t, ctx);
 }
 
 std::size_t GlobalSolver::dof(std::uint32_t particle, std::uint32_t segments) {
@@ -971,23 +828,11 @@ double GlobalSolver::largest_turn(const Tire& t, const double* dx) const {
 // The contact records, as the velocity pass and the rest of the engine read them (λ as distances,
 // see contact.h), and the impulses owed to dynamic props: the change of this iteration's total
 // multipliers from the last iteration's, so that a substep of several iterations owes the total.
-void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx, bool last) {
+void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
   const double t_end = ctx.time + ctx.h;
-  // A prop held up that was a body of the system is handed the motion the solve found for it, not
-  // its contacts' impulses: its supports were in the solve too. Each iteration solves from the
-  // prop's predicted course, so only the substep's last owes it.
-  const auto moved = [&](std::int32_t prop) {
-    for (const Body& b : bodies_)
-      if (static_cast<std::int32_t>(b.prop) == prop && b.support_count > 0) return true;
-    return false;
-  };
-  for (const Body& b : bodies_)
-    if (last && b.support_count > 0)
-      t.prop_impulses.push_back(
-          {b.prop, {}, {}, t_end, ctx.time, Vec2{b.dq[0], b.dq[1]} * (1.0 / ctx.h), b.dq[2] / ctx.h});
   const auto owe = [&](const ContactRecord& rec, std::uint32_t i, double d_lambda_n, double d_lambda_t) {
     if (rec.prop < 0 || (d_lambda_n == 0.0 && d_lambda_t == 0.0)) return;
-    if (!ctx.rigid->props()[static_cast<std::size_t>(rec.prop)].is_dynamic() || moved(rec.prop)) return;
+    if (!ctx.rigid->props()[static_cast<std::size_t>(rec.prop)].is_dynamic()) return;
     const double m = 1.0 / t.particles.w[i];  // λ as a distance is w μ: the impulse is μ/h
     const Vec2 impulse = (rec.normal * d_lambda_n + perp(rec.normal) * d_lambda_t) * (-m / ctx.h);
     t.prop_impulses.push_back(

@@ -360,10 +360,7 @@ void end_substep(Tire& t, const SubstepContext& ctx) {
 }
 
 void apply_prop_impulses(Tire& t, RigidWorld& rigid) {
-  for (const PropImpulse& p : t.prop_impulses) {
-    if (p.impulse != Vec2{}) rigid.add_impulse(p.prop, p.impulse, p.point, p.time, p.since);
-    if (p.velocity != Vec2{} || p.spin != 0.0) rigid.add_motion(p.prop, p.velocity, p.spin);
-  }
+  for (const PropImpulse& p : t.prop_impulses) rigid.add_impulse(p.prop, p.impulse, p.point, p.time, p.since);
   t.prop_impulses.clear();
 }
 

@@ -538,23 +538,6 @@ void World::update_refinement() {
     demand = std::max(demand,
                       closing / (std::min(a.spec.outer_radius, b.spec.outer_radius) * config_.refine_turn));
   }
-  // The same for a tire closing on a dynamic prop near it, which its solve meets as a body (held by
-  // its supports, for a ball: GlobalSolver::Body): one linear step stops the blow. Dropped at one
-  // substep onto a 0.03 kg ball lying on the ground, a tire landing at 6–10 m/s ended its substep
-  // with 2–25 times the energy it brought, all of it in its springs.
-  for (const std::uint32_t i : sleep_.awake()) {
-    const Tire& t = tires_[i];
-    for (const std::uint32_t q : t.prop_candidates) {
-      const Prop& prop = rigid_.props()[q];
-      if (!prop.alive || !prop.is_dynamic()) continue;
-      const PropState state = rigid_.prop_state(q);
-      const Vec2 d = state.center - t.centroid();
-      const double distance = length(d);
-      if (!(distance > 0.0)) continue;
-      const double closing = dot(t.velocity() - state.velocity, d) / distance;
-      demand = std::max(demand, closing / (t.spec.outer_radius * config_.refine_turn));
-    }
-  }
   const int most = std::max(1, config_.max_refine);
   while (refine_ < most && demand * config_.dt / (config_.substeps * refine_) > 1.0) refine_ *= 2;
   refine_ = std::min(refine_, most);

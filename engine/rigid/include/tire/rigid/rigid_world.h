@@ -71,12 +71,6 @@ struct Prop {
   Vec2 velocity_before_push;
   double omega_before_push = 0.0;
   bool pushed = false;  // the tires handed it an impulse in this step
-  // Moved by the tires' solves this step (a ball held up, a body of their systems with its
-  // supports, GlobalSolver::Body): the change of velocity they found, which Box2D takes as it is,
-  // its contacts with static and kinematic bodies off for the step (they were the solve's).
-  bool solved = false;
-  Vec2 solved_velocity;
-  double solved_spin = 0.0;
 
   // What holds a dynamic prop up (shock propagation, one level deep): the normals, pointing into
   // the prop, of its Box2D contacts with static and kinematic bodies at the start of the tick. A
@@ -84,19 +78,6 @@ struct Prop {
   static constexpr int kMaxSupports = 4;
   Vec2 supports[kMaxSupports];
   int support_count = 0;
-  // Each point of those contacts (Box2D's manifold points, at most kMaxSupports in all): where it
-  // is, its normal into the prop, how far apart the surfaces are there (negative: overlapping), the
-  // contact's friction, and the supporting surface's velocity there.
-  struct SupportPoint {
-    Vec2 point;
-    Vec2 normal;
-    double separation = 0.0;
-    double friction = 0.0;
-    Vec2 surface_velocity;
-    int contact = 0;  // which of its Box2D contacts: the points of one share one friction
-  };
-  SupportPoint support_points[kMaxSupports];
-  int support_point_count = 0;
   // How freely the prop moves when pushed along unit vector `push`: 1 when nothing holds it that
   // way, 0 straight into a support, 1 − (push·s)² in between (only the part of the push along the
   // support's surface can move it). Scales the prop's inverse mass for the tire's contacts.
@@ -165,9 +146,6 @@ class RigidWorld {
   // change of velocity acts from time `since` (the substep's start for a correction of positions,
   // its end for one of velocities) where substep motion is on.
   void add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t, double since);
-  // A tire's solve moved prop i, held up by static or kinematic surfaces, with them: its change of
-  // velocity over the substep (Prop::solved).
-  void add_motion(std::uint32_t i, Vec2 velocity, double spin);
   // End of a tick: hand the impulses to Box2D and step it, if anything can move.
   void end_tick(double dt);
 

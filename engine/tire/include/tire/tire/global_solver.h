@@ -66,8 +66,7 @@ class GlobalSolver {
   // One iteration of the substep for `tire` (called where Gauss–Seidel would sweep once): solves the
   // system, moves the particles, and leaves the contact records (and the impulses owed to props)
   // as the Gauss–Seidel contacts would.
-  // `last`: the substep's last iteration, which hands a ball solved with its supports its motion.
-  void solve(Tire& tire, const SubstepContext& ctx, bool last);
+  void solve(Tire& tire, const SubstepContext& ctx);
 
   // The tire's response to a load, after solve(): w = K̂₀⁻¹ r, the displacement a force r (kg·m,
   // force × h², in block order: dof()) adds to the solve's Δx. K̂₀ is the solve's last system with
@@ -158,32 +157,7 @@ class GlobalSolver {
     return c.anchored ? x - c.anchor : x - p.x_prev[c.particle] - c.surface_displacement;
   }
 
-  // A point where a static or kinematic surface holds a body up (Prop::SupportPoint): rigid
-  // constraints on q, a_n·q ≥ target_n along its normal, and a_t·q = target_t along its tangent
-  // while static friction holds, a force within Coulomb's ±μ f_n otherwise: one contact problem
-  // with the body, solved within the tire's system (solve_system).
-  struct Support {
-    double a_n[3] = {};  // a = (d, r × d): what q moves the point along d
-    double a_t[3] = {};
-    double target_n = 0.0;  // how far the point may go towards the surface: its gap, less its approach
-    double target_t = 0.0;  // the surface's motion along the tangent, less the point's predicted
-    double friction = 0.0;
-    double f_n = 0.0;  // the last pass's forces on the prop along a_n and a_t (kg·m: force × h²)
-    double f_t = 0.0;
-    // The points of one Box2D contact share one friction, at their middle, limited by their normal
-    // forces together (two rows along one tangent would be one constraint twice): the first holds
-    // it, `points` the count.
-    bool friction_row = false;
-    int points = 1;
-  };
-  static constexpr int kMaxSupports = 4;  // Prop::kMaxSupports
-  // A dynamic prop in the system: its three unknowns q = (u.x, u.y, θ), its displacement over the
-  // substep beyond its predicted course. A ball held up by static or kinematic surfaces (Box2D's
-  // contacts at the substep's start) carries them as constraints, and its weight as a load, so
-  // that the tire's solve moves it as those surfaces let it move, and Box2D is handed that motion
-  // (PropImpulse::velocity), not the contacts' impulses: a light ball squeezed between a tread and the
-  // ground, solved once by the tire against a ball it took for nearly immovable and again by Box2D
-  // against the ground, was thrown (docs/at-rest.md).
+  // A free dynamic prop in the system: its three unknowns q = (u.x, u.y, θ).
   struct Body {
     std::uint32_t prop = 0;
     double mass = 0.0;
@@ -191,12 +165,9 @@ class GlobalSolver {
     double kqq[3][3] = {};  // K_qq
     double fq[3] = {};      // f_q
     double dq[3] = {};      // the last pass's Δq
-    double weight[2] = {};  // M g h², when it is held up (else its prediction carries gravity)
-    Support supports[kMaxSupports];
-    int support_count = 0;
   };
   // The prop's slot in bodies_, added if there is room (kMaxBodies), or −1.
-  std::int32_t body_of(std::uint32_t prop, const Prop& body, const SubstepContext& ctx);
+  std::int32_t body_of(std::uint32_t prop, const Prop& body);
   // Along d at a body's contact with arm r: a = (d, r × d), what q moves the prop's point along d.
   static double along(const Body& b, Vec2 d, Vec2 r) {
     return d.x * b.dq[0] + d.y * b.dq[1] + cross(r, d) * b.dq[2];
@@ -236,14 +207,14 @@ class GlobalSolver {
   // Drops contacts that pull and friction that cannot hold; takes back released contacts that Δx
   // would push into their surface. True when anything changed.
   bool update_active_set(const Tire& t, const SubstepContext& ctx);
-  void write_back(Tire& t, const SubstepContext& ctx, bool last);
+  void write_back(Tire& t, const SubstepContext& ctx);
 
   static constexpr std::size_t kBaseRows = 3;         // the two areas and the grab
   static constexpr std::size_t kMaxFrictionRows = 4;  // frictions as rows after a factorisation
   static constexpr std::size_t kMaxChangeRows = 4;    // and contacts taken in on its factor
   static constexpr std::size_t kMaxRows = kBaseRows + kMaxFrictionRows + kMaxChangeRows;
   static constexpr std::size_t kMaxBodies = 2;  // free props in one tire's system; more keep their give
-  static constexpr std::size_t kMaxUnknowns = kMaxRows + 3 * kMaxBodies + 2 * kMaxSupports * kMaxBodies;
+  static constexpr std::size_t kMaxUnknowns = kMaxRows + 3 * kMaxBodies;
 
   std::uint32_t segments_ = 0;
   std::size_t stride_ = 0;  // 4 × capacity: the length of one column

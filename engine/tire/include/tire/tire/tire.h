@@ -59,18 +59,13 @@ struct ContactPair {
 
 // A reaction impulse a tire's contact owes a dynamic prop. Collected per tire while tires are
 // solved (possibly in parallel) and handed to the props afterwards in tire order, so the result
-// never depends on which thread solved what. For a ball held up by static or kinematic surfaces,
-// a body of the tire's system with its supports (global_solver.h), the solve owes instead the
-// motion it found for it beyond its predicted course: a change of velocity over the substep
-// (RigidWorld::add_motion), its impulse zero.
+// never depends on which thread solved what.
 struct PropImpulse {
   std::uint32_t prop;
-  Vec2 impulse;       // N·s
-  Vec2 point;         // where it acts (world)
-  double time;        // into the tick (s)
-  double since;       // when the change of velocity it makes acts from (RigidWorld::add_impulse)
-  Vec2 velocity{};    // a solved motion's change of velocity (m/s)
-  double spin = 0.0;  // and of spin (rad/s)
+  Vec2 impulse;  // N·s
+  Vec2 point;    // where it acts (world)
+  double time;   // into the tick (s)
+  double since;  // when the change of velocity it makes acts from (RigidWorld::add_impulse)
 };
 
 // A nearby prop's predicted pose at the start and end of the current substep.
