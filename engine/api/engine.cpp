@@ -108,10 +108,12 @@ EnergyView Simulation::energy() const {
 
 TireOverlap Simulation::deepest_overlap() const { return deepest_tire_overlap(session_->world()); }
 
+int Simulation::tick_substeps() const { return session_->world().tick_substeps(); }
+
 SolverReport Simulation::solver_report() const {
   const World& world = session_->world();
   SolverReport out;
-  out.tick_substeps = world.tick_substeps();
+  out.tick_substeps = tick_substeps();
   out.failed_solves = world.failed_solves();
   out.islands = world.island_work();
   for (const World::BudgetReached& b : world.budgets_reached()) {

@@ -24,7 +24,7 @@ struct SubstepTally {
   int most = 0;
   long long refined_ticks = 0;  // ticks that took more than the level's substeps
   void add(const tire::Simulation& simulation) {
-    const int substeps = simulation.solver_report().tick_substeps;
+    const int substeps = simulation.tick_substeps();
     most = std::max(most, substeps);
     if (substeps > simulation.config().substeps) ++refined_ticks;
   }
@@ -179,8 +179,8 @@ void trace(const tire::Simulation& simulation, const EnergyWatch& energy) {
       "t=%6.2f s  hub (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  spin %6.2f rad/s  area %5.1f %%  %s%s  "
       "%d substeps  energy %.1f J  brought in %.1f J\n",
       simulation.time(), c.x, c.y, v.x, v.y, p.spin, 100.0 * p.area_ratio,
-      p.grounded ? "grounded" : "in the air", p.asleep ? ", asleep" : "",
-      simulation.solver_report().tick_substeps, energy.now.total(), energy.brought_in);
+      p.grounded ? "grounded" : "in the air", p.asleep ? ", asleep" : "", simulation.tick_substeps(),
+      energy.now.total(), energy.brought_in);
 }
 
 }  // namespace

@@ -130,6 +130,8 @@ class Simulation {
   // The deepest a tread particle of one tire is inside another tire, asleep or not (views.h).
   TireOverlap deepest_overlap() const;
   SolverReport solver_report() const;
+  // The last tick's substeps alone (SolverReport::tick_substeps), cheap enough to read every tick.
+  int tick_substeps() const;
   // What the world reported while stepping (a tire reset after diverging, a budget reached),
   // oldest first; take_warnings() hands them over and forgets them.
   std::vector<std::string> take_warnings();
