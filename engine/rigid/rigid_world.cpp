@@ -400,6 +400,16 @@ void RigidWorld::add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t
   p.untravelled_angle += dw * (since - p.start_time);
 }
 
+void RigidWorld::add_angular_impulse(std::uint32_t i, double angular, double since) {
+  Prop& p = props_[i];
+  if (!p.is_dynamic()) return;
+  p.angular_impulse += angular;
+  if (p.support_count > 0) return;  // as add_impulse: Box2D weighs it against the support
+  const double dw = angular * p.inverse_inertia;
+  p.omega += dw;
+  if (substep_motion_) p.untravelled_angle += dw * (since - p.start_time);
+}
+
 void RigidWorld::end_tick(double dt) {
   for (std::uint32_t i = 0; i < props_.size(); ++i) {
     Prop& p = props_[i];

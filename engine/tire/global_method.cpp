@@ -8,6 +8,7 @@
 #include "tire/tire/tire_method.h"
 #include "tire/tire/tire_neighbours.h"
 #include "tire/tire/tire_solver.h"
+#include "tire/tire/vehicle_joints.h"
 
 namespace tire {
 
@@ -133,7 +134,9 @@ class GlobalMethod final : public TireMethod {
 
   // Every constraint and surface contact of the tire at once (global_solver.h).
   void solve_constraints(Tire& t, const SubstepContext& ctx, bool) const override {
-    if (ctx.island) {
+    if (ctx.vehicles && t.wheel >= 0) {
+      ctx.vehicles->solver(t.wheel).solve(t, ctx);
+    } else if (ctx.island) {
       ctx.island->solver_of(t).solve(t, ctx);
     } else {
       TIRE_ASSERT(ctx.global != nullptr, "the global method needs the world's GlobalSolverPool");

@@ -747,7 +747,7 @@ std::size_t GlobalSolver::dof(std::uint32_t particle, std::uint32_t segments) {
   return dof_of(particle, segments);
 }
 
-bool GlobalSolver::prepare_response() {
+bool GlobalSolver::prepare_response(bool hold_fixed_friction) {
   if (!bodies_.empty()) return false;
   const std::uint32_t n = static_cast<std::uint32_t>(k_.size() / CyclicBlockCholesky::kBlock);
   const std::size_t size = k_.size();
@@ -763,7 +763,8 @@ bool GlobalSolver::prepare_response() {
     Block4& block = k0_.diagonal(block_of(c.particle, n));
     const std::size_t o = offset_of(c.particle, n);
     add_outer(block, o, o, outer(c.normal, c.stiffness_n));
-    if (c.friction_active && !c.fixed) add_outer(block, o, o, outer(perp(c.normal), c.stiffness_t));
+    if (c.friction_active && (hold_fixed_friction || !c.fixed))
+      add_outer(block, o, o, outer(perp(c.normal), c.stiffness_t));
   }
   if (!k0_.factor()) return false;
   std::size_t m = 0;

@@ -124,18 +124,21 @@ void IslandContacts::set_islands(const std::vector<Tire>& tires, std::span<const
     const std::uint32_t a = find_root(p.a), b = find_root(p.b);
     if (a != b) per_tire_[std::max(a, b)].root = std::min(a, b);
   }
-  // Tires inside each other (a hub within half the larger radius of the other's: spawned on one
-  // spot, or driven through by a script) are tangled: the island's one linear step cannot part
-  // them. Forty tires spawned on one point were thrown at 780 m/s; block Gauss–Seidel parts them.
-  for (const TirePair& p : pairs) {
-    const double reach = kTangled * std::max(tires[p.a].spec.outer_radius, tires[p.b].spec.outer_radius);
-    if (length_squared(tires[p.a].centroid() - tires[p.b].centroid()) < reach * reach)
-      per_tire_[find_root(p.a)].tangled = true;
-  }
   for (const std::uint32_t i : members) {
     Member& root = per_tire_[find_root(i)];
     ++root.size;
     for (const PropFrame& f : tires[i].prop_frames) root.near_prop |= rigid.props()[f.prop].is_dynamic();
+    root.near_prop |= tires[i].wheel >= 0;  // a wheel is solved with its vehicle (vehicle_joints.h)
+  }
+  // Tires inside each other (a hub within half the larger radius of the other's: spawned on one
+  // spot, or driven through by a script) are tangled: the island's one linear step cannot part
+  // them. Forty tires spawned on one point were thrown at 780 m/s; block Gauss–Seidel parts them.
+  // (Only an island small enough to be solved here is looked at: a pile of a thousand is not.)
+  for (const TirePair& p : pairs) {
+    Member& root = per_tire_[find_root(p.a)];
+    if (root.size > largest || root.tangled) continue;
+    const double reach = kTangled * std::max(tires[p.a].spec.outer_radius, tires[p.b].spec.outer_radius);
+    if (length_squared(tires[p.a].centroid() - tires[p.b].centroid()) < reach * reach) root.tangled = true;
   }
   // The islands of 2 … largest tires, in order of their first tire (a root is its island's first
   // tire, and members are in tire order), batched into groups of at most `largest` tires; each

@@ -113,7 +113,7 @@ void find_contact_pairs(Tire& t, const SubstepContext& ctx) {
   t.prop_frames.clear();
   for (const std::uint32_t k : t.prop_candidates) {
     const Prop& prop = rigid.props()[k];
-    if (!prop.alive) continue;
+    if (!prop.alive || static_cast<std::int32_t>(k) == t.chassis) continue;
     const auto frame = static_cast<std::uint32_t>(t.prop_frames.size());
     t.prop_frames.push_back({k, prop.pose_at(ctx.time), prop.pose_at(ctx.time + ctx.h),
                              prop.geometry.shape == PropShape::circle});

@@ -328,9 +328,52 @@ std::uint32_t World::add_prop(const PropSpec& spec) {
   return i;
 }
 
+std::optional<std::uint32_t> World::add_vehicle(const VehicleSpec& spec) {
+  if (config_.method != SolverMethod::global || spec.wheels.empty() ||
+      spec.wheels.size() > VehicleJoints::kMaxWheels)
+    return std::nullopt;
+  PropSpec chassis_spec = spec.chassis;
+  chassis_spec.type = PropType::dynamic_body;
+  const std::uint32_t chassis = add_prop(chassis_spec);
+  rigid_.set_sleeping_allowed(chassis, false);  // the wheels keep it awake (vehicle_joints.h)
+  const Pose pose = Pose::make(chassis_spec.position, chassis_spec.angle);
+  const std::optional<TireId> player = player_;
+  std::vector<std::uint32_t> wheels;
+  std::vector<AxleSpec> axles;
+  std::uint32_t segments = 0;
+  const std::size_t first_slot = vehicles_.solver_count();
+  for (const WheelSpec& w : spec.wheels) {
+    TireSpec tire = w.tire;
+    tire.player = false;
+    tire.position = pose.to_world(w.axle.point);
+    tire.velocity =
+        chassis_spec.velocity + perp(tire.position - chassis_spec.position) * chassis_spec.angular_velocity;
+    add_tire(tire);
+    Tire& t = tires_.back();
+    t.wheel = static_cast<std::int32_t>(first_slot + wheels.size());
+    t.chassis = static_cast<std::int32_t>(chassis);
+    wheels.push_back(static_cast<std::uint32_t>(tires_.size() - 1));
+    axles.push_back(w.axle);
+    segments = std::max(segments, t.n);
+  }
+  player_ = player;  // a wheel is not the player
+  if (!player_ && !tires_.empty()) {
+    const auto free = std::find_if(tires_.begin(), tires_.end(), [](const Tire& t) { return t.wheel < 0; });
+    if (free != tires_.end()) player_ = free->id;
+  }
+  return vehicles_.add(chassis, wheels, axles, spec.drivetrain, segments);
+}
+
+bool World::set_vehicle_control(std::uint32_t v, const VehicleControl& control) {
+  if (v >= vehicles_.count()) return false;
+  vehicles_.set_control(v, control);
+  return true;
+}
+
 bool World::remove_tire(TireId id) {
   const auto it = std::find_if(tires_.begin(), tires_.end(), [id](const Tire& t) { return t.id == id; });
-  if (it == tires_.end()) return false;
+  if (it == tires_.end() || it->wheel >= 0) return false;  // a wheel stays on its vehicle
+  vehicles_.tire_removed(static_cast<std::uint32_t>(it - tires_.begin()));
   wake_all();  // what rested on it falls; indices shift
   energy_in_ -= tire_energy(*it, gravity_).total();
   tires_.erase(it);
@@ -431,6 +474,10 @@ void World::step(const TickInput& input) {
   // The method (tire_method.h) says whether Box2D steps with the substeps (rigid_world.h: each of
   // its steps is then h) and whether the tick takes the refinement's substeps
   // (SolverConfig::refine_turn).
+  // A vehicle's wheels stay awake with it: the chassis, which Box2D may not put to sleep, hangs on them.
+  for (std::uint32_t v = 0; v < vehicles_.count(); ++v)
+    for (std::size_t w = 0; w < vehicles_.wheel_count(v); ++w)
+      if (tires_[vehicles_.wheel_tire(v, w)].asleep) sleep_.wake(tires_, vehicles_.wheel_tire(v, w), rigid_);
   const TireMethod& method = tire_method(config_.method);
   if (!method.refines_substeps()) refine_ = 1;
   tick_config_ = config_;
@@ -459,6 +506,7 @@ void World::step(const TickInput& input) {
                      gravity_, &tick_config_,
                      &rigid_,  !tire_pairs_.empty(),
                      &global_, neighbours ? &neighbours_ : nullptr};
+  if (vehicles_.count() > 0) ctx.vehicles = &vehicles_;
   // (The fused schedule runs a substep's prediction and first iteration in one sweep; with the
   // contacts between tires in the tires' solves, the tires take their turns by colour, each after
   // every prediction, and with Box2D stepping between substeps: the plain loop.)
@@ -483,6 +531,7 @@ void World::step(const TickInput& input) {
   // After the substeps: the impulses the tires gave props go to Box2D, which steps them (the last
   // substep, when it steps with the substeps); a tire that diverged is reset.
   rigid_.end_tick(rigid_substeps ? h : config_.dt);
+  energy_in_ += vehicles_.take_work();
   for (const std::uint32_t i : sleep_.awake()) {
     note_failed_solves(tires_[i]);
     guard_divergence(tires_[i]);
@@ -588,6 +637,8 @@ void World::wake_for_props() {
 // anti-tunneling clamp, x_prev ← x, x ← x + h v; then the narrow phase along each particle's path
 // and every λ ← 0.
 void World::predict(const SubstepContext& ctx) {
+  // The vehicles first, on the velocities the last substep left (their gravity follows, as the tires').
+  if (ctx.vehicles) vehicles_.begin_substep(tires_, rigid_, ctx);
   rigid_.begin_substep(ctx.time, ctx.h);
   sweep_tires([&](Tire& t) { begin_substep(t, ctx); });
 }
@@ -597,13 +648,16 @@ void World::predict(const SubstepContext& ctx) {
 // pushed crate gives way in the next; then the contacts between tires.
 void World::solve_positions(const SubstepContext& ctx, int iteration) {
   const bool last = iteration + 1 == config_.iterations;
+  if (ctx.vehicles) vehicles_.load_wheels(tires_, ctx);  // each wheel loaded with its joints' forces
   if (ctx.neighbours) {
     if (island_.any()) solve_islands(ctx, last);
     solve_by_tire_colour(ctx, last);
+    if (ctx.vehicles) vehicles_.solve(tires_, rigid_, ctx, last);
     hand_over_impulses();
     return;
   }
   sweep_tires([&](Tire& t) { solve_iteration(t, ctx, last); });
+  if (ctx.vehicles) vehicles_.solve(tires_, rigid_, ctx, last);
   hand_over_impulses();
   solve_tire_pairs();
 }

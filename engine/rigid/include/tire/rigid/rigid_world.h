@@ -146,6 +146,8 @@ class RigidWorld {
   // change of velocity acts from time `since` (the substep's start for a correction of positions,
   // its end for one of velocities) where substep motion is on.
   void add_impulse(std::uint32_t i, Vec2 impulse, Vec2 point, double t, double since);
+  // An angular impulse (N·m·s) on prop i, felt from `since` as add_impulse's (a vehicle's joints).
+  void add_angular_impulse(std::uint32_t i, double angular, double since);
   // End of a tick: hand the impulses to Box2D and step it, if anything can move.
   void end_tick(double dt);
 

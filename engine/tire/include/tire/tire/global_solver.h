@@ -78,8 +78,10 @@ class GlobalSolver {
   //     w = L₀⁻ᵀ (u + Y₀ δμ),  u = L₀⁻¹ r,  (Y₀ᵀ Y₀ + α̃) δμ = −Y₀ᵀ u.
   // prepare_response() factors K₀ and the rows' system once (one factorisation); false when the
   // tire's system holds a free prop (its border is not symmetric) or a factor fails. respond()
-  // works in place on r.
-  bool prepare_response();
+  // works in place on r. With `hold_fixed_friction`, K̂₀ holds the static frictions of the contacts
+  // with fixed surfaces too (as equalities): a vehicle's axle pushing its wheel rolls it about its
+  // contact patch (vehicle_joints.h).
+  bool prepare_response(bool hold_fixed_friction = false);
   void respond(double* r) const;
   // A load on the next solve only: a force r (kg·m, force × h², in block order: dof()) added to its
   // f, as the tire's neighbours push it (an island's last multipliers, island_contacts.h). The

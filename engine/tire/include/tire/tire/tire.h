@@ -168,6 +168,10 @@ struct Tire {
 
   TireId id;
   TireSpec spec;
+  // A vehicle's wheel (vehicle_joints.h): its solver's slot there, and the chassis prop it does not
+  // collide with (it hangs on it); −1 for a tire on its own.
+  std::int32_t wheel = -1;
+  std::int32_t chassis = -1;
   double spawn_mass;      // the mass it was built with: "mass_scale" scales this
   std::uint32_t n;        // particles per ring
   double segment_length;  // rest length of one outer-ring segment (m)

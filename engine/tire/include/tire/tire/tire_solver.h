@@ -11,6 +11,7 @@
 namespace tire {
 
 class IslandContacts;
+class VehicleJoints;
 
 struct SubstepContext {
   double h = 0.0;     // substep (s)
@@ -25,6 +26,9 @@ struct SubstepContext {
   // The island's solve of the contacts between tires (island_contacts.h): each tire solved alone by
   // its own solver, kept for it (null: solved by the pool's).
   IslandContacts* island = nullptr;
+  // The vehicles' joints (vehicle_joints.h): a wheel (Tire::wheel) is solved by the solver they keep
+  // for it, whose system their solve reads after (null: no vehicles).
+  VehicleJoints* vehicles = nullptr;
 };
 
 // Start of a tick: broad-phase query for obstacles near the tire and the jump, if asked for and

@@ -23,6 +23,7 @@
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire.h"
 #include "tire/tire/tire_neighbours.h"
+#include "tire/tire/vehicle_joints.h"
 #include "tire/world/sleep_islands.h"
 #include "tire/world/tick_input.h"
 #include "tire/world/views.h"
@@ -57,6 +58,14 @@ class World {
   bool remove_tire(TireId id);
   void add_obstacle(const Obstacle& obstacle) { rigid_.add_obstacle(obstacle); }
   std::uint32_t add_prop(const PropSpec& spec);
+
+  // Adds a vehicle between ticks (vehicle_joints.h): its chassis as a dynamic prop, its wheels as
+  // tires on their axles. Only the global method solves its joints: nullopt, changing nothing,
+  // under another, or for a spec without wheels or with more than VehicleJoints::kMaxWheels.
+  std::optional<std::uint32_t> add_vehicle(const VehicleSpec& spec);
+  // What the driver asks of vehicle v from the next tick on; false for no such vehicle.
+  bool set_vehicle_control(std::uint32_t v, const VehicleControl& control);
+  const VehicleJoints& vehicles() const { return vehicles_; }
 
   // The run's budgets (run_budgets.h): what spawn_tire, spawn_prop and the level session may add.
   void set_budgets(const RunBudgets& budgets) { budgets_ = budgets; }
@@ -234,6 +243,7 @@ class World {
   GlobalSolverPool global_;
   TireNeighbours neighbours_;  // the global method's contacts between tires
   IslandContacts island_;      // the islands whose contacts between tires are solved as one problem
+  VehicleJoints vehicles_;     // the vehicles' axles, motors and brakes
   void solve_islands(const SubstepContext& ctx, bool last);
   SleepIslands sleep_;
   std::uint64_t seen_removals_ = 0;  // RigidWorld::removals() when wake_for_props last looked
