@@ -25,7 +25,6 @@
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
 #include "tire/world/debug_draw.h"
-#include "tire/world/tick_input.h"
 #include "tire/world/views.h"
 
 namespace tire {

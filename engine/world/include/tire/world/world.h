@@ -24,7 +24,6 @@
 #include "tire/tire/tire.h"
 #include "tire/tire/tire_neighbours.h"
 #include "tire/world/sleep_islands.h"
-#include "tire/world/tick_input.h"
 #include "tire/world/views.h"
 
 namespace tire {
