@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tire/io/level_format.h"
 #include "tire/replay/replay.h"
 #include "tire/tire/parameters.h"
 #include "tire_fixtures.h"
@@ -277,4 +278,40 @@ TEST_CASE("a replay that sets tires.mass_scale to 0 is refused, and so is the wo
   test::run(world, 30);
   CHECK(world.warnings().empty());  // no divergence
   CHECK(is_finite(world.tires()[0].centroid()));
+}
+
+TEST_CASE("the public description of the parameters and the material presets reads the table's rows",
+          "[unit][parameters]") {
+  REQUIRE(tunable_parameters().size() == parameters().size());
+  for (std::size_t i = 0; i < parameters().size(); ++i) {
+    const Parameter& p = parameters()[i];
+    const TunableParameter& d = tunable_parameters()[i];
+    INFO(p.key);
+    CHECK(d.key == p.key);
+    CHECK(d.unit == p.unit);
+    CHECK(d.range == p.range);
+    CHECK(d.integer == p.integer);
+    CHECK(d.default_value == p.default_value);
+    CHECK(d.default_follows == (p.default_follows ? p.default_follows : ""));
+    CHECK(d.description == p.description);
+    CHECK(d.by_level == p.may(by_level));
+    CHECK(d.by_script == p.may(by_script));
+    CHECK(d.by_replay == p.may(by_replay));
+    CHECK(d.by_panel == p.may(by_panel));
+    CHECK(find_tunable_parameter(p.key) == &d);
+    CHECK(d.accepts(p.range.min) == p.accepts(p.range.min));
+  }
+  CHECK(find_tunable_parameter("player.friction") == find_tunable_parameter("tires.friction"));
+  CHECK(find_tunable_parameter("tires.nonsense") == nullptr);
+  REQUIRE(material_presets().size() == kMaterials.size());
+  for (std::size_t i = 0; i < kMaterials.size(); ++i) {
+    const Material& m = kMaterials[i];
+    const MaterialPreset& d = material_presets()[i];
+    INFO(m.name);
+    CHECK(d.name == m.name);
+    CHECK(d.description == m.description);
+    CHECK(find_material_preset(m.name) == &d);
+    for (const Parameter& p : parameters()) CHECK(d.value(p.key) == m.value_of(p.id));
+  }
+  CHECK(find_material_preset("granite") == nullptr);
 }

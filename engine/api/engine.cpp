@@ -1,5 +1,8 @@
 #include "tire/engine.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "tire/io/level.h"
 #include "tire/replay/replay.h"
 #include "tire/session/level_session.h"
@@ -108,6 +111,19 @@ EnergyView Simulation::energy() const {
 
 TireOverlap Simulation::deepest_overlap() const { return deepest_tire_overlap(session_->world()); }
 
+std::optional<double> Simulation::tire_strain(TireId id) const {
+  for (const Tire& t : session_->world().tires()) {
+    if (t.id != id) continue;
+    double strain = 0.0;
+    for (const DistanceConstraint& c : t.distance.constraints()) {
+      const double len = length(t.particles.x[c.b] - t.particles.x[c.a]);
+      strain = std::max(strain, std::abs(len / c.rest_length - 1.0));
+    }
+    return strain;
+  }
+  return std::nullopt;
+}
+
 int Simulation::tick_substeps() const { return session_->world().tick_substeps(); }
 
 SolverReport Simulation::solver_report() const {
@@ -116,6 +132,8 @@ SolverReport Simulation::solver_report() const {
   out.tick_substeps = tick_substeps();
   out.failed_solves = world.failed_solves();
   out.islands = world.island_work();
+  for (const Tire& t : world.tires()) out.touching_particles += t.touching_particles();
+  out.tire_pairs = world.tire_pair_count();
   for (const World::BudgetReached& b : world.budgets_reached()) {
     const char* key = tire::parameter(b.budget).key;
     out.budgets_reached.push_back({key, world.parameter(key).value_or(0.0), b.first_tick, b.dropped});
@@ -131,6 +149,12 @@ std::vector<std::string> Simulation::take_warnings() {
 
 bool Simulation::apply_impulse(TireId id, Vec2 impulse) {
   return session_->world().apply_impulse_to_tire(id, impulse);
+}
+
+bool Simulation::reset_tire(TireId id) {
+  if (!session_->world().find_tire(id)) return false;
+  session_->world().reset_tire(id);
+  return true;
 }
 
 bool Simulation::set_parameter(std::string_view key, double value) {
@@ -159,6 +183,8 @@ void Simulation::set_sleep(bool on) {
 void Simulation::wake_all() { session_->world().wake_all(); }
 
 void Simulation::set_threads(unsigned threads) { session_->world().set_threads(threads); }
+unsigned Simulation::threads() const { return session_->world().threads_in_use(); }
+void Simulation::set_schedule(StepSchedule schedule) { session_->world().set_schedule(schedule); }
 
 void Simulation::debug_draw(DebugDraw& draw) const { session_->world().debug_draw(draw); }
 

@@ -2,8 +2,6 @@
 // the solver, a tire and its compliance take range, unit and default from the parameter table;
 // other defaults come from the structs a level reads into (PropSpec{}, Obstacle{}, ...), the one
 // place those are written. Ranges of the other keys are written here, once.
-#include "tire/io/level_keys.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,7 +9,8 @@
 #include <initializer_list>
 
 #include "tire/io/level.h"
-#include "tire/io/level_schema.h"
+#include "tire/io/level_format.h"
+#include "tire/tire/parameters.h"
 
 namespace tire {
 
@@ -88,7 +87,7 @@ Key from_row(ParamId id, const char* description) {
   key.k.range = p.range;
   key.k.unit = page_unit(p.unit);
   if (!p.default_follows) key.k.default_value = number(p.default_value);  // else it follows another key
-  key.k.parameter = id;
+  key.k.parameter = p.key;
   return key;
 }
 
@@ -122,7 +121,7 @@ std::vector<LevelKey> root_keys() {
   Key gravity_key = Key("gravity", T::vec2, "each in {range}")
                         .range(gravity.range, page_unit(gravity.unit).c_str())
                         .by_default(vec2(level.gravity));
-  gravity_key.k.parameter = ParamId::gravity_x;  // each component read through gravity.x's row
+  gravity_key.k.parameter = gravity.key;  // each component read through gravity.x's row
   return table({
       Key("$schema", T::string, "ignored: lets an editor find the schema")
           .range({0, static_cast<double>(LevelLimits::max_string_bytes)}),

@@ -101,12 +101,14 @@ std::span<const std::string_view> level_key_names(LevelObject object) {
 
 double read_number(JsonReader& r, const json& j, const std::string& path, const LevelKey& key,
                    double fallback) {
-  if (key.parameter) return read_parameter(r, j, path, *key.parameter, fallback, key.required);
+  if (!key.parameter.empty())
+    return read_parameter(r, j, path, find_parameter(key.parameter)->id, fallback, key.required);
   return r.number(j, path, key.key.c_str(), fallback, key.range, message_unit(key).c_str(), key.required);
 }
 
 int read_integer(JsonReader& r, const json& j, const std::string& path, const LevelKey& key, int fallback) {
-  if (key.parameter) return read_integer_parameter(r, j, path, *key.parameter, fallback, key.required);
+  if (!key.parameter.empty())
+    return read_integer_parameter(r, j, path, find_parameter(key.parameter)->id, fallback, key.required);
   return r.integer(j, path, key.key.c_str(), fallback, key.range, key.required);
 }
 

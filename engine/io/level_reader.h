@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "tire/io/json_reader.h"
-#include "tire/io/level_keys.h"
+#include "tire/io/level_format.h"
 #include "tire/rigid/bodies.h"
 #include "tire/tire/parameters.h"
 #include "tire/tire/tire_spec.h"
@@ -23,7 +23,7 @@ double read_parameter(JsonReader& r, const nlohmann::json& j, const std::string&
                       double fallback, bool required = false);
 int read_integer_parameter(JsonReader& r, const nlohmann::json& j, const std::string& path, ParamId id,
                            int fallback, bool required = false);
-// The table's row of a key the readers know `object` has (tire/io/level_keys.h); throws
+// The table's row of a key the readers know `object` has (tire/io/level_format.h); throws
 // std::logic_error for one it lacks, a mistake in the readers, not in a file.
 const LevelKey& level_key(LevelObject object, std::string_view key);
 // The keys of `object` in the table's order, as JsonReader::object takes them.

@@ -1,5 +1,3 @@
-#include "tire/io/level_schema.h"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -10,7 +8,7 @@
 #include <vector>
 
 #include "script_reader.h"
-#include "tire/io/level_keys.h"
+#include "tire/io/level_format.h"
 #include "tire/tire/parameters.h"
 
 namespace tire {
@@ -185,7 +183,7 @@ std::string range_for_docs(const Range& range) {
          number_for_docs(range.max) + (range.max_open ? ")" : "]");
 }
 
-std::string described(const char* description, const Range& range) {
+std::string described(std::string_view description, const Range& range) {
   std::string text(description);
   const std::size_t at = text.find("{range}");
   if (at != std::string::npos) text.replace(at, 7, range_for_docs(range));

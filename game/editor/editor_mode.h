@@ -17,7 +17,7 @@
 #include "render/camera.h"
 #include "render/draw.h"
 #include "render/renderer.h"
-#include "tire/io/level_keys.h"
+#include "tire/io/level_format.h"
 
 namespace game {
 

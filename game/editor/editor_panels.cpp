@@ -9,8 +9,7 @@
 
 #include "editor/editor_mode.h"
 #include "editor/level_edits.h"
-#include "tire/io/level_schema.h"
-#include "tire/tire/parameters.h"
+#include "tire/io/level_format.h"
 
 namespace game {
 
@@ -336,27 +335,28 @@ Json Editor::computed_default(const std::string& pointer, const LevelKey& key) c
     const tire::Vec2 v = key.key == "min" ? box.min : box.max;
     return Json::array({v.x, v.y});
   }
-  if (!key.parameter) return key.default_value;
+  const tire::TunableParameter* row = tire::find_tunable_parameter(key.parameter);
+  if (!row) return key.default_value;
   // A default that follows another key (a tire's kinetic_friction: its friction) shows that key's,
   // when the object gives it.
-  const char* follows = tire::parameter(*key.parameter).default_follows;
-  if (follows && doc_.json().contains(Json::json_pointer(pointer))) {
-    const std::string field(std::string_view(follows).substr(std::string_view(follows).rfind('.') + 1));
+  const std::string_view follows = row->default_follows;
+  if (!follows.empty() && doc_.json().contains(Json::json_pointer(pointer))) {
+    const std::string field(follows.substr(follows.rfind('.') + 1));
     const Json& object = doc_.json().at(Json::json_pointer(pointer));
     if (const auto it = object.find(field); it != object.end()) return *it;
   }
   // A tire that names a material preset: the preset's value, where it sets the key (as the level
-  // reader applies it: tire/tire/parameters.h).
+  // reader applies it: tire/io/level_format.h).
   if (pointer.starts_with("/tires/")) {
     const Json::json_pointer tire_pointer(
         pointer.substr(0, pointer.find('/', std::string_view("/tires/").size())));
     if (doc_.json().contains(tire_pointer))
-      if (const tire::Material* m =
-              tire::find_material(editor::string_at(doc_.json().at(tire_pointer), "material", "")))
-        if (const std::optional<double> v = m->value_of(*key.parameter)) return *v;
+      if (const tire::MaterialPreset* m =
+              tire::find_material_preset(editor::string_at(doc_.json().at(tire_pointer), "material", "")))
+        if (const std::optional<double> v = m->value(row->key)) return *v;
   }
-  if (follows)
-    if (const tire::Parameter* p = tire::find_parameter(follows)) return p->default_value;
+  if (!follows.empty())
+    if (const tire::TunableParameter* p = tire::find_tunable_parameter(follows)) return p->default_value;
   return key.default_value;
 }
 

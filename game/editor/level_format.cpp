@@ -1,7 +1,6 @@
 #include "level_format.h"
 
-#include "tire/io/level_keys.h"
-#include "tire/io/level_schema.h"
+#include "tire/io/level_format.h"
 
 namespace editor {
 

@@ -1,4 +1,4 @@
-// A level as the editor writes it: keys in the order of the level reference (tire/io/level_keys.h,
+// A level as the editor writes it: keys in the order of the level reference (tire/io/level_format.h,
 // the order levels/README.md lists them), keys the table does not know (scripts' triggers and
 // counters, inside and out) in the order they came, two-space indents, an object or array on one
 // line when it fits in 100 columns, numbers as short as they read back exactly (format_json).

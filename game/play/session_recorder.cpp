@@ -5,7 +5,7 @@
 #include <ctime>
 
 #include "tire/io/file_io.h"
-#include "tire/tire/parameters.h"
+#include "tire/io/level_format.h"
 
 namespace game {
 
@@ -105,21 +105,21 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
             // table refuses changed nothing there, so it is not recorded either. Neither is the
             // sleep checkbox (no row of the table) nor the World::wake_all apply_tuning does: a
             // replay's `set` and `gravity` wake nothing unless the engine does it.
-            const tire::Parameter* p = tire::find_parameter(e.key);
-            if (!p || !p->may(tire::by_panel) || e.key != p->key) return;
+            const tire::TunableParameter* p = tire::find_tunable_parameter(e.key);
+            if (!p || !p->by_panel || e.key != p->key) return;
             const double value = p->integer ? std::round(e.value) : e.value;
             if (!p->accepts(value)) return;
-            if (p->id == tire::ParamId::gravity_x || p->id == tire::ParamId::gravity_y) {
-              (p->id == tire::ParamId::gravity_x ? gravity_.x : gravity_.y) = value;
+            if (p->key == "gravity.x" || p->key == "gravity.y") {
+              (p->key == "gravity.x" ? gravity_.x : gravity_.y) = value;
               in.gravity = gravity_;
               input(in);
-            } else if (p->id == tire::ParamId::tire_friction) {
+            } else if (p->key == "tires.friction") {
               for (const char* key : {"tires.friction", "tires.kinetic_friction"}) {
                 in.set_key = key;
                 in.set_value = value;
                 input(in);
               }
-            } else if (p->may(tire::by_replay)) {
+            } else if (p->by_replay) {
               in.set_key = e.key;
               in.set_value = value;
               input(in);

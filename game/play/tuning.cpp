@@ -59,10 +59,10 @@ bool set_tuned(tire::Simulation& simulation, std::string_view key, double value)
     simulation.set_sleep(value == 1.0);
     return true;
   }
-  const tire::Parameter* p = tire::find_parameter(key);
-  if (!p || !p->may(tire::by_panel) || key != p->key) return false;
+  const tire::TunableParameter* p = tire::find_tunable_parameter(key);
+  if (!p || !p->by_panel || key != p->key) return false;
   if (p->integer) value = std::round(value);
-  if (p->id == tire::ParamId::tire_friction)
+  if (p->key == "tires.friction")
     return simulation.set_parameter("tires.friction", value) &&
            simulation.set_parameter("tires.kinetic_friction", value);
   return simulation.set_parameter(key, value);
@@ -70,11 +70,11 @@ bool set_tuned(tire::Simulation& simulation, std::string_view key, double value)
 
 }  // namespace
 
-const std::vector<const tire::Parameter*>& tuning_parameters() {
-  static const std::vector<const tire::Parameter*> rows = [] {
-    std::vector<const tire::Parameter*> out;
-    for (const tire::Parameter& p : tire::parameters())
-      if (p.may(tire::by_panel)) out.push_back(&p);
+const std::vector<const tire::TunableParameter*>& tuning_parameters() {
+  static const std::vector<const tire::TunableParameter*> rows = [] {
+    std::vector<const tire::TunableParameter*> out;
+    for (const tire::TunableParameter& p : tire::tunable_parameters())
+      if (p.by_panel) out.push_back(&p);
     return out;
   }();
   return rows;
@@ -83,14 +83,14 @@ const std::vector<const tire::Parameter*>& tuning_parameters() {
 const std::vector<std::string>& tuning_keys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> out;
-    for (const tire::Parameter* p : tuning_parameters()) out.emplace_back(p->key);
+    for (const tire::TunableParameter* p : tuning_parameters()) out.emplace_back(p->key);
     return out;
   }();
   return keys;
 }
 
 Tuning::Tuning() {
-  for (const tire::Parameter* p : tuning_parameters()) values.push_back(p->default_value);
+  for (const tire::TunableParameter* p : tuning_parameters()) values.push_back(p->default_value);
 }
 
 Tuning Tuning::from_simulation(const tire::Simulation& simulation) {
@@ -114,36 +114,23 @@ bool Tuning::set(std::string_view key, double value) {
 }
 
 namespace {
-// The keys of a preset the panel tunes, and where each is in a Material.
-struct MaterialKey {
-  std::string_view key;
-  double tire::Material::*field = nullptr;  // or one of the compliances
-  double tire::TireCompliance::*compliance = nullptr;
+// The keys of a preset the panel tunes; every preset sets each of them.
+constexpr std::string_view kMaterialKeys[] = {
+    "tires.compliance.outer", "tires.compliance.inner", "tires.compliance.spoke", "tires.compliance.pressure",
+    "tires.material_damping", "tires.friction",         "tires.restitution",      "tires.pressure",
 };
-constexpr MaterialKey kMaterialKeys[] = {
-    {"tires.compliance.outer", nullptr, &tire::TireCompliance::outer},
-    {"tires.compliance.inner", nullptr, &tire::TireCompliance::inner},
-    {"tires.compliance.spoke", nullptr, &tire::TireCompliance::spoke},
-    {"tires.compliance.pressure", nullptr, &tire::TireCompliance::pressure},
-    {"tires.material_damping", &tire::Material::material_damping},
-    {"tires.friction", &tire::Material::friction},
-    {"tires.restitution", &tire::Material::restitution},
-    {"tires.pressure", &tire::Material::pressure},
-};
-double value_in(const tire::Material& m, const MaterialKey& k) {
-  return k.field ? m.*(k.field) : m.compliance.*(k.compliance);
-}
+double value_in(const tire::MaterialPreset& m, std::string_view key) { return m.value(key).value_or(0.0); }
 }  // namespace
 
-Tuning with_material(Tuning t, const tire::Material& material) {
-  for (const MaterialKey& k : kMaterialKeys) t.set(k.key, value_in(material, k));
+Tuning with_material(Tuning t, const tire::MaterialPreset& material) {
+  for (const std::string_view key : kMaterialKeys) t.set(key, value_in(material, key));
   return t;
 }
 
-const tire::Material* material_of(const Tuning& t) {
-  for (const tire::Material& m : tire::kMaterials) {
+const tire::MaterialPreset* material_of(const Tuning& t) {
+  for (const tire::MaterialPreset& m : tire::material_presets()) {
     bool all = true;
-    for (const MaterialKey& k : kMaterialKeys) all = all && tuning_value(t, k.key) == value_in(m, k);
+    for (const std::string_view key : kMaterialKeys) all = all && tuning_value(t, key) == value_in(m, key);
     if (all) return &m;
   }
   return nullptr;
@@ -183,7 +170,7 @@ const SliderSpec* slider_spec(std::string_view key) {
   return nullptr;
 }
 
-SliderRange slider_range(const tire::Parameter& p) {
+SliderRange slider_range(const tire::TunableParameter& p) {
   const double inset = (p.range.max - p.range.min) * 1e-6;
   const double lo = p.range.min + (p.range.min_open ? inset : 0.0);
   const double hi = p.range.max - (p.range.max_open ? inset : 0.0);

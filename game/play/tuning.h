@@ -1,5 +1,5 @@
 // The live-tunable numbers of the tuning panel and how a change reaches the simulation. The keys
-// are the parameter table's rows that the panel may set (tire/parameters.h), in the table's order;
+// are the parameter table's rows that the panel may set (tire/io/level_format.h), in the table's order;
 // each slider's range lies inside its row's range. A change is always a key = value pair (a
 // TuneEvent), so a replay can log and re-apply it.
 #pragma once
@@ -10,12 +10,12 @@
 
 #include "input/session_input.h"
 #include "tire/engine.h"
-#include "tire/tire/parameters.h"
+#include "tire/io/level_format.h"
 
 namespace game {
 
 // The parameter table's rows the panel may set, in the table's order.
-const std::vector<const tire::Parameter*>& tuning_parameters();
+const std::vector<const tire::TunableParameter*>& tuning_parameters();
 // Their keys, in the same order: the order changes are emitted in.
 const std::vector<std::string>& tuning_keys();
 
@@ -42,12 +42,12 @@ struct Tuning {
 // The value of `key` in `t` (kSleepKey: 1 or 0); 0 for a key the panel does not tune.
 double tuning_value(const Tuning& t, std::string_view key);
 
-// `t` with a material preset's values (tire/parameters.h, kMaterials) in the keys the panel tunes:
+// `t` with a material preset's values (tire::material_presets()) in the keys the panel tunes:
 // the compliances, material damping, friction, restitution and pressure. Kinetic friction follows
 // friction, as the panel's one friction slider has it; rolling resistance is not the panel's.
-Tuning with_material(Tuning t, const tire::Material& material);
+Tuning with_material(Tuning t, const tire::MaterialPreset& material);
 // The preset whose values `t` holds in those keys, or nullptr (the panel then shows "custom").
-const tire::Material* material_of(const Tuning& t);
+const tire::MaterialPreset* material_of(const Tuning& t);
 
 // The key = value changes that turn `from` into `to`.
 std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
@@ -82,6 +82,6 @@ const SliderSpec* slider_spec(std::string_view key);
 struct SliderRange {
   double min, max;
 };
-SliderRange slider_range(const tire::Parameter& p);
+SliderRange slider_range(const tire::TunableParameter& p);
 
 }  // namespace game

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tire/io/level_schema.h"
+#include "tire/io/level_format.h"
 
 namespace game {
 
@@ -67,13 +67,14 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("Applies live to every tire, those spawned later too, and wakes them.");
     ImGui::PopStyleColor();
-    // A material preset (tire/parameters.h) sets the tire's sliders at once; any slider moved after
-    // it makes the tire "custom".
-    const tire::Material* now = material_of(t);
-    if (ImGui::BeginCombo("material", now ? now->name : "custom")) {
-      for (const tire::Material& m : tire::kMaterials) {
-        if (ImGui::Selectable(m.name, &m == now)) t = with_material(t, m);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m.description);
+    // A material preset (tire::material_presets()) sets the tire's sliders at once; any slider
+    // moved after it makes the tire "custom".
+    const tire::MaterialPreset* now = material_of(t);
+    if (ImGui::BeginCombo("material", now ? std::string(now->name).c_str() : "custom")) {
+      for (const tire::MaterialPreset& m : tire::material_presets()) {
+        if (ImGui::Selectable(std::string(m.name).c_str(), &m == now)) t = with_material(t, m);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%.*s", static_cast<int>(m.description.size()), m.description.data());
       }
       ImGui::EndCombo();
     }
@@ -86,18 +87,19 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
     for (std::size_t section = 0; section < sections.size(); ++section) {
       if (!ImGui::CollapsingHeader(sections[section], ImGuiTreeNodeFlags_DefaultOpen)) continue;
       for (std::size_t i = 0; i < rows.size(); ++i) {
-        const tire::Parameter& p = *rows[i];
+        const tire::TunableParameter& p = *rows[i];
         const SliderSpec* spec = slider_spec(p.key);
         // A key the panel has no spec for goes, as a plain slider, into the last section.
         if (spec ? std::string_view(spec->section) != sections[section] : section + 1 != sections.size())
           continue;
         const SliderRange range = slider_range(p);
         double& value = t.values[i];
-        const char* label = spec ? spec->label : p.key;
+        const std::string key(p.key);
+        const char* label = spec ? spec->label : key.c_str();
         // A key without a spec shows the table's description, its {range} written out.
         static const std::vector<std::string> descriptions = [&rows] {
           std::vector<std::string> out;
-          for (const tire::Parameter* row : rows)
+          for (const tire::TunableParameter* row : rows)
             out.push_back(tire::described(row->description, row->range));
           return out;
         }();

@@ -13,7 +13,7 @@
 #include "editor/level_edits.h"
 #include "editor/level_format.h"
 #include "tire/io/level.h"
-#include "tire/io/level_keys.h"
+#include "tire/io/level_format.h"
 #include "tire/session/level_session.h"
 #include "tire/world/world.h"
 

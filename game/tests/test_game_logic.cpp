@@ -21,6 +21,7 @@
 #include "render/draw.h"
 #include "render/hud.h"
 #include "render/renderer.h"
+#include "tire/tire/parameters.h"
 
 using namespace game;
 
@@ -155,9 +156,9 @@ TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside
   CHECK(tuning_keys() == expected);
   // A fresh Tuning holds the table's defaults.
   const Tuning defaults;
-  for (const tire::Parameter* p : tuning_parameters())
+  for (const tire::TunableParameter* p : tuning_parameters())
     CHECK(tuning_value(defaults, p->key) == p->default_value);
-  for (const tire::Parameter* p : tuning_parameters()) {
+  for (const tire::TunableParameter* p : tuning_parameters()) {
     INFO(p->key);
     // Each has a slider of its own, in one of the panel's sections, that never leaves the range.
     const SliderSpec* spec = slider_spec(p->key);
@@ -177,7 +178,7 @@ TEST_CASE("the tuning panel's keys are the parameter table's, its sliders inside
   // The table's range, not the slider's, is what a change must keep to.
   GameSession session;
   session.start("flat.json", flat_level());
-  for (const tire::Parameter* p : tuning_parameters()) {
+  for (const tire::TunableParameter* p : tuning_parameters()) {
     INFO(p->key);
     CHECK_FALSE(apply_tuning(session.simulation(), p->key, p->range.max + 1.0));
   }

@@ -16,6 +16,7 @@
 #include "internals.h"
 #include "play/game_session.h"
 #include "play/tuning.h"
+#include "tire/tire/parameters.h"
 
 using namespace game;
 
@@ -105,7 +106,7 @@ Trial run_trial(const std::vector<TuneEvent>& changes) {
 Trial run_trial(const std::string& key, double value) { return run_trial({TuneEvent{key, value}}); }
 
 // The values a slider offers at its ends.
-std::pair<double, double> slider_ends(const tire::Parameter& p) {
+std::pair<double, double> slider_ends(const tire::TunableParameter& p) {
   const SliderRange r = slider_range(p);
   return {r.min, r.max};
 }
@@ -113,11 +114,12 @@ std::pair<double, double> slider_ends(const tire::Parameter& p) {
 // Each slider's ends, paired with each other slider's ends (the solver's counts at their least).
 std::vector<std::vector<TuneEvent>> end_pairs() {
   std::vector<std::vector<TuneEvent>> ends;  // per slider, its end values
-  for (const tire::Parameter* p : tuning_parameters()) {
+  for (const tire::TunableParameter* p : tuning_parameters()) {
     const SliderSpec* spec = slider_spec(p->key);
     const auto [lo, hi] = slider_ends(*p);
-    ends.push_back({TuneEvent{p->key, lo}});
-    if (spec && spec->scale != SliderScale::integer) ends.back().push_back(TuneEvent{p->key, hi});
+    ends.push_back({TuneEvent{std::string(p->key), lo}});
+    if (spec && spec->scale != SliderScale::integer)
+      ends.back().push_back(TuneEvent{std::string(p->key), hi});
   }
   std::vector<std::vector<TuneEvent>> pairs;
   for (std::size_t i = 0; i < ends.size(); ++i)
@@ -131,7 +133,7 @@ std::vector<std::vector<TuneEvent>> end_pairs() {
 
 TEST_CASE("every tuning slider, at either end, leaves the tire whole", "[unit][game][tuning]") {
   int trials = 0;
-  for (const tire::Parameter* p : tuning_parameters()) {
+  for (const tire::TunableParameter* p : tuning_parameters()) {
     const SliderSpec* spec = slider_spec(p->key);
     REQUIRE(spec != nullptr);
     // The solver's counts make no shape: their ends cost time, not a fold (more substeps and
@@ -140,7 +142,7 @@ TEST_CASE("every tuning slider, at either end, leaves the tire whole", "[unit][g
     std::vector<double> ends{lo, hi};
     if (spec->scale == SliderScale::integer) ends = {lo};
     for (const double v : ends) {
-      const Trial t = run_trial(p->key, v);
+      const Trial t = run_trial(std::string(p->key), v);
       INFO(p->key << " = " << v << ": least cell " << t.least_cell << " of its rest area, least area "
                   << t.least_area << (t.folded ? ", folded" : "") << (t.diverged ? ", diverged" : ""));
       CHECK(t.holds());
@@ -168,7 +170,7 @@ TEST_CASE("every pair of tuning slider ends leaves the tire whole", "[unit][game
 
 TEST_CASE("each material preset chosen in the panel is the preset a level names, and holds its shape",
           "[unit][game][tuning]") {
-  for (const tire::Material& m : tire::kMaterials) {
+  for (const tire::MaterialPreset& m : tire::material_presets()) {
     INFO(m.name);
     GameSession session;
     session.start("trial.json", trial_level());
@@ -178,7 +180,7 @@ TEST_CASE("each material preset chosen in the panel is the preset a level names,
     for (const TuneEvent& e : changes) session.queue(e);
     session.flush();
     tire::TireSpec named;
-    m.apply_to(named);
+    tire::find_material(m.name)->apply_to(named);
     const tire::TireSpec& got = world_of(session).tires().front().spec;
     CHECK(got.compliance.outer == named.compliance.outer);
     CHECK(got.compliance.inner == named.compliance.inner);
@@ -194,7 +196,7 @@ TEST_CASE("each material preset chosen in the panel is the preset a level names,
     CHECK(t.holds());
   }
   // A slider moved after a preset makes it custom.
-  Tuning soft = with_material(Tuning{}, *tire::find_material("soft"));
+  Tuning soft = with_material(Tuning{}, *tire::find_material_preset("soft"));
   REQUIRE(soft.set("tires.friction", 0.31));
   CHECK(material_of(soft) == nullptr);
 }
@@ -282,7 +284,7 @@ TEST_CASE("the tuning sweep: the softest corner", "[.tuning_sweep]") {
 }
 
 TEST_CASE("the tuning sweep: where each key holds the tire", "[.tuning_sweep]") {
-  for (const tire::Parameter* p : tuning_parameters()) {
+  for (const tire::TunableParameter* p : tuning_parameters()) {
     const SliderSpec* spec = slider_spec(p->key);
     if (!spec || spec->scale == SliderScale::integer) continue;
     // Over the table's range: decades for an exponent slider, 24 steps (log where the slider is)
@@ -301,9 +303,9 @@ TEST_CASE("the tuning sweep: where each key holds the tire", "[.tuning_sweep]") 
                    b = std::min(hi, spec->max + 2.0 * (spec->max - spec->min));
       for (int i = 0; i <= 24; ++i) values.push_back(a + (b - a) * i / 24.0);
     }
-    std::printf("%s (slider %g to %g)\n", p->key, spec->min, spec->max);
+    std::printf("%s (slider %g to %g)\n", std::string(p->key).c_str(), spec->min, spec->max);
     for (const double v : values) {
-      const Trial t = run_trial(p->key, v);
+      const Trial t = run_trial(std::string(p->key), v);
       std::printf("  %-10.4g %s  least cell %7.3f  least area %6.3f\n", v,
                   t.holds()    ? "holds "
                   : t.diverged ? "DIVERGED"

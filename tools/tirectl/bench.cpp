@@ -12,11 +12,8 @@
 
 #include "commands.h"
 #include "process_memory.h"
+#include "tire/engine.h"
 #include "tire/io/file_io.h"
-#include "tire/io/level.h"
-#include "tire/tire/global_solver.h"
-#include "tire/tire/tire_solver.h"
-#include "tire/world/world.h"
 
 namespace tirectl {
 
@@ -27,8 +24,10 @@ class Steppable {
  public:
   virtual ~Steppable() = default;
   virtual void step(const tire::TickInput& input) = 0;
-  virtual const tire::Tire& first_tire() const = 0;
   virtual std::size_t tire_count() const = 0;
+  // The first tire's particles and segments.
+  virtual std::size_t first_tire_particles() const = 0;
+  virtual std::uint32_t first_tire_segments() const = 0;
   virtual const tire::SolverConfig& config() const = 0;
   virtual void set_threads(unsigned threads) = 0;
   virtual unsigned threads() const = 0;
@@ -43,62 +42,50 @@ class Steppable {
   virtual void between_ticks() {}
 };
 
-class WorldScene final : public Steppable {
+// A scene built on a Simulation, as any program of the engine builds one (tire/engine.h).
+class SimulationScene final : public Steppable {
  public:
   // `between`: what the scene does between ticks, if anything.
-  explicit WorldScene(std::unique_ptr<tire::World> world, std::function<void(tire::World&)> between = nullptr)
-      : world_(std::move(world)), between_(std::move(between)) {}
-  void step(const tire::TickInput& input) override { world_->step(input); }
-  const tire::Tire& first_tire() const override { return world_->tires().front(); }
-  std::size_t tire_count() const override { return world_->tires().size(); }
-  const tire::SolverConfig& config() const override { return world_->config(); }
-  void set_threads(unsigned threads) override { world_->set_threads(threads); }
-  void set_schedule(tire::StepSchedule schedule) override { world_->set_schedule(schedule); }
-  unsigned threads() const override { return world_->threads_in_use(); }
-  std::size_t contacts() const override {
-    std::size_t count = 0;
-    for (const tire::Tire& t : world_->tires()) count += t.touching_particles();
-    return count;
-  }
-  std::size_t tire_pairs() const override { return world_->tire_pair_count(); }
-  std::size_t asleep() const override { return world_->asleep_count(); }
+  explicit SimulationScene(tire::Simulation simulation,
+                           std::function<void(tire::Simulation&)> between = nullptr)
+      : simulation_(std::move(simulation)), between_(std::move(between)) {}
+  void step(const tire::TickInput& input) override { simulation_.step(input); }
+  std::size_t tire_count() const override { return simulation_.tire_count(); }
+  std::size_t first_tire_particles() const override { return simulation_.tire_at(0)->positions.size(); }
+  std::uint32_t first_tire_segments() const override { return simulation_.tire_at(0)->segments; }
+  const tire::SolverConfig& config() const override { return simulation_.config(); }
+  void set_threads(unsigned threads) override { simulation_.set_threads(threads); }
+  void set_schedule(tire::StepSchedule schedule) override { simulation_.set_schedule(schedule); }
+  unsigned threads() const override { return simulation_.threads(); }
+  std::size_t contacts() const override { return simulation_.solver_report().touching_particles; }
+  std::size_t tire_pairs() const override { return simulation_.solver_report().tire_pairs; }
+  std::size_t asleep() const override { return simulation_.asleep_count(); }
   void between_ticks() override {
-    if (between_) between_(*world_);
+    if (between_) between_(simulation_);
   }
 
  private:
-  std::unique_ptr<tire::World> world_;
-  std::function<void(tire::World&)> between_;
+  tire::Simulation simulation_;
+  std::function<void(tire::Simulation&)> between_;
 };
 
-// One tire and its ground, stepped by the tire solver alone: no World around it (no level, no
-// divergence guard, no Box2D stepping, no refinement, nothing else), at the default settings, as
-// "flat-level" is. Its floor.
+// One tire and its ground, stepped by the tire solver alone: no world around it (no level, no
+// divergence guard, no Box2D stepping, no refinement, nothing else; tire::BareTire), at the
+// default settings, as "flat-level" is. Its floor.
 class BareTireScene final : public Steppable {
  public:
-  BareTireScene() : rigid_({0.0, -9.81}), tire_(0, spec()) {
-    rigid_.add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
-    global_.reserve(1, spec().segments);
-  }
-  void step(const tire::TickInput& input) override {
-    tire_.control = {input.steer, input.jump};
-    tire::begin_tick(tire_, config_, rigid_);
-    const double h = config_.dt / config_.substeps;
-    tire::SubstepContext ctx{h, 0.0, {0.0, -9.81}, &config_, &rigid_, false, &global_};
-    for (int s = 0; s < config_.substeps; ++s) {
-      ctx.time = s * h;
-      tire::substep(tire_, ctx, rigid_);
-    }
-  }
-  const tire::Tire& first_tire() const override { return tire_; }
+  BareTireScene() : tire_(tire::SolverConfig{}, {0.0, -9.81}, spec(), {{{-50.0, -1.0}, {50.0, 0.0}}}) {}
+  void step(const tire::TickInput& input) override { tire_.step(input); }
   std::size_t tire_count() const override { return 1; }
-  const tire::SolverConfig& config() const override { return config_; }
+  std::size_t first_tire_particles() const override { return tire_.particle_count(); }
+  std::uint32_t first_tire_segments() const override { return tire_.segments(); }
+  const tire::SolverConfig& config() const override { return tire_.config(); }
   void set_threads(unsigned) override {}
-  void set_schedule(tire::StepSchedule) override {}  // no World: the plain substep() loop already
+  void set_schedule(tire::StepSchedule) override {}  // no world: the plain substep() loop already
   unsigned threads() const override { return 1; }
   std::size_t contacts() const override { return tire_.touching_particles(); }
   std::size_t tire_pairs() const override { return 0; }
-  std::size_t asleep() const override { return tire_.asleep ? 1 : 0; }
+  std::size_t asleep() const override { return tire_.asleep() ? 1 : 0; }
 
  private:
   static tire::TireSpec spec() {
@@ -106,27 +93,22 @@ class BareTireScene final : public Steppable {
     s.position = {0.0, 0.5};
     return s;
   }
-  tire::SolverConfig config_;
-  tire::RigidWorld rigid_;
-  tire::Tire tire_;
-  tire::GlobalSolverPool global_;  // the default method's solver
+  tire::BareTire tire_;
 };
 
-// The same tire and ground as a level file read by the loader, stepped by the World: everything a
-// level brings along, on the scene that needs none of it.
+// The same tire and ground as a level file read by the loader, stepped by a Simulation: everything
+// a level brings along (its bounds checked every tick), on the scene that needs none of it.
+// Sleeping off: the solver's cost, as a resting tire would fall asleep.
 constexpr const char* kFlatLevel = R"json({
   "name": "Flat (bench)",
+  "solver": { "sleep": false },
   "tires": [ { "position": [0, 0.5] } ],
   "obstacles": [ { "min": [-50, -1], "max": [50, 0] } ]
 })json";
 
 std::unique_ptr<Steppable> flat_level() {
-  const tire::LevelLoad load = tire::load_level_text(kFlatLevel, "flat-level");
-  tire::SolverConfig config = load.level->solver;
-  config.sleep = false;  // the solver's cost: a resting tire would fall asleep
-  auto world = std::make_unique<tire::World>(config, load.level->gravity);
-  tire::populate_world(*load.level, *world);
-  return std::make_unique<WorldScene>(std::move(world));
+  tire::LevelOpen open = tire::open_level_text(kFlatLevel, "flat-level");
+  return std::make_unique<SimulationScene>(tire::Simulation(std::move(open.level)));
 }
 
 // A walled pile: `count` default tires (28 segments, 8 substeps × 1 iteration unless said) stacked in rows in
@@ -146,17 +128,17 @@ std::unique_ptr<Steppable> pile(int count, int crates = 0,
   config.substeps = substeps;
   config.sleep = sleep == Sleep::on;
   config.island_tires = island_tires;
-  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
+  tire::Simulation world(config, tire::Vec2{0.0, -9.81});
   const int per_row = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)) * 1.5)));
   const double width = per_row * 1.05;
-  world->add_obstacle({{{-1.0, -1.0}, {width + 1.0, 0.0}}});
-  world->add_obstacle({{{-1.0, 0.0}, {0.0, 1000.0}}});
-  world->add_obstacle({{{width, 0.0}, {width + 1.0, 1000.0}}});
+  world.add_obstacle({{{-1.0, -1.0}, {width + 1.0, 0.0}}});
+  world.add_obstacle({{{-1.0, 0.0}, {0.0, 1000.0}}});
+  world.add_obstacle({{{width, 0.0}, {width + 1.0, 1000.0}}});
   for (int i = 0; i < count; ++i) {
     tire::TireSpec spec;
     const int row = i / per_row, column = i % per_row;
     spec.position = {0.55 + 1.05 * column + 0.25 * (row % 2), 0.5 + 1.0 * row};
-    world->add_tire(spec);
+    world.add_tire(spec);
   }
   for (int i = 0; i < crates; ++i) {
     tire::PropSpec crate;
@@ -164,9 +146,9 @@ std::unique_ptr<Steppable> pile(int count, int crates = 0,
     crate.size = {0.6, 0.6};
     crate.density = 20;
     crate.position = {0.5 + std::fmod(i * 2.3, width - 1.0), 1.0 + count / per_row + 0.8 * i / 4};
-    world->add_prop(crate);
+    world.add_prop(crate);
   }
-  return std::make_unique<WorldScene>(std::move(world));
+  return std::make_unique<SimulationScene>(std::move(world));
 }
 
 // The crowd: `resting` default tires at rest on shelves beside a pit into which 100 tires are dropped
@@ -183,9 +165,9 @@ std::unique_ptr<Steppable> pile(int count, int crates = 0,
 // apart, odd rows shifted 0.25 m as in the pile; rows 1.1 m apart, the lowest at y = 2). The lowest
 // lands 1.6 s later at 16 m/s, and the pile's impact throws more than a quarter of them back up
 // above the ground (to y ≈ 7); 70 still move faster than 1 m/s at 4 s. Every 240 ticks (4 s) all
-// 100 are put back where they started (World::reset_tire: still, in their spawn shape) and fall
+// 100 are put back where they started (Simulation::reset_tire: still, in their spawn shape) and fall
 // again, so however many ticks the timing takes, its steps see falling, landing and bouncing in the
-// same proportions. The re-drop is counted in ticks (World::tick), never in time, and runs between
+// same proportions. The re-drop is counted in ticks (Simulation::tick), never in time, and runs between
 // ticks (Steppable::between_ticks), outside the timing.
 constexpr int kCrowdShelves = 11;
 constexpr int kCrowdPerShelf = 900;
@@ -198,33 +180,33 @@ constexpr int kCrowdFalling = 100;
 constexpr std::uint64_t kCrowdDropTicks = 240;
 
 std::unique_ptr<Steppable> crowd(int resting, const tire::SolverConfig& config) {
-  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
+  tire::Simulation world(config, tire::Vec2{0.0, -9.81});
   const double shelves_right = kCrowdPitLeft - 1.0;
   // The ground under the shelves is the lowest shelf; the pit's floor and walls.
-  world->add_obstacle({{{-1.0, -1.0}, {shelves_right, 0.0}}});
+  world.add_obstacle({{{-1.0, -1.0}, {shelves_right, 0.0}}});
   for (int k = 1; k < kCrowdShelves; ++k)
-    world->add_obstacle({{{-1.0, k * kCrowdShelfPitch - 0.2}, {shelves_right, k * kCrowdShelfPitch}}});
-  world->add_obstacle({{{-2.0, 0.0}, {-1.0, kCrowdShelves * kCrowdShelfPitch}}});  // the rack's left end
+    world.add_obstacle({{{-1.0, k * kCrowdShelfPitch - 0.2}, {shelves_right, k * kCrowdShelfPitch}}});
+  world.add_obstacle({{{-2.0, 0.0}, {-1.0, kCrowdShelves * kCrowdShelfPitch}}});  // the rack's left end
   const double pit_right = kCrowdPitLeft + kCrowdPitWidth;
-  world->add_obstacle({{{kCrowdPitLeft - 1.0, kCrowdPitFloor - 1.0}, {pit_right + 1.0, kCrowdPitFloor}}});
-  world->add_obstacle({{{kCrowdPitLeft - 1.0, kCrowdPitFloor}, {kCrowdPitLeft, 16.0}}});
-  world->add_obstacle({{{pit_right, kCrowdPitFloor}, {pit_right + 1.0, 16.0}}});
+  world.add_obstacle({{{kCrowdPitLeft - 1.0, kCrowdPitFloor - 1.0}, {pit_right + 1.0, kCrowdPitFloor}}});
+  world.add_obstacle({{{kCrowdPitLeft - 1.0, kCrowdPitFloor}, {kCrowdPitLeft, 16.0}}});
+  world.add_obstacle({{{pit_right, kCrowdPitFloor}, {pit_right + 1.0, 16.0}}});
 
   std::vector<tire::TireId> falling;
   for (int i = 0; i < kCrowdFalling; ++i) {
     tire::TireSpec spec;
     const int row = i / 10, column = i % 10;
     spec.position = {kCrowdPitLeft + 0.55 + kCrowdSpacing * column + 0.25 * (row % 2), 2.0 + 1.1 * row};
-    falling.push_back(world->add_tire(spec));
+    falling.push_back(world.add_tire(spec));
   }
   for (int i = 0; i < resting; ++i) {
     tire::TireSpec spec;
     const int shelf = i / kCrowdPerShelf, column = i % kCrowdPerShelf;
     const double rest = spec.outer_radius * std::cos(std::numbers::pi / spec.segments);
     spec.position = {0.55 + kCrowdSpacing * column, shelf * kCrowdShelfPitch + rest};
-    world->add_tire(spec);
+    world.add_tire(spec);
   }
-  return std::make_unique<WorldScene>(std::move(world), [falling](tire::World& w) {
+  return std::make_unique<SimulationScene>(std::move(world), [falling](tire::Simulation& w) {
     if (w.tick() == 0 || w.tick() % kCrowdDropTicks != 0) return;
     for (const tire::TireId id : falling) w.reset_tire(id);
   });
@@ -235,11 +217,11 @@ std::unique_ptr<Steppable> crowd(int resting, const tire::SolverConfig& config) 
 // default tire driven flat out along it from x = -90, by the default method. A chain of 1000 points
 // reaches from -100 to 100 m, one of 100 000 (the most a level may give) from -10 000 to 10 000 m.
 // Every 600 ticks (10 s, at most 150 m at the tire's top speed) the tire is put back where it
-// started, at rest (World::reset_tire, between ticks and outside the timing): on both chains it
+// started, at rest (Simulation::reset_tire, between ticks and outside the timing): on both chains it
 // drives over the same ground, and only the edges far from it differ.
 constexpr std::uint64_t kChainDriveTicks = 600;
 std::unique_ptr<Steppable> chain_world(int points) {
-  auto world = std::make_unique<tire::World>(tire::SolverConfig{}, tire::Vec2{0.0, -9.81});
+  tire::Simulation world(tire::SolverConfig{}, tire::Vec2{0.0, -9.81});
   tire::PropSpec chain;
   chain.shape = tire::PropShape::chain;
   const double first_x = -0.1 * points;
@@ -247,12 +229,12 @@ std::unique_ptr<Steppable> chain_world(int points) {
     const double x = first_x + 0.2 * k;
     chain.points.push_back({x, 0.02 * std::sin(2.0 * std::numbers::pi * x / 10.0)});
   }
-  world->add_prop(chain);
+  world.add_prop(chain);
   tire::TireSpec spec;
   spec.position = {-90.0, 0.6};
   spec.player = true;
-  const tire::TireId id = world->add_tire(spec);
-  return std::make_unique<WorldScene>(std::move(world), [id](tire::World& w) {
+  const tire::TireId id = world.add_tire(spec);
+  return std::make_unique<SimulationScene>(std::move(world), [id](tire::Simulation& w) {
     if (w.tick() > 0 && w.tick() % kChainDriveTicks == 0) w.reset_tire(id);
   });
 }
@@ -268,7 +250,7 @@ std::unique_ptr<Steppable> chain_world(int points) {
 //   angle from the one before), just above the ground: every tire inside every other, by up to
 //   10 cm, and pushed by them.
 // Before every tick (outside the timing) every tire is put back where it started, at rest
-// (World::reset_tire), so each timed tick is the first tick of the scene: the pile never gets to
+// (Simulation::reset_tire), so each timed tick is the first tick of the scene: the pile never gets to
 // spread, nor the grid to fall.
 constexpr int kSpotTires = 1953;
 constexpr int kSpotSegments = 256;
@@ -276,8 +258,8 @@ enum class Placement { grid, one_spot, heap };
 std::unique_ptr<Steppable> spot_world(Placement placement) {
   tire::SolverConfig config;
   config.sleep = false;
-  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
-  world->add_obstacle({{{-10.0, -1.0}, {60.0, 0.0}}});
+  tire::Simulation world(config, tire::Vec2{0.0, -9.81});
+  world.add_obstacle({{{-10.0, -1.0}, {60.0, 0.0}}});
   std::vector<tire::TireId> ids;
   for (int i = 0; i < kSpotTires; ++i) {
     tire::TireSpec spec;
@@ -292,9 +274,9 @@ std::unique_ptr<Steppable> spot_world(Placement placement) {
         break;
       }
     }
-    ids.push_back(world->add_tire(spec));
+    ids.push_back(world.add_tire(spec));
   }
-  return std::make_unique<WorldScene>(std::move(world), [ids](tire::World& w) {
+  return std::make_unique<SimulationScene>(std::move(world), [ids](tire::Simulation& w) {
     if (w.tick() == 0) return;
     for (const tire::TireId id : ids) w.reset_tire(id);
   });
@@ -322,14 +304,14 @@ std::unique_ptr<Steppable> prototype_world(tire::SpokePattern spokes, int subste
   config.method = method;
   config.tunnel_clamp = 1.0;  // the prototype's scene as measured before the default changed
   config.sleep = false;       // the solver's cost: a resting tire would fall asleep
-  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
-  world->add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
-  world->add_obstacle({{{3.0, 0.0}, {4.0, 0.6}}});
+  tire::Simulation world(config, tire::Vec2{0.0, -9.81});
+  world.add_obstacle({{{-50.0, -1.0}, {50.0, 0.0}}});
+  world.add_obstacle({{{3.0, 0.0}, {4.0, 0.6}}});
   tire::TireSpec spec;
   spec.position = {0.0, 0.52};
   spec.spokes = spokes;
-  world->add_tire(spec);
-  return std::make_unique<WorldScene>(std::move(world));
+  world.add_tire(spec);
+  return std::make_unique<SimulationScene>(std::move(world));
 }
 
 // One default tire driven flat out along flat ground with nothing in its way (issue 13's cost
@@ -339,13 +321,13 @@ std::unique_ptr<Steppable> rolling_world(tire::SolverMethod method, int substeps
   config.method = method;
   config.substeps = substeps;
   config.tunnel_clamp = 4.0;  // the speed limit of Gauss–Seidel 8 × 1 at any substep count
-  auto world = std::make_unique<tire::World>(config, tire::Vec2{0.0, -9.81});
-  world->add_obstacle({{{-1.0e6, -1.0}, {1.0e6, 0.0}}});
+  tire::Simulation world(config, tire::Vec2{0.0, -9.81});
+  world.add_obstacle({{{-1.0e6, -1.0}, {1.0e6, 0.0}}});
   tire::TireSpec spec;
   spec.position = {0.0, 0.52};
   spec.player = true;
-  world->add_tire(spec);
-  return std::make_unique<WorldScene>(std::move(world));
+  world.add_tire(spec);
+  return std::make_unique<SimulationScene>(std::move(world));
 }
 
 const Scene kScenes[] = {
@@ -382,11 +364,11 @@ const Scene kScenes[] = {
      [] { return prototype_world(tire::SpokePattern::cross, 4, 1, tire::SolverMethod::global); },
      {}},
     {"bare-tire",
-     "1 default tire on a ground box, stepped by the tire solver alone (no World, no level)",
+     "1 default tire on a ground box, stepped by the tire solver alone (no world, no level)",
      [] { return std::make_unique<BareTireScene>(); },
      {}},
     {"flat-level",
-     "the same tire and ground loaded as a level and stepped by the World",
+     "the same tire and ground loaded as a level and stepped by a Simulation",
      [] { return flat_level(); },
      {}},
     {"pile-1", "1 tire in a walled box", [] { return pile(1); }, {}},
@@ -563,16 +545,16 @@ int bench(const BenchOptions& options) {
                      heap_mib());
       }
     }
-    const tire::Tire& t = world->first_tire();
     const std::size_t tires = world->tire_count();
     const double median = quantile(step_ms, 0.5);
     double mean = 0.0;
     for (const double ms : step_ms) mean += ms / static_cast<double>(step_ms.size());
-    std::cout << scene.name << "," << tires << "," << tires * t.particle_count() << "," << world->contacts()
-              << "," << world->tire_pairs() << "," << world->threads() << "," << t.segments() << ","
-              << world->config().substeps << "," << world->config().iterations << "," << step_ms.size() << ","
-              << median << "," << quantile(step_ms, 0.99) << "," << mean << ","
-              << median * 1000.0 / static_cast<double>(tires) << "," << peak_rss_mib() << ",";
+    std::cout << scene.name << "," << tires << "," << tires * world->first_tire_particles() << ","
+              << world->contacts() << "," << world->tire_pairs() << "," << world->threads() << ","
+              << world->first_tire_segments() << "," << world->config().substeps << ","
+              << world->config().iterations << "," << step_ms.size() << "," << median << ","
+              << quantile(step_ms, 0.99) << "," << mean << "," << median * 1000.0 / static_cast<double>(tires)
+              << "," << peak_rss_mib() << ",";
     // The prototype's figure is for its own scene only.
     if (std::string_view(scene.name).starts_with("prototype"))
       std::cout << kPrototypeUsPerFrame / (median * 1000.0);

@@ -1,9 +1,9 @@
-// tirectl schema: levels/schema.json as the parameter table generates it (tire/io/level_schema.h).
+// tirectl schema: levels/schema.json as the parameter table generates it (tire/io/level_format.h).
 #include <iostream>
 
 #include "commands.h"
 #include "tire/io/file_io.h"
-#include "tire/io/level_schema.h"
+#include "tire/io/level_format.h"
 
 namespace tirectl {
 

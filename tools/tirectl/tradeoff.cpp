@@ -5,7 +5,7 @@
 // (and, when the global method is swept, against the global method at the reference's substeps),
 // then sweeps solver method × substeps × iterations (× tunnel clamp): each setting is run once to
 // measure it (centroid trajectory, peak strain, area error, energy, static deflection) and `repeats`
-// times with nothing but World::step in the timed loop (each tick's median over the repeats,
+// times with nothing but Simulation::step in the timed loop (each tick's median over the repeats,
 // averaged over the ticks). Writes DIR/tradeoff.csv, DIR/tradeoff.svg (error against cost, log–log,
 // one panel per scenario and resolution, one Pareto front per method) and DIR/summary.txt (reference
 // checks, fronts, recommendations and the numbers for the two published claims, per method); the

@@ -136,7 +136,7 @@ std::string render_plot(const std::vector<Row>& rows, const std::vector<Tradeoff
   spec.subtitle =
       "error = RMS distance of the tire's centroid from a converged reference run of the same scene and "
       "tire\n(Gauss-Seidel, its substeps x iterations in each title; the global method converges to it too)\n"
-      "cost = µs of World::step per 1/60 s tick (each tick's median over the repeats); tire material "
+      "cost = µs of Simulation::step per 1/60 s tick (each tick's median over the repeats); tire material "
       "damping " +
       fmt(o.material_damping, 3) + " s; one row per scene, one column per tire resolution";
   spec.x_label = "cost (µs per step)";

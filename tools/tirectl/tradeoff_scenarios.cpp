@@ -35,12 +35,12 @@ tire::TireSpec placed(const tire::TireSpec& base, tire::Vec2 position) {
   return s;
 }
 
-void add_ground(tire::World& world) { world.add_obstacle(box({-50.0, -1.0}, {50.0, 0.0})); }
+void add_ground(tire::Simulation& world) { world.add_obstacle(box({-50.0, -1.0}, {50.0, 0.0})); }
 
 // Mean of the last half second is taken by the caller; this reads one tick.
-double rest_deflection(const tire::World& world) {
-  const tire::Tire& t = world.tires().front();
-  return rest_height(static_cast<int>(t.n)) - t.centroid().y;
+double rest_deflection(const tire::Simulation& world) {
+  const tire::TireView t = *world.tire_at(0);
+  return rest_height(static_cast<int>(t.segments)) - t.centroid.y;
 }
 
 // Height of the undeformed tire standing on its flat bottom segment: a flat top segment too for
@@ -50,14 +50,14 @@ double built_height(int segments) {
 }
 
 // The tire's height as built less the height of the box's bottom face above the ground.
-double crush_deflection(const tire::World& world) {
-  const tire::Tire& t = world.tires().front();
-  const tire::Pose pose = world.rigid().current_pose(0);  // the box's centre
-  return built_height(static_cast<int>(t.n)) - (pose.position.y - 0.5 * kCrushBoxSize.y);
+double crush_deflection(const tire::Simulation& world) {
+  const tire::TireView t = *world.tire_at(0);
+  const tire::Pose pose = world.prop(0)->state.pose;  // the box's centre
+  return built_height(static_cast<int>(t.segments)) - (pose.position.y - 0.5 * kCrushBoxSize.y);
 }
 
 TradeoffScenario scenario(std::string name, std::string what, int ticks,
-                          std::function<void(tire::World&, const tire::TireSpec&)> populate) {
+                          std::function<void(tire::Simulation&, const tire::TireSpec&)> populate) {
   TradeoffScenario s;
   s.name = std::move(name);
   s.what = std::move(what);
@@ -72,7 +72,7 @@ std::vector<TradeoffScenario> make_scenarios() {
 
   {
     TradeoffScenario s = scenario("rest", "tire set down on flat ground, settles under its own weight (3 s)",
-                                  180, [](tire::World& world, const tire::TireSpec& base) {
+                                  180, [](tire::Simulation& world, const tire::TireSpec& base) {
                                     add_ground(world);
                                     world.add_tire(placed(base, {0.0, rest_height(base.segments)}));
                                   });
@@ -85,7 +85,7 @@ std::vector<TradeoffScenario> make_scenarios() {
   {
     TradeoffScenario s = scenario(
         "rest-soft", "as rest, with every compliance 100 times the default (a 100 times softer tire) (3 s)",
-        180, [](tire::World& world, const tire::TireSpec& base) {
+        180, [](tire::Simulation& world, const tire::TireSpec& base) {
           add_ground(world);
           tire::TireSpec t = placed(base, {0.0, rest_height(base.segments)});
           t.compliance.outer *= kSoftFactor;
@@ -102,7 +102,7 @@ std::vector<TradeoffScenario> make_scenarios() {
   }
   {
     TradeoffScenario s = scenario("drop", "tread released 1.5 m above flat ground, falls and bounces (3 s)",
-                                  180, [](tire::World& world, const tire::TireSpec& base) {
+                                  180, [](tire::Simulation& world, const tire::TireSpec& base) {
                                     add_ground(world);
                                     world.add_tire(placed(base, {0.0, 1.5 + rest_height(base.segments)}));
                                   });
@@ -113,7 +113,7 @@ std::vector<TradeoffScenario> make_scenarios() {
     const double slope = kSlopeDegrees * std::numbers::pi / 180.0;
     TradeoffScenario s = scenario(
         "slope", "tire released at rest on a 20 degree slope (a rotated static Box2D box), rolls down (2 s)",
-        120, [slope](tire::World& world, const tire::TireSpec& base) {
+        120, [slope](tire::Simulation& world, const tire::TireSpec& base) {
           const tire::Vec2 down{std::cos(slope), -std::sin(slope)};
           const tire::Vec2 normal{std::sin(slope), std::cos(slope)};
           tire::PropSpec p;
@@ -134,7 +134,7 @@ std::vector<TradeoffScenario> make_scenarios() {
   {
     TradeoffScenario s = scenario(
         "crush", "a 300 kg Box2D box dropped 2 cm onto a resting tire, in a slot that keeps it level (3 s)",
-        180, [](tire::World& world, const tire::TireSpec& base) {
+        180, [](tire::Simulation& world, const tire::TireSpec& base) {
           add_ground(world);
           // A slot a little wider than the box keeps it from tipping off the round tire.
           const double gap = 0.5 * kCrushBoxSize.x + kCrushClearance;
@@ -162,7 +162,7 @@ std::vector<TradeoffScenario> make_scenarios() {
   {
     TradeoffScenario s =
         scenario("impact", "tire thrown at 20 m/s into a box wall 5.5 m away, bounces back and lands (1.5 s)",
-                 90, [](tire::World& world, const tire::TireSpec& base) {
+                 90, [](tire::Simulation& world, const tire::TireSpec& base) {
                    add_ground(world);
                    world.add_obstacle(box({6.0, 0.0}, {7.0, 4.0}));
                    tire::TireSpec t = placed(base, {0.0, 1.2});
@@ -183,14 +183,14 @@ const std::vector<TradeoffScenario>& tradeoff_scenarios() {
   return list;
 }
 
-tire::World build_world(const TradeoffScenario& scenario, const SolverSettings& settings) {
+tire::Simulation build_world(const TradeoffScenario& scenario, const SolverSettings& settings) {
   tire::SolverConfig config;
   config.dt = kDt;
   config.substeps = settings.substeps;
   config.iterations = settings.iterations;
   config.tunnel_clamp = settings.tunnel_clamp;
   config.method = settings.method;
-  tire::World world(config, {0.0, -kGravity});
+  tire::Simulation world(config, {0.0, -kGravity});
   tire::TireSpec base;
   base.segments = settings.segments;
   base.material_damping = settings.material_damping;
@@ -198,31 +198,26 @@ tire::World build_world(const TradeoffScenario& scenario, const SolverSettings& 
   return world;
 }
 
-double mechanical_energy(const tire::World& world, double datum_y) {
+double mechanical_energy(const tire::Simulation& world, double datum_y) {
+  // The energy watch's kinetic and gravitational energy (zero at the origin), its potential moved
+  // to the datum: less the weight of everything it counts times the datum's height.
+  const tire::EnergyView e = world.energy();
   const double g = -world.gravity().y;
-  double e = 0.0;
-  for (const tire::Tire& t : world.tires()) {
-    const double m = t.particle_mass();
-    for (std::size_t i = 0; i < t.particles.size(); ++i)
-      e += m * (0.5 * tire::length_squared(t.particles.v[i]) + g * (t.particles.x[i].y - datum_y));
+  double mass = 0.0;
+  for (std::size_t i = 0; const std::optional<tire::TireView> t = world.tire_at(i); ++i) mass += t->mass;
+  for (tire::PropId id = 0; id < world.prop_count(); ++id) {
+    const tire::PropView p = *world.prop(id);
+    if (p.alive && p.type == tire::PropType::dynamic_body) mass += p.state.mass;
   }
-  const tire::RigidWorld& rigid = world.rigid();
-  for (std::uint32_t i = 0; i < rigid.props().size(); ++i) {
-    const tire::Prop& p = rigid.props()[i];
-    if (!p.alive || p.spec.type != tire::PropType::dynamic_body) continue;
-    const tire::PropState s = rigid.prop_state(i);
-    const double w = s.angular_velocity;
-    e += 0.5 * s.mass * tire::length_squared(s.velocity) + 0.5 * s.inertia * w * w +
-         s.mass * g * (s.center.y - datum_y);
-  }
-  return e;
+  return e.kinetic + e.gravitational - mass * g * datum_y;
 }
 
 RunMeasure measure_run(const TradeoffScenario& scenario, const SolverSettings& settings) {
-  tire::World world = build_world(scenario, settings);
+  tire::Simulation world = build_world(scenario, settings);
+  const tire::TireId tire = world.tires().front();
   RunMeasure m;
   m.centroid.reserve(static_cast<std::size_t>(scenario.ticks) + 1);
-  m.centroid.push_back(world.tires().front().centroid());
+  m.centroid.push_back(world.tire(tire)->centroid);
   m.energy_start = mechanical_energy(world, scenario.datum_y);
   const int tail = std::min(scenario.ticks, 30);  // the last half second
   double deflection_sum = 0.0;
@@ -232,15 +227,11 @@ RunMeasure measure_run(const TradeoffScenario& scenario, const SolverSettings& s
     const auto start = std::chrono::steady_clock::now();
     world.step(input);
     stepping += std::chrono::steady_clock::now() - start;
-    m.resets += static_cast<int>(world.warnings().size());
-    world.warnings().clear();
-    const tire::Tire& t = world.tires().front();
-    m.centroid.push_back(t.centroid());
-    for (const tire::DistanceConstraint& c : t.distance.constraints()) {
-      const double len = tire::length(t.particles.x[c.b] - t.particles.x[c.a]);
-      m.peak_strain = std::max(m.peak_strain, std::abs(len / c.rest_length - 1.0));
-    }
-    m.area_error = std::max(m.area_error, std::abs(t.area_ratio() - t.area_constraint.pressure));
+    m.resets += static_cast<int>(world.take_warnings().size());
+    const tire::TireView t = *world.tire(tire);
+    m.centroid.push_back(t.centroid);
+    m.peak_strain = std::max(m.peak_strain, *world.tire_strain(tire));
+    m.area_error = std::max(m.area_error, std::abs(t.area_ratio - t.pressure));
     if (scenario.deflection && tick >= scenario.ticks - tail) deflection_sum += scenario.deflection(world);
   }
   m.energy_end = mechanical_energy(world, scenario.datum_y);
@@ -270,7 +261,7 @@ double clock_cost_us() {
 
 std::vector<double> time_run(const TradeoffScenario& scenario, const SolverSettings& settings) {
   const double overhead = clock_cost_us();
-  tire::World world = build_world(scenario, settings);
+  tire::Simulation world = build_world(scenario, settings);
   const tire::TickInput input{};
   std::vector<double> us(static_cast<std::size_t>(scenario.ticks));
   for (double& u : us) {

@@ -1,4 +1,4 @@
-// The scenes `tirectl tradeoff` measures, built in code from the engine's own types (World,
+// The scenes `tirectl tradeoff` measures, built in code through the engine's façade (Simulation,
 // TireSpec, PropSpec, Obstacle), and one measured run of a scene: what the tire did, tick by tick,
 // with the peak strain, area error and energy that the error columns are made of.
 #pragma once
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tire/world/world.h"
+#include "tire/engine.h"
 
 namespace tirectl {
 
@@ -29,12 +29,12 @@ struct TradeoffScenario {
   int ticks = 180;   // at dt = 1/60
   // Builds the scene into an empty world (gravity and solver already set); `base` is the tire to
   // use (TireSpec{} with the run's segments and material damping), placed by the scene.
-  std::function<void(tire::World&, const tire::TireSpec& base)> populate;
+  std::function<void(tire::Simulation&, const tire::TireSpec& base)> populate;
   // Height (m) the scene's potential energy is measured from: its lowest ground.
   double datum_y = 0.0;
   // For static scenes: how far the load has pushed the tire down (m), read from the world at the
   // end, and the load (N). Empty for dynamic scenes.
-  std::function<double(const tire::World&)> deflection;
+  std::function<double(const tire::Simulation&)> deflection;
   double load = 0.0;
   // Whether the scene has dynamic Box2D props. Box2D counts its TOI and GJK calls in unguarded
   // globals, so runs of such scenes are never measured at the same time.
@@ -59,19 +59,19 @@ struct RunMeasure {
   double energy_end = 0.0;
   double deflection = 0.0;   // averaged over the last half second; NaN for dynamic scenes
   int resets = 0;            // the engine's divergence guard fired this often
-  double us_per_step = 0.0;  // this run's mean cost of World::step alone (one run, informative)
+  double us_per_step = 0.0;  // this run's mean cost of Simulation::step alone (one run, informative)
 };
 
-tire::World build_world(const TradeoffScenario& scenario, const SolverSettings& settings);
+tire::Simulation build_world(const TradeoffScenario& scenario, const SolverSettings& settings);
 
 // Steps the scenario and measures it after every tick.
 RunMeasure measure_run(const TradeoffScenario& scenario, const SolverSettings& settings);
 
-// Steps the scenario, timing each World::step alone (steady clock, less the clock's own cost):
+// Steps the scenario, timing each Simulation::step alone (steady clock, less the clock's own cost):
 // µs of every tick, in order.
 std::vector<double> time_run(const TradeoffScenario& scenario, const SolverSettings& settings);
 
 // Kinetic + gravitational energy (J) of the tires and the dynamic props, potential from datum_y.
-double mechanical_energy(const tire::World& world, double datum_y);
+double mechanical_energy(const tire::Simulation& world, double datum_y);
 
 }  // namespace tirectl

@@ -25,7 +25,6 @@
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
 #include "tire/world/debug_draw.h"
-#include "tire/world/tick_input.h"
 #include "tire/world/views.h"
 
 namespace tire {
@@ -54,6 +53,10 @@ struct SolverReport {
     std::uint64_t dropped = 0;
   };
   std::vector<Budget> budgets_reached;
+  // The last tick's contacts: particles touching a surface or another tire, summed over the tires,
+  // and the broad phase's candidate pairs of tires.
+  std::size_t touching_particles = 0;
+  std::size_t tire_pairs = 0;
 };
 
 struct ReplayCheck {
@@ -129,6 +132,9 @@ class Simulation {
   EnergyView energy() const;
   // The deepest a tread particle of one tire is inside another tire, asleep or not (views.h).
   TireOverlap deepest_overlap() const;
+  // The most any of a tire's distance constraints (tread, rim, spokes) is stretched or squeezed
+  // now: max |length / rest length − 1|; nullopt for no such tire.
+  std::optional<double> tire_strain(TireId id) const;
   SolverReport solver_report() const;
   // The last tick's substeps alone (SolverReport::tick_substeps), cheap enough to read every tick.
   int tick_substeps() const;
@@ -143,6 +149,8 @@ class Simulation {
   // in code: an empty world with its solver settings and gravity).
   void apply(const ReplayInput& input, TickInput& held);
   bool apply_impulse(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
+  // Puts a tire back where it was added, at rest and in the shape it was built with (a respawn).
+  bool reset_tire(TireId id);
   // A row of the parameter table that may change while the world runs (levels/README.md):
   // "tires.<key>" on every tire, "player.<key>" on the player, "solver.<key>". False for a key not
   // in the table or a value its row does not accept.
@@ -165,6 +173,11 @@ class Simulation {
   void wake_all();
   // Threads for scenes of many tires; the results are the same for any count.
   void set_threads(unsigned threads);
+  // The threads a step of the current scene uses: one while it has too few tires to share them.
+  unsigned threads() const;
+  // The order of the step's phases over the tires (solver_config.h): the same bits either way;
+  // what `tirectl bench --schedule` compares.
+  void set_schedule(StepSchedule schedule);
 
   // Walks the tires, props and obstacles and calls `draw` back with what its flags ask for.
   void debug_draw(DebugDraw& draw) const;
@@ -173,6 +186,29 @@ class Simulation {
   friend struct SimulationInternals;
   std::shared_ptr<const Level> level_;  // what a restart rebuilds
   std::unique_ptr<LevelSession> session_;
+};
+
+// One tire on a ground box stepped by the tire's substep alone, with no world around it: no level,
+// no divergence guard, no Box2D stepping, no refinement of the tick, no sleeping, no threads. The
+// floor under a tick's cost, which `tirectl bench`'s bare-tire scene times; not for playing.
+class BareTire {
+ public:
+  BareTire(const SolverConfig& config, Vec2 gravity, const TireSpec& spec, const Obstacle& ground);
+  ~BareTire();
+  BareTire(BareTire&&) noexcept;
+  BareTire& operator=(BareTire&&) noexcept;
+
+  // One fixed tick of config().dt: the tire's substeps, steered and jumping as `input` says.
+  void step(const TickInput& input = {});
+  const SolverConfig& config() const;
+  std::uint32_t segments() const;
+  std::size_t particle_count() const;
+  std::size_t touching_particles() const;  // after the last tick, as SolverReport counts them
+  bool asleep() const;
+
+ private:
+  struct Parts;
+  std::unique_ptr<Parts> parts_;
 };
 
 // Runs a replay file (docs/formats.md) headless against the level it names and checks every

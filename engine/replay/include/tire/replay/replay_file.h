@@ -22,7 +22,7 @@
 
 #include "tire/math/geometry.h"
 #include "tire/script/script_status.h"
-#include "tire/world/tick_input.h"
+#include "tire/world/views.h"
 
 namespace tire {
 

@@ -7,6 +7,8 @@
 // (`set` inputs), World::set_parameter (refuses a value outside the range), the game's tuning panel
 // (its keys; its sliders stay inside these ranges) and levels/schema.json (generated from this
 // table: `tirectl schema --write levels/schema.json`; a test fails while they differ).
+// Programs outside the engine (the game, tirectl) read its rows and the material presets through
+// the installed tire/io/level_format.h (tunable_parameters(), material_presets()), made from them.
 #pragma once
 
 #include <array>

@@ -2,6 +2,8 @@
 // block; the rest are engine defaults that a level may also override.
 #pragma once
 
+#include <cstdint>
+
 namespace tire {
 
 // How a substep solves each tire's constraints.
@@ -18,6 +20,19 @@ constexpr const char* method_name(SolverMethod m) {
   return m == SolverMethod::global ? "global" : "gauss-seidel";
 }
 constexpr SolverMethod kSolverMethods[] = {SolverMethod::gauss_seidel, SolverMethod::global};
+
+// How a world's step orders the phases of a substep over the tires. Both run the same per-tire
+// phases in the same order with the same inputs, so they give the same bits (tests/
+// test_step_schedule.cpp); only the number of sweeps over the tires' memory differs.
+enum class StepSchedule : std::uint8_t {
+  // Small Steps' Algorithm 1 as written: each phase (predict, solve positions, update velocities)
+  // a sweep over every tire of its own.
+  plain,
+  // The default. The same phases, with the ones that follow each other on one tire and owe nothing
+  // to the rest of the world in between run in one sweep: a substep's prediction with its first
+  // iteration, and, when no prop takes impulses, the previous substep's velocity pass with them.
+  fused,
+};
 
 struct SolverConfig {
   double dt = 1.0 / 60.0;  // fixed tick (s)

@@ -1,5 +1,6 @@
 // What a world shows of its tires and props between ticks: read-only views, copied out or pointing
-// into the world's own arrays (valid until the next step, add or remove).
+// into the world's own arrays (valid until the next step, add or remove); and what the player gives
+// it each tick.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,16 @@
 #include "tire/tire/tire_spec.h"
 
 namespace tire {
+
+// How near a tread particle a mouse press must be to grab its tire (m).
+inline constexpr double kGrabRadius = 0.3;
+
+// The player's input for one tick.
+struct TickInput {
+  double steer = 0.0;  // [-1, 1]
+  bool jump = false;
+  double inflate = 0.0;  // [-1, 1]: +1 inflates the player at its inflate_rate, −1 deflates it
+};
 
 // A tread particle pulled towards a target every substep (a mouse drag: Simulation::grab).
 struct TireGrab {

@@ -25,26 +25,12 @@
 #include "tire/tire/tire_neighbours.h"
 #include "tire/tire/vehicle_joints.h"
 #include "tire/world/sleep_islands.h"
-#include "tire/world/tick_input.h"
 #include "tire/world/views.h"
 
 namespace tire {
 
 class DebugDraw;
 struct SubstepContext;  // tire/tire/tire_solver.h
-
-// How World::step orders the phases of a substep over the tires. Both run the same per-tire
-// phases in the same order with the same inputs, so they give the same bits (tests/
-// test_step_schedule.cpp); only the number of sweeps over the tires' memory differs.
-enum class StepSchedule : std::uint8_t {
-  // Small Steps' Algorithm 1 as written: each phase (predict, solve positions, update velocities)
-  // a sweep over every tire of its own.
-  plain,
-  // The default. The same phases, with the ones that follow each other on one tire and owe nothing
-  // to the rest of the world in between run in one sweep: a substep's prediction with its first
-  // iteration, and, when no prop takes impulses, the previous substep's velocity pass with them.
-  fused,
-};
 
 class World {
  public:
