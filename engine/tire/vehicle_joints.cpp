@@ -188,6 +188,20 @@ std::uint32_t VehicleJoints::add(std::uint32_t chassis, std::span<const std::uin
   return static_cast<std::uint32_t>(vehicles_.size() - 1);
 }
 
+void VehicleJoints::hash_into(StateHash& h) const {
+  for (const Vehicle& v : vehicles_) {
+    h.add(v.chassis);
+    h.add(v.control.throttle);
+    h.add(v.control.brake);
+    h.add(v.control.lean);
+    for (const Wheel& w : v.wheels) {
+      h.add(w.tire);
+      h.add(w.hub_force);
+      h.add(w.torque);
+    }
+  }
+}
+
 void VehicleJoints::tire_removed(std::uint32_t removed) {
   for (Vehicle& v : vehicles_)
     for (Wheel& w : v.wheels)

@@ -370,6 +370,12 @@ bool World::set_vehicle_control(std::uint32_t v, const VehicleControl& control) 
   return true;
 }
 
+bool World::set_player_vehicle(std::uint32_t v) {
+  if (v >= vehicles_.count()) return false;
+  player_vehicle_ = v;
+  return true;
+}
+
 bool World::remove_tire(TireId id) {
   const auto it = std::find_if(tires_.begin(), tires_.end(), [id](const Tire& t) { return t.id == id; });
   if (it == tires_.end() || it->wheel >= 0) return false;  // a wheel stays on its vehicle
@@ -454,7 +460,13 @@ void World::step(const TickInput& input) {
   TIRE_ASSERT(config_.substeps >= 1 && config_.iterations >= 1, "fewer than one substep or iteration a tick");
   TIRE_ASSERT(config_.dt > 0.0 && std::isfinite(config_.dt), "the tick is not a positive length of time");
   std::optional<std::uint32_t> held;  // the player while a key is held: its island stays awake
-  if (player_) {
+  if (player_vehicle_) {
+    VehicleControl c;
+    c.throttle = std::clamp(input.steer, -1.0, 1.0);
+    c.lean = std::clamp(input.lean, -1.0, 1.0);
+    c.brake = input.brake;
+    vehicles_.set_control(*player_vehicle_, c);
+  } else if (player_) {
     if (Tire* p = find_tire(*player_)) {
       p->control.steer = input.steer;
       p->control.jump = input.jump;
@@ -920,6 +932,7 @@ std::uint64_t World::state_hash() const {
 
 void World::hash_into(StateHash& h) const {
   h.add(tick_);
+  vehicles_.hash_into(h);  // nothing without vehicles: the hashes of levels without them stay
   for (const Tire& t : tires_) {
     h.add(t.id);
     h.add_bytes(t.particles.x.data(), t.particles.x.size() * sizeof(Vec2));

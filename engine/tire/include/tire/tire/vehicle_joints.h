@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "tire/math/geometry.h"
+#include "tire/math/state_hash.h"
 #include "tire/rigid/bodies.h"
 #include "tire/tire/global_solver.h"
 #include "tire/tire/tire_spec.h"
@@ -142,6 +143,8 @@ class VehicleJoints {
   // (N, world) and the motor's or brake's torque on it (N·m).
   Vec2 axle_force(std::uint32_t vehicle, std::size_t w) const;
   double wheel_torque(std::uint32_t vehicle, std::size_t w) const;
+  // The joints' state that the next step reads (their last forces, the controls).
+  void hash_into(StateHash& h) const;
   // Energy the motors and the lean gave the world since last taken (J), for World::energy_in.
   double take_work() {
     const double w = work_;

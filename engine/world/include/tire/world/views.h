@@ -20,9 +20,11 @@ inline constexpr double kGrabRadius = 0.3;
 
 // The player's input for one tick.
 struct TickInput {
-  double steer = 0.0;  // [-1, 1]
+  double steer = 0.0;  // [-1, 1]; a player vehicle's throttle (+1 full forward, −1 full reverse)
   bool jump = false;
   double inflate = 0.0;  // [-1, 1]: +1 inflates the player at its inflate_rate, −1 deflates it
+  double lean = 0.0;     // [-1, 1]: a player vehicle's lean, +1 counter-clockwise (nose up going right)
+  bool brake = false;    // a player vehicle's brakes, held
 };
 
 // A tread particle pulled towards a target every substep (a mouse drag: Simulation::grab).

@@ -52,6 +52,10 @@ class World {
   // What the driver asks of vehicle v from the next tick on; false for no such vehicle.
   bool set_vehicle_control(std::uint32_t v, const VehicleControl& control);
   const VehicleJoints& vehicles() const { return vehicles_; }
+  // The vehicle step()'s input drives (its steer the throttle, its lean and brake), if any: a level
+  // whose player is a vehicle. False for no such vehicle.
+  bool set_player_vehicle(std::uint32_t v);
+  std::optional<std::uint32_t> player_vehicle() const { return player_vehicle_; }
 
   // The run's budgets (run_budgets.h): what spawn_tire, spawn_prop and the level session may add.
   void set_budgets(const RunBudgets& budgets) { budgets_ = budgets; }
@@ -235,6 +239,7 @@ class World {
   std::uint64_t seen_removals_ = 0;  // RigidWorld::removals() when wake_for_props last looked
   void reserve_global_solvers();
   std::optional<TireId> player_;
+  std::optional<std::uint32_t> player_vehicle_;
   TireId next_id_ = 0;
   std::uint64_t tick_ = 0;
   std::vector<std::string> warnings_;
