@@ -221,19 +221,24 @@ TEST_CASE("vehicles: a car dropped and flipped gains no energy", "[unit][vehicle
 TEST_CASE("vehicles: driven flat out over bumps, a hub stays on its axle", "[unit][vehicles]") {
   World world = flat_ground(awake());
   for (int k = 0; k < 12; ++k) world.add_obstacle({{{4.0 + 3.0 * k, 0.0}, {4.4 + 3.0 * k, 0.08}}});
-  const VehicleSpec spec = car({0.0, 0.7});
+  // A 96 kg chassis: the 48 kg one, flat out, lifts its nose over the bumps and flips onto its roof,
+  // as a strong motor under a light car does.
+  VehicleSpec spec = car({0.0, 0.7});
+  spec.chassis.density = 200;
   const std::uint32_t v = *world.add_vehicle(spec);
   VehicleControl full;
   full.throttle = 1.0;
   world.set_vehicle_control(v, full);
-  double worst = 0.0;
+  double worst = 0.0, tilt = 0.0;
   for (int tick = 0; tick < 360; ++tick) {
     world.step({});
     for (std::size_t w = 0; w < 2; ++w) worst = std::max(worst, hub_offset(world, v, w, spec));
+    tilt = std::max(tilt, std::abs(world.rigid().prop_state(world.vehicles().chassis(v)).pose.angle));
   }
   const PropState chassis = world.rigid().prop_state(world.vehicles().chassis(v));
-  INFO("at x = " << chassis.center.x << " m, " << chassis.velocity.x << " m/s; hub off its axle by at most "
-                 << worst * 1e3 << " mm");
-  CHECK(chassis.center.x > 20.0);
+  INFO("at x = " << chassis.center.x << " m, " << chassis.velocity.x << " m/s, tilted at most " << tilt
+                 << " rad; hub off its axle by at most " << worst * 1e3 << " mm");
+  CHECK(chassis.center.x > 15.0);  // over five bumps
+  CHECK(tilt < 1.0);
   CHECK(worst < 0.01);
 }

@@ -747,8 +747,26 @@ std::size_t GlobalSolver::dof(std::uint32_t particle, std::uint32_t segments) {
   return dof_of(particle, segments);
 }
 
+bool GlobalSolver::prepare_solve_response() {
+  if (!bodies_.empty()) return false;
+  response_from_solve_ = true;
+  const std::size_t size = k_.size();
+  std::size_t m = 0;
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    if (rows_[r].live) response_live_[m++] = r;
+  response_rows_ = m;
+  auto& s = response_s_;
+  for (std::size_t r = 0; r < m; ++r) {
+    for (std::size_t q = 0; q <= r; ++q)
+      s[r][q] = dot_n(y_.data() + response_live_[r] * stride_, y_.data() + response_live_[q] * stride_, size);
+    s[r][r] += rows_[response_live_[r]].alpha_tilde;
+  }
+  return cholesky(s, m);
+}
+
 bool GlobalSolver::prepare_response(bool hold_fixed_friction) {
   if (!bodies_.empty()) return false;
+  response_from_solve_ = false;
   const std::uint32_t n = static_cast<std::uint32_t>(k_.size() / CyclicBlockCholesky::kBlock);
   const std::size_t size = k_.size();
   // K₀: the base K (mass and links), the normals of the contacts held, and the static frictions
@@ -785,26 +803,37 @@ bool GlobalSolver::prepare_response(bool hold_fixed_friction) {
   return cholesky(s, m);
 }
 
-void GlobalSolver::respond(double* r) const {
-  const std::size_t size = k0_.size();
+void GlobalSolver::respond(double* const* rs, std::size_t count) const {
+  const CyclicBlockCholesky& k = response_from_solve_ ? k_ : k0_;
+  const std::size_t size = k.size();
   const std::size_t m = response_rows_;
-  // u = L₀⁻¹ r, from the first block after block 0 where r is not zero (a contact's load is at
+  const auto column = [&](std::size_t q) {  // Y's column q: L⁻¹ g of the q-th live row
+    return response_from_solve_ ? y_.data() + response_live_[q] * stride_ : y0_.data() + q * stride_;
+  };
+  // u = L₀⁻¹ r, from the first block after block 0 where a load is not zero (a contact's load is at
   // one to three particles: the sweep skips the blocks before it, which stay zero).
   constexpr std::size_t B = CyclicBlockCholesky::kBlock;
-  const std::size_t blocks = k0_.blocks();
-  std::size_t first = 1;
-  while (first < blocks && r[B * first] == 0.0 && r[B * first + 1] == 0.0 && r[B * first + 2] == 0.0 &&
-         r[B * first + 3] == 0.0)
-    ++first;
-  k0_.forward(&r, 1, first);
-  double z[kBaseRows] = {};
-  for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(y0_.data() + q * stride_, r, size);
-  cholesky_solve(response_s_, m, z);
-  for (std::size_t q = 0; q < m; ++q) {
-    const double* y = y0_.data() + q * stride_;
-    for (std::size_t k = 0; k < size; ++k) r[k] += z[q] * y[k];
+  const std::size_t blocks = k.blocks();
+  std::size_t first = blocks;
+  for (std::size_t v = 0; v < count; ++v) {
+    const double* r = rs[v];
+    std::size_t f = 1;
+    while (f < first && r[B * f] == 0.0 && r[B * f + 1] == 0.0 && r[B * f + 2] == 0.0 && r[B * f + 3] == 0.0)
+      ++f;
+    first = std::min(first, f);
   }
-  k0_.backward(r);
+  k.forward(rs, count, first);
+  for (std::size_t v = 0; v < count; ++v) {
+    double* r = rs[v];
+    double z[kMaxRows] = {};
+    for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(column(q), r, size);
+    cholesky_solve(response_s_, m, z);
+    for (std::size_t q = 0; q < m; ++q) {
+      const double* y = column(q);
+      for (std::size_t i = 0; i < size; ++i) r[i] += z[q] * y[i];
+    }
+  }
+  k.backward(rs, count);
 }
 
 double GlobalSolver::largest_turn(const Tire& t, const double* dx) const {

@@ -271,7 +271,7 @@ void update_velocities(Tire& t, const SubstepContext& ctx) {
   RigidMotion motion = t.rigid_motion();
   if (ctx.config->damping > 0.0) damp_deviation(t, motion, ctx.config->damping, ctx.h);
   apply_rolling_resistance(t, motion, ctx.h);
-  cap_horizontal_speed(t, motion);
+  if (t.wheel < 0) cap_horizontal_speed(t, motion);  // a wheel's speed is its vehicle's motor's
 }
 
 }  // namespace

@@ -406,6 +406,9 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       row.jc[2] = -1.0;
       row.lambda = w.torque * h2;
       turn_gradient(t.particles, tf, n, w.gradient[motor].data());
+      // At its bound since the last substep and still short of its speed (−C, the way its force
+      // would go, the way it already pushes): it stays there, Δλ = 0, and needs no response.
+      row.fixed = std::abs(row.lambda) >= row.bound * (1.0 - 1e-9) && -row.c * row.lambda > 0.0;
     } else {
       w.torque = 0.0;
     }
@@ -418,15 +421,17 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
     const Tire& t = tires[w.tire];
     const std::size_t size = CyclicBlockCholesky::kBlock * t.n;
     GlobalSolver& s = solver(w.solver);
-    const bool exact = s.prepare_response(true);
+    const bool exact = s.prepare_solve_response();
     const RigidMotion motion = exact ? RigidMotion{} : t.rigid_motion();
+    double* loads[kRows];
+    std::size_t count = 0;
     for (std::size_t i = 0; i < m; ++i) {
-      if (rows[i].wheel != k) continue;
+      if (rows[i].wheel != k || rows[i].fixed) continue;
       std::vector<double>& out = w.response[rows[i].kind];
       const std::vector<double>& g = w.gradient[rows[i].kind];
       std::copy(g.begin(), g.begin() + static_cast<std::ptrdiff_t>(size), out.begin());
       if (exact) {
-        s.respond(out.data());
+        loads[count++] = out.data();  // answered together below
       } else {
         // A wheel whose system holds a free prop has no symmetric response: the wheel taken as a
         // rigid body instead (its mass and inertia about the hub).
@@ -448,15 +453,17 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
         }
       }
     }
+    if (count > 0) s.respond(loads, count);
+    // J_i K̂⁻¹ J_jᵀ, symmetric (K̂ is): each pair once; a row held at its bound is not solved for.
     for (std::size_t i = 0; i < m; ++i) {
-      if (rows[i].wheel != k) continue;
+      if (rows[i].wheel != k || rows[i].fixed) continue;
       const std::vector<double>& gi = w.gradient[rows[i].kind];
-      for (std::size_t j = 0; j < m; ++j) {
-        if (rows[j].wheel != k) continue;
+      for (std::size_t j = 0; j <= i; ++j) {
+        if (rows[j].wheel != k || rows[j].fixed) continue;
         const std::vector<double>& wj = w.response[rows[j].kind];
         double s2 = 0.0;
         for (std::size_t q = 0; q < size; ++q) s2 += gi[q] * wj[q];
-        a[i][j] = s2;
+        a[i][j] = a[j][i] = s2;
       }
     }
   }
@@ -517,6 +524,7 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
   Vec2 impulses[kMaxWheels];
   double angular = 0.0;
   for (std::size_t i = 0; i < m; ++i) {
+    if (delta[i] == 0.0) continue;  // a row held at its bound, whose response was not needed
     Wheel& w = v.wheels[rows[i].wheel];
     const std::vector<double>& resp = w.response[rows[i].kind];
     for (std::size_t d = 0; d < w.load.size(); ++d) w.load[d] += resp[d] * delta[i];

@@ -607,9 +607,14 @@ void World::update_refinement() {
 void World::find_tire_pairs() {
   tire_pairs_.clear();
   if (tires_.size() < 2) return;  // a lone tire has no pairs
+  // Two wheels of one vehicle hang apart on its axles: never a pair (their broad phase may overlap).
+  const auto same_vehicle = [&](const TirePair& p) {
+    return tires_[p.a].chassis >= 0 && tires_[p.a].chassis == tires_[p.b].chassis;
+  };
   for (;;) {
     pair_finder_.find(tires_, sleep_.awake(), config_.dt, length(gravity_),
                       static_cast<std::uint32_t>(std::max(1, config_.tire_neighbours)), tire_pairs_);
+    if (vehicles_.count() > 0) std::erase_if(tire_pairs_, same_vehicle);
     if (sleep_.asleep_count() == 0) return;
     // An awake tire that may reach a sleeping one this tick wakes its island, whose tires then
     // begin their tick and join the broad phase (and may reach another island: again).

@@ -201,16 +201,18 @@ void CyclicBlockCholesky::forward(double* const* ys, std::size_t count, std::siz
   }
 }
 
-void CyclicBlockCholesky::backward(double* x) const {
+void CyclicBlockCholesky::backward(double* const* xs, std::size_t count) const {
+  TIRE_ASSERT(count <= kMaxRightHandSides, "too many right-hand sides for one backward solve");
+  // Block by block, every vector at once, each with the arithmetic of backward(x) alone.
   const std::size_t p = blocks_;
-  const double* x0 = x;
-  multiply(x, diag_[0]);  // L_00⁻ᵀ x_0
-  for (std::size_t j = p - 1; j >= 1; --j) {
-    double* xj = x + B * j;
-    if (j + 1 < p) subtract_transpose_product(xj, couple_[j], xj + B);
-    subtract_transpose_product(xj, border_[j], x0);
-    multiply(xj, diag_[j]);
-  }
+  for (std::size_t v = 0; v < count; ++v) multiply(xs[v], diag_[0]);  // L_00⁻ᵀ x_0
+  for (std::size_t j = p - 1; j >= 1; --j)
+    for (std::size_t v = 0; v < count; ++v) {
+      double* xj = xs[v] + B * j;
+      if (j + 1 < p) subtract_transpose_product(xj, couple_[j], xj + B);
+      subtract_transpose_product(xj, border_[j], xs[v]);
+      multiply(xj, diag_[j]);
+    }
 }
 
 }  // namespace tire

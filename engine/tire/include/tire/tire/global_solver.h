@@ -82,7 +82,15 @@ class GlobalSolver {
   // with fixed surfaces too (as equalities): a vehicle's axle pushing its wheel rolls it about its
   // contact patch (vehicle_joints.h).
   bool prepare_response(bool hold_fixed_friction = false);
-  void respond(double* r) const;
+  // The same with every friction held, from the last solve's own system instead of a factorisation
+  // of its own: that solve's factor of K and its live rows (its frictions and contacts taken in as
+  // rows among them), the system its Δx solved, which holds the normals and the static frictions of
+  // its contacts (a vehicle's wheel: vehicle_joints.h). False when it holds a free prop.
+  bool prepare_solve_response();
+  void respond(double* r) const { respond(&r, 1); }
+  // The same for `count` loads at once (at most CyclicBlockCholesky::kMaxRightHandSides): one sweep
+  // down the factor for all of them.
+  void respond(double* const* rs, std::size_t count) const;
   // A load on the next solve only: a force r (kg·m, force × h², in block order: dof()) added to its
   // f, as the tire's neighbours push it (an island's last multipliers, island_contacts.h). The
   // solve reads it and forgets it; r must live until then.
@@ -256,9 +264,10 @@ class GlobalSolver {
   // of their Y₀ᵀ Y₀ + α̃ (lower triangle).
   CyclicBlockCholesky k0_;
   std::vector<double> y0_;  // column q: L₀⁻¹ g of the q-th live base row
-  std::size_t response_live_[kBaseRows] = {};
+  std::size_t response_live_[kMaxRows] = {};
   std::size_t response_rows_ = 0;
-  double response_s_[kBaseRows][kBaseRows] = {};
+  double response_s_[kMaxRows][kMaxRows] = {};
+  bool response_from_solve_ = false;  // prepare_solve_response's: k_ and y_ rather than k0_ and y0_
 };
 
 // One GlobalSolver per thread that may solve tires at once: lend() hands out one no other thread

@@ -39,12 +39,14 @@ class CyclicBlockCholesky {
   bool factor();
   // y ← L⁻¹ y and x ← L⁻ᵀ x, on vectors of size() entries in block order (block k at 4k).
   void forward(double* y) const { forward(&y, 1); }
-  void backward(double* x) const;
+  void backward(double* x) const { backward(&x, 1); }
   // y ← L⁻¹ y for `count` vectors at once (at most kMaxRightHandSides), faster than one by one.
   // `first`: every vector is zero in blocks 1 … first − 1 (blocks() when only block 0 is not), so
   // that L⁻¹ y is too, and the sweep starts at block `first`.
   static constexpr std::size_t kMaxRightHandSides = 4;
   void forward(double* const* ys, std::size_t count, std::size_t first = 1) const;
+  // x ← L⁻ᵀ x for `count` vectors at once (at most kMaxRightHandSides), each as backward(x) does it.
+  void backward(double* const* xs, std::size_t count) const;
   // x ← K⁻¹ x: forward then backward.
   void solve(double* x) const {
     forward(x);
