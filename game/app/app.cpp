@@ -422,6 +422,13 @@ tire::TickInput App::tick_input() const {
   const double pump = (held(SDL_SCANCODE_LSHIFT, SDL_SCANCODE_RSHIFT) ? 1.0 : 0.0) -
                       (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
   in.inflate = std::clamp(pump + gamepads_.inflate(), -1.0, 1.0);
+  // A vehicle (the level's player may be one): Up/W leans back, Down/S forward, Space brakes; the
+  // steer above is its throttle. The world reads them only for a vehicle, the jump and the pump only
+  // for a tire.
+  const double lean = (held(SDL_SCANCODE_UP, SDL_SCANCODE_W) ? 1.0 : 0.0) -
+                      (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
+  in.lean = std::clamp(lean + gamepads_.lean(), -1.0, 1.0);
+  in.brake = held_.contains(SDL_SCANCODE_SPACE) || gamepads_.brake();
   return in;
 }
 

@@ -49,6 +49,8 @@ PadAction Gamepads::handle_event(const SDL_Event& e, std::vector<std::string>& m
       pad.stick = stick_steer(SDL_GameControllerGetAxis(c, SDL_CONTROLLER_AXIS_LEFTX));
       pad.left = SDL_GameControllerGetButton(c, SDL_CONTROLLER_BUTTON_DPAD_LEFT) != 0;
       pad.right = SDL_GameControllerGetButton(c, SDL_CONTROLLER_BUTTON_DPAD_RIGHT) != 0;
+      pad.stick_y = stick_steer(SDL_GameControllerGetAxis(c, SDL_CONTROLLER_AXIS_LEFTY));
+      pad.a = SDL_GameControllerGetButton(c, SDL_CONTROLLER_BUTTON_A) != 0;
       pads_[id] = pad;
       const char* name = SDL_GameControllerName(c);
       messages.push_back(std::string("game controller connected: ") + (name ? name : "(unnamed)"));
@@ -68,6 +70,7 @@ PadAction Gamepads::handle_event(const SDL_Event& e, std::vector<std::string>& m
       if (it == pads_.end()) return PadAction::none;
       // A trigger reads 0 … 32767: the stick's dead zone and rescaling on its positive half.
       if (e.caxis.axis == SDL_CONTROLLER_AXIS_LEFTX) it->second.stick = stick_steer(e.caxis.value);
+      if (e.caxis.axis == SDL_CONTROLLER_AXIS_LEFTY) it->second.stick_y = stick_steer(e.caxis.value);
       if (e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT)
         it->second.left_trigger = stick_steer(e.caxis.value);
       if (e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERRIGHT)
@@ -83,6 +86,7 @@ PadAction Gamepads::handle_event(const SDL_Event& e, std::vector<std::string>& m
       switch (e.cbutton.button) {
         case SDL_CONTROLLER_BUTTON_DPAD_LEFT: pad.left = down; return PadAction::none;
         case SDL_CONTROLLER_BUTTON_DPAD_RIGHT: pad.right = down; return PadAction::none;
+        case SDL_CONTROLLER_BUTTON_A: pad.a = down; break;  // held: a vehicle's brake; pressed: jump
         default: break;
       }
       if (!down) return PadAction::none;
@@ -107,6 +111,16 @@ double Gamepads::inflate() const {
   for (const auto& [id, pad] : pads_)
     sum += std::max(0.0, pad.right_trigger) - std::max(0.0, pad.left_trigger);
   return std::clamp(sum, -1.0, 1.0);
+}
+
+double Gamepads::lean() const {
+  double sum = 0.0;
+  for (const auto& [id, pad] : pads_) sum -= pad.stick_y;  // SDL's y grows downwards; up leans back
+  return std::clamp(sum, -1.0, 1.0);
+}
+
+bool Gamepads::brake() const {
+  return std::any_of(pads_.begin(), pads_.end(), [](const auto& p) { return p.second.a; });
 }
 
 double Gamepads::steer() const {

@@ -2,7 +2,8 @@
 // opened when SDL reports it (SDL_CONTROLLERDEVICEADDED) and closed when it goes away. The left
 // stick steers in proportion (past a dead zone), the d-pad steers fully; the right trigger inflates
 // and the left deflates, in proportion; buttons become actions the app maps to what the keys do (A
-// jump, Start pause, Back restart, shoulders change level).
+// jump, Start pause, Back restart, shoulders change level). Driving a vehicle, the left stick's x is
+// the throttle, its y the lean, and A held the brake.
 #pragma once
 
 #include <SDL.h>
@@ -41,6 +42,10 @@ class Gamepads {
   double steer() const;
   // Inflating (+) or deflating (−) the pads ask for now, in [-1, 1]: right trigger less left.
   double inflate() const;
+  // A vehicle's lean the pads ask for now, in [-1, 1] (left stick up: +1, leaning back), and its brake
+  // (A held on any pad).
+  double lean() const;
+  bool brake() const;
   std::size_t connected() const { return pads_.size(); }
   void close_all();
 
@@ -50,6 +55,8 @@ class Gamepads {
     double stick = 0.0;  // left stick x, after the dead zone
     bool left = false, right = false;
     double left_trigger = 0.0, right_trigger = 0.0;  // [0, 1], after the dead zone
+    double stick_y = 0.0;                            // left stick y, after the dead zone (SDL's: + is down)
+    bool a = false;                                  // the A button held
   };
   std::map<SDL_JoystickID, Pad> pads_;
   bool started_ = false;
