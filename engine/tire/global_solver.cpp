@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "tire/math/check.h"
+#include "tire/math/dense_solve.h"
 #include "tire/math/trig.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/xpbd/contact.h"
@@ -297,27 +298,7 @@ std::int32_t GlobalSolver::body_of(std::uint32_t prop, const Prop& body) {
   return static_cast<std::int32_t>(bodies_.size() - 1);
 }
 
-bool GlobalSolver::solve_border(std::size_t size) {
-  auto& a = border_;
-  for (std::size_t c = 0; c < size; ++c) {
-    std::size_t pivot = c;
-    for (std::size_t r = c + 1; r < size; ++r)
-      if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
-    if (!(std::abs(a[pivot][c]) > 0.0) || !std::isfinite(a[pivot][c])) return false;
-    if (pivot != c)
-      for (std::size_t k = c; k <= size; ++k) std::swap(a[c][k], a[pivot][k]);
-    for (std::size_t r = c + 1; r < size; ++r) {
-      const double factor = a[r][c] / a[c][c];
-      for (std::size_t k = c; k <= size; ++k) a[r][k] -= factor * a[c][k];
-    }
-  }
-  for (std::size_t r = size; r-- > 0;) {
-    double v = a[r][size];
-    for (std::size_t k = r + 1; k < size; ++k) v -= a[r][k] * a[k][size];
-    a[r][size] = v / a[r][r];
-  }
-  return true;
-}
+bool GlobalSolver::solve_border(std::size_t size) { return solve_augmented(border_, size); }
 
 bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const double* dx) {
   const Particles& p = t.particles;

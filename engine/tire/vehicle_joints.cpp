@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tire/math/check.h"
+#include "tire/math/dense_solve.h"
 #include "tire/math/trig.h"
 #include "tire/rigid/rigid_world.h"
 #include "tire/tire/tire.h"
@@ -71,29 +72,6 @@ void spin_up(Tire& t, double impulse) {
   inertia *= t.particle_mass();
   const double dw = impulse / inertia;
   for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += perp(p.x[i] - c) * dw;
-}
-
-// Gaussian elimination with partial pivoting on the m × m system a z = b (b in column m): false
-// when it is singular or not finite.
-bool solve_dense(double (&a)[kMaxRows][kMaxRows + 1], std::size_t m) {
-  for (std::size_t c = 0; c < m; ++c) {
-    std::size_t pivot = c;
-    for (std::size_t r = c + 1; r < m; ++r)
-      if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
-    if (!(std::abs(a[pivot][c]) > 0.0) || !std::isfinite(a[pivot][c])) return false;
-    if (pivot != c)
-      for (std::size_t k = c; k <= m; ++k) std::swap(a[c][k], a[pivot][k]);
-    for (std::size_t r = c + 1; r < m; ++r) {
-      const double factor = a[r][c] / a[c][c];
-      for (std::size_t k = c; k <= m; ++k) a[r][k] -= factor * a[c][k];
-    }
-  }
-  for (std::size_t r = m; r-- > 0;) {
-    double v = a[r][m];
-    for (std::size_t k = r + 1; k < m; ++k) v -= a[r][k] * a[k][m];
-    a[r][m] = v / a[r][r];
-  }
-  return true;
 }
 
 }  // namespace
@@ -495,7 +473,7 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       for (std::size_t q = 0; q < free; ++q) sys[r][q] = a[i][index[q]];
       sys[r][free] = rhs;
     }
-    if (free > 0 && !solve_dense(sys, free)) return;  // nothing moved: the wheels' own solves stand
+    if (free > 0 && !solve_augmented(sys, free)) return;  // nothing moved: the wheels' own solves stand
     for (std::size_t r = 0; r < free; ++r) delta[index[r]] = sys[r][free];
     bool clamped = false;
     for (std::size_t i = 0; i < m; ++i) {
