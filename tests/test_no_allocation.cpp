@@ -304,6 +304,38 @@ TEST_CASE("stepping a world does not allocate", "[unit][performance]") {
   check_untouched(before);
 }
 
+TEST_CASE("driving a vehicle over bumps, with its brake and lean, does not allocate", "[unit][performance]") {
+  SolverConfig config;
+  config.sleep = false;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-100, -1}, {100, 0}}});
+  for (int i = 0; i < 20; ++i) world.add_obstacle({{{3.0 * i + 2, 0}, {3.0 * i + 2.4, 0.08}}});
+  VehicleSpec car;
+  car.chassis.size = {1.6, 0.3};
+  car.chassis.density = 200;
+  car.chassis.position = {0, 1.0};
+  for (const double x : {-0.7, 0.7}) {
+    WheelSpec w;
+    w.axle.point = {x, -0.4};
+    w.axle.stiffness = 8000;  // one axle on a suspension
+    w.axle.damping = x > 0 ? 400.0 : 0.0;
+    car.wheels.push_back(w);
+  }
+  const std::optional<std::uint32_t> v = world.add_vehicle(car);
+  REQUIRE(v);
+  REQUIRE(world.set_player_vehicle(*v));
+  for (int i = 0; i < 10; ++i) world.step({1.0, false});  // warm up
+  const HeapActivity before = HeapActivity::now();
+  for (int i = 0; i < 300; ++i) {
+    TickInput in;
+    in.steer = i % 100 < 70 ? 1.0 : 0.0;
+    in.brake = i % 100 >= 85;
+    in.lean = i % 40 < 20 ? -1.0 : 0.5;
+    world.step(in);
+  }
+  check_untouched(before);
+}
+
 TEST_CASE("reading a simulation's views, as a game does every frame, does not allocate",
           "[unit][performance]") {
   Simulation sim(SolverConfig{}, {0, -9.81});

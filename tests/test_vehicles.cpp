@@ -152,6 +152,35 @@ TEST_CASE("vehicles: a car at rest loads each tire with its share of the weight"
   for (std::size_t w = 0; w < 2; ++w) CHECK(hub_offset(world, v, w, spec) < 1e-3);
 }
 
+TEST_CASE("vehicles: a sprung axle sags by its load over its stiffness", "[unit][vehicles]") {
+  // Hooke's law along the suspension's axis: at rest the chassis sinks on each axle by F/k, its hub
+  // F/k above the axle point, F the chassis' share of the weight on that axle (the axle presses the
+  // hub down with it), k the spring; damping changes nothing at rest.
+  const int substeps = GENERATE(2, 8);
+  World world = flat_ground(awake(substeps));
+  VehicleSpec spec = car({0.0, 0.7}, 0.9, 0.6);
+  for (WheelSpec& w : spec.wheels) {
+    w.axle.stiffness = 6000;
+    w.axle.damping = 300;
+  }
+  const std::uint32_t v = *world.add_vehicle(spec);
+  run(world, 240);
+  const PropState chassis = world.rigid().prop_state(world.vehicles().chassis(v));
+  const double g = 9.81, mass = 1.6 * 0.3 * 100;
+  const double shares[2] = {mass * g * 0.6 / 1.5, mass * g * 0.9 / 1.5};  // rear, front
+  for (std::size_t w = 0; w < 2; ++w) {
+    const Tire& t = wheel(world, v, w);
+    const Vec2 axis = chassis.pose.rotate(spec.wheels[w].axle.axis);
+    const Vec2 hub = vehicle_rows::rim_hub(t.particles, t.n, false);
+    const double along = dot(hub - chassis.pose.to_world(spec.wheels[w].axle.point), axis);
+    INFO(substeps << " substeps, wheel " << w << ": hub " << along * 1e3 << " mm along the axis, Hooke "
+                  << shares[w] / 6000 * 1e3 << " mm; axle force " << world.vehicles().axle_force(v, w).y
+                  << " N");
+    CHECK(along == Approx(shares[w] / 6000).epsilon(0.02));
+    CHECK(world.vehicles().axle_force(v, w).y == Approx(-shares[w]).epsilon(0.02));
+  }
+}
+
 TEST_CASE("vehicles: parked on a 15 degree slope with the brake on, a car stays put", "[unit][vehicles]") {
   const double slope = 15.0 * std::numbers::pi / 180.0;
   World world = flat_ground(awake(), {-9.81 * std::sin(slope), -9.81 * std::cos(slope)});  // downhill is −x
