@@ -17,11 +17,26 @@
 #include "tire/tire/parameters.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
+#include "tire/tire/vehicle_joints.h"
 
 namespace tire {
 
 class LevelSession;
 class World;
+
+// The driver's head on a vehicle's chassis: touching an obstacle or a static or kinematic prop loses
+// the level.
+struct VehicleHead {
+  Vec2 position;  // its centre in the chassis' frame (m)
+  double radius = 0.0;
+};
+
+// A vehicle as a level places it (levels/README.md, "Vehicles").
+struct LevelVehicle {
+  VehicleSpec spec;
+  bool player = false;
+  std::optional<VehicleHead> head;
+};
 
 struct Level {
   std::string name;
@@ -32,6 +47,7 @@ struct Level {
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
   std::vector<PropSpec> props;
+  std::vector<LevelVehicle> vehicles;
   LevelBounds bounds;                 // the box the player must stay in (level_bounds.h)
   ScriptSpec script;                  // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
   std::optional<LevelMedals> medals;  // the times that earn a medal (level_medals.h), if it has them
@@ -46,6 +62,7 @@ struct LevelLimits {
   static constexpr std::size_t max_tires = 10000;
   static constexpr std::size_t max_obstacles = 100000;
   static constexpr std::size_t max_props = 10000;
+  static constexpr std::size_t max_vehicles = 16;
   static constexpr double max_coordinate = 10000.0;  // m
 };
 
