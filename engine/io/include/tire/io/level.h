@@ -24,18 +24,11 @@ namespace tire {
 class LevelSession;
 class World;
 
-// The driver's head on a vehicle's chassis: touching an obstacle or a static or kinematic prop loses
-// the level.
-struct VehicleHead {
-  Vec2 position;  // its centre in the chassis' frame (m)
-  double radius = 0.0;
-};
-
 // A vehicle as a level places it (levels/README.md, "Vehicles").
 struct LevelVehicle {
   VehicleSpec spec;
   bool player = false;
-  std::optional<VehicleHead> head;
+  std::optional<VehicleHead> head;  // touching an obstacle or a static or kinematic prop loses
 };
 
 struct Level {
