@@ -557,13 +557,27 @@ void read_bounds(JsonReader& r, const json& doc, Level& level, const std::vector
                                          written("/bounds/max"));
     return;
   }
-  // The player starts inside: a level lost before its first tick is a mistake.
+  // The player starts inside: a level lost before its first tick is a mistake. A player vehicle
+  // starts where its chassis does.
   std::size_t player = 0;
   for (std::size_t i = 0; i < level.tires.size(); ++i)
     if (level.tires[i].player) player = i;
-  if (player >= level.tires.size()) return;
-  const Vec2 start = level.tires[player].position;
-  const std::string position = join_path(join_path("/tires", player), "position");
+  Vec2 start;
+  std::string position;
+  const auto vehicle = std::find_if(level.vehicles.begin(), level.vehicles.end(),
+                                    [](const LevelVehicle& v) { return v.player; });
+  if (vehicle != level.vehicles.end()) {
+    start = vehicle->spec.chassis.position;
+    position = join_path(
+        join_path(join_path("/vehicles", static_cast<std::size_t>(vehicle - level.vehicles.begin())),
+                  "chassis"),
+        "position");
+  } else if (player < level.tires.size()) {
+    start = level.tires[player].position;
+    position = join_path(join_path("/tires", player), "position");
+  } else {
+    return;
+  }
   if (!doc.contains(json::json_pointer(position))) return;  // missing: reported as such
   const std::string where = " the player's start " + written(position) + " (" + position + ")";
   if (b.min && !(b.min->x <= start.x && b.min->y <= start.y))
