@@ -477,7 +477,9 @@ std::vector<LevelKey> vehicle_keys() {
       Key("lean_torque", T::number, "{range}: torque on the chassis at full lean")
           .range(torque, "N·m")
           .by_default(number(d.lean_torque)),
-      Key("head", T::object, "the driver's head: touching the ground or a static prop loses the level")
+      Key("head", T::object,
+          "the driver's head: a player vehicle's touching the ground or a static or kinematic prop loses the "
+          "level")
           .nested(LevelObject::head),
   });
 }

@@ -433,6 +433,14 @@ tire::TickInput App::tick_input() const {
   const double pump = (held(SDL_SCANCODE_LSHIFT, SDL_SCANCODE_RSHIFT) ? 1.0 : 0.0) -
                       (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
   in.inflate = std::clamp(pump + gamepads_.inflate(), -1.0, 1.0);
+  // A player vehicle leans on up and down (W, S) and brakes on space; it neither jumps nor inflates.
+  if (player_vehicle_view()) {
+    in.lean = (held(SDL_SCANCODE_UP, SDL_SCANCODE_W) ? 1.0 : 0.0) -
+              (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
+    in.brake = held_.contains(SDL_SCANCODE_SPACE);
+    in.jump = false;
+    in.inflate = 0.0;
+  }
   return in;
 }
 
