@@ -23,7 +23,8 @@ namespace {
 constexpr std::array kObjects{LevelObject::root,       LevelObject::solver,   LevelObject::tire,
                               LevelObject::compliance, LevelObject::obstacle, LevelObject::prop,
                               LevelObject::path,       LevelObject::region,   LevelObject::budgets,
-                              LevelObject::bounds,     LevelObject::medals};
+                              LevelObject::bounds,     LevelObject::medals,   LevelObject::vehicle,
+                              LevelObject::chassis,    LevelObject::wheel,    LevelObject::head};
 static_assert(kObjects.size() == kLevelObjects);
 
 const char* object_name(LevelObject o) {
@@ -39,8 +40,18 @@ const char* object_name(LevelObject o) {
     case LevelObject::budgets: return "budgets";
     case LevelObject::bounds: return "bounds";
     case LevelObject::medals: return "medals";
+    case LevelObject::vehicle: return "vehicle";
+    case LevelObject::chassis: return "chassis";
+    case LevelObject::wheel: return "wheel";
+    case LevelObject::head: return "head";
   }
   return "?";
+}
+
+// A minimal valid vehicle: a box chassis on two wheels.
+json minimal_vehicle() {
+  return {{"chassis", {{"shape", "box"}, {"size", {1.6, 0.3}}, {"position", {0, 1}}}},
+          {"wheels", {{{"axle", {-0.6, -0.3}}}, {{"axle", {0.6, -0.3}}}}}};
 }
 
 // A minimal valid level holding one object of kind `object` (a prop of `shape`), and the JSON
@@ -106,6 +117,28 @@ Placed place(LevelObject object, std::string_view shape = "box") {
       p.doc["medals"] = {{"gold", 10}, {"silver", 20}, {"bronze", 30}};
       p.pointer = "/medals";
       break;
+    case LevelObject::vehicle:
+      p.doc["vehicles"] = json::array({minimal_vehicle()});
+      p.pointer = "/vehicles/0";
+      break;
+    case LevelObject::chassis: {
+      json v = minimal_vehicle();
+      v["chassis"] = minimal_prop(shape == "chain" ? "box" : shape);
+      p.doc["vehicles"] = json::array({v});
+      p.pointer = "/vehicles/0/chassis";
+      break;
+    }
+    case LevelObject::wheel:
+      p.doc["vehicles"] = json::array({minimal_vehicle()});
+      p.pointer = "/vehicles/0/wheels/0";
+      break;
+    case LevelObject::head: {
+      json v = minimal_vehicle();
+      v["head"] = {{"position", {0, 0.4}}, {"radius", 0.1}};
+      p.doc["vehicles"] = json::array({v});
+      p.pointer = "/vehicles/0/head";
+      break;
+    }
   }
   return p;
 }
@@ -139,6 +172,33 @@ std::string dump(const Level& level) {
   s << "|solver " << c.dt << " " << c.substeps << " " << c.iterations << " " << static_cast<int>(c.method)
     << " " << c.damping << " " << c.tunnel_clamp << " " << c.ground_normal_y << " " << c.jump_grace << " "
     << c.sleep << "\n";
+  for (const LevelVehicle& lv : level.vehicles) {
+    const VehicleSpec& vs = lv.spec;
+    const Drivetrain& d = vs.drivetrain;
+    s << "vehicle " << lv.player << " " << d.motor_torque << " " << d.motor_speed << " " << d.brake_torque
+      << " " << d.lean_torque << " head " << lv.head.has_value();
+    if (lv.head) {
+      v(lv.head->position);
+      s << lv.head->radius;
+    }
+    s << " chassis " << static_cast<int>(vs.chassis.shape) << " ";
+    v(vs.chassis.position);
+    v(vs.chassis.size);
+    v(vs.chassis.velocity);
+    s << " " << vs.chassis.angle << " " << vs.chassis.radius << " " << vs.chassis.density << " "
+      << vs.chassis.friction << " " << vs.chassis.restitution << " " << vs.chassis.angular_velocity << "\n";
+    for (const WheelSpec& w : vs.wheels) {
+      s << "wheel ";
+      v(w.axle.point);
+      v(w.axle.axis);
+      const TireSpec& t = w.tire;
+      s << " " << w.axle.stiffness << " " << w.axle.damping << " " << w.axle.driven << " " << t.angle << " "
+        << t.outer_radius << " " << t.inner_radius << " " << t.segments << " " << t.mass << " " << t.friction
+        << " " << t.kinetic_friction << " " << t.pressure << " " << t.compliance.outer << " "
+        << static_cast<int>(t.spokes) << " " << t.material_damping << " " << t.rolling_resistance << " "
+        << t.restitution << "\n";
+    }
+  }
   for (const TireSpec& t : level.tires) {
     s << "tire ";
     v(t.position);
@@ -402,6 +462,10 @@ TEST_CASE("level keys: the reference pages list each object's keys in the table'
       {LevelObject::prop, {"levels/README.md", "## Prop"}},
       {LevelObject::path, {"levels/README.md", "### `path`"}},
       {LevelObject::region, {"levels/SCRIPTING.md", "### Region"}},
+      {LevelObject::vehicle, {"levels/README.md", "## Vehicles"}},
+      {LevelObject::chassis, {"levels/README.md", "### `chassis`"}},
+      {LevelObject::wheel, {"levels/README.md", "### Wheel"}},
+      {LevelObject::head, {"levels/README.md", "### `head`"}},
   };
   for (const auto& [object, where] : sections) {
     INFO(object_name(object) << ": " << where.first << " " << where.second);
@@ -433,5 +497,5 @@ TEST_CASE("level keys: choice keys take exactly the table's choices", "[unit][le
       ++checked;
     }
   }
-  CHECK(checked == 6);  // method, material, spokes, shape, type, mode
+  CHECK(checked == 9);  // method, material, spokes, shape, type, mode; chassis shape, wheel material, spokes
 }

@@ -119,6 +119,26 @@ json prop_base(const std::string& key) {
   throw std::runtime_error("no prop shape allows " + key);
 }
 
+// The chassis' rules, as the prop's: the "then" of the rule selecting `shape`.
+json chassis_rule(const std::string& shape) {
+  for (const json& rule : def("chassis").at("allOf"))
+    if (rule.at("if").at("properties").at("shape").value("const", json()) == shape) return rule.at("then");
+  return json();
+}
+
+// A valid chassis in which `key` applies: the first shape that allows it.
+json chassis_base(const std::string& key) {
+  for (const std::string& shape : strings(def("chassis").at("properties").at("shape").at("enum"))) {
+    const json then = chassis_rule(shape);
+    if (forbids(then, key)) continue;
+    json obj{{"shape", shape}};
+    for (const std::string& r : strings(then.value("required", json::array())))
+      obj[r] = sample(def("chassis").at("properties").at(r));
+    return obj;
+  }
+  throw std::runtime_error("no chassis shape allows " + key);
+}
+
 // --- loading probe levels ---
 
 struct Issue {
@@ -268,6 +288,24 @@ std::vector<Kind> kinds() {
                  },
                  true});
 
+  // A vehicle's parts, in a level of one vehicle: its chassis, its first wheel, its head.
+  const json vehicle = required_base(def("vehicle"), "");
+  const auto in_vehicle = [vehicle](const std::string& part) {
+    return [vehicle, part](const json& obj) {
+      json v = vehicle;
+      if (part == "wheel")
+        v["wheels"][0] = obj;
+      else
+        v[part] = obj;
+      return with(named_level(), "vehicles", json::array({v}));
+    };
+  };
+  out.push_back({"vehicle", def("vehicle"), "/vehicles/0", base_of("vehicle"),
+                 [](const json& obj) { return with(named_level(), "vehicles", json::array({obj})); }, true});
+  out.push_back({"chassis", resolved(def("chassis")), "/vehicles/0/chassis", chassis_base,
+                 in_vehicle("chassis"), true});
+  out.push_back({"wheel", def("wheel"), "/vehicles/0/wheels/0", base_of("wheel"), in_vehicle("wheel"), true});
+  out.push_back({"head", def("head"), "/vehicles/0/head", base_of("head"), in_vehicle("head"), true});
   out.push_back({"bounds", def("bounds"), "/bounds", base_of("bounds"),
                  [](const json& obj) { return with(named_level(), "bounds", obj); }, true});
   out.push_back({"region", def("region"), "/regions/0", base_of("region"),
@@ -407,6 +445,8 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
   const PropSpec p;
   const KinematicPath k;
   const LevelBounds b;
+  const Drivetrain d;
+  const AxleSpec a;
   return {
       {"root", {{"description", l.description}, {"gravity", vec(l.gravity)}}},
       {"solver",
@@ -463,6 +503,38 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"velocity", vec(p.velocity)},
         {"angular_velocity", p.angular_velocity}}},
       {"bounds", {{"margin", b.margin}}},
+      {"vehicle",
+       {{"player", false},
+        {"motor_torque", d.motor_torque},
+        {"motor_speed", d.motor_speed},
+        {"brake_torque", d.brake_torque},
+        {"lean_torque", d.lean_torque}}},
+      {"chassis",
+       {{"position", vec(p.position)},
+        {"angle", p.angle},
+        {"density", p.density},
+        {"friction", p.friction},
+        {"restitution", p.restitution},
+        {"velocity", vec(p.velocity)},
+        {"angular_velocity", p.angular_velocity}}},
+      {"wheel",
+       {{"axis", vec(a.axis)},
+        {"stiffness", a.stiffness},
+        {"damping", a.damping},
+        {"driven", a.driven},
+        {"material", kMaterials.front().name},
+        {"angle", t.angle},
+        {"outer_radius", t.outer_radius},
+        {"inner_radius", t.inner_radius},
+        {"segments", t.segments},
+        {"mass", t.mass},
+        {"friction", t.friction},
+        {"pressure", t.pressure},
+        {"spokes", t.spokes == SpokePattern::cross ? "cross" : "radial"},
+        {"material_damping", t.material_damping},
+        {"rolling_resistance", t.rolling_resistance},
+        {"restitution", t.restitution}}},
+      {"head", {}},
       {"path",
        {{"speed", k.speed},
         {"mode", k.mode == PathMode::loop   ? "loop"
@@ -632,7 +704,7 @@ TEST_CASE("every numeric range in the schema is the level reader's range", "[uni
       check_bounds(kind, kind.base(key), key, slot);
     }
     // Ranges that depend on another key ("set": the range of the key it sets).
-    if (!kind.schema.contains("allOf") || kind.name == "prop") continue;
+    if (!kind.schema.contains("allOf") || kind.name == "prop" || kind.name == "chassis") continue;
     for (const json& rule : kind.schema.at("allOf")) {
       const json& selector = rule.at("if").at("properties");
       REQUIRE(selector.size() == 1);

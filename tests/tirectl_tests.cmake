@@ -331,3 +331,19 @@ tirectl_test("course names a level with no shipped replay that wins it" 1 ARGS c
 add_test(NAME "tirectl course: levels/ is a course" COMMAND tirectl course ${LEVELS}
   --replays ${CMAKE_CURRENT_SOURCE_DIR}/replays)
 set_tests_properties("tirectl course: levels/ is a course" PROPERTIES LABELS course TIMEOUT 1200)
+
+# Vehicles (levels/README.md, "Vehicles"): a player vehicle driven by --steer, --lean and --brake,
+# its chassis in --trace and in the report; a vehicle level's errors from validate.
+tirectl_test("run drives a player vehicle and traces its chassis" 0
+  ARGS run ${BAD}/vehicle-car.json --ticks 120 --steer 1 --lean 0.2 --trace 60
+  STDERR "t= +1[.]00 s +chassis \\( *[1-9][0-9.]*, *0[.][0-9]+\\) m +speed \\( *[1-9][0-9.]*,.*lean +0[.]20"
+  STDOUT "\"vehicles\": .[ \n]*{[ \n]*\"index\": 0,[ \n]*\"player\": true,[ \n]*\"position\"")
+tirectl_test("run holds a player vehicle's brakes" 0 ARGS run ${BAD}/vehicle-car.json --ticks 60 --brake --trace 60
+  STDERR "braking")
+tirectl_test("run refuses a lean outside [-1, 1]" 2 ARGS run ${BAD}/vehicle-car.json --lean 2
+  STDERR "--lean: must be a number in \\[-1, 1\\], got 2")
+tirectl_test("run refuses --brake with --input" 2 ARGS run ${BAD}/vehicle-car.json --input ${GOAL_REPLAY} --brake
+  STDERR "--(brake|input) excludes --(input|brake)")
+tirectl_test("validate accepts a vehicle level" 0 ARGS validate ${BAD}/vehicle-car.json STDOUT "vehicle-car.json: ok")
+tirectl_test("validate refuses one wheel and the gauss-seidel method" 2 ARGS validate ${BAD}/bad-vehicle.json
+  STDERR "bad-vehicle.json: /vehicles/0/wheels: must be an array of 2 to 8 wheels, got 1.*bad-vehicle.json: /vehicles: a level with vehicles needs the global solver method")

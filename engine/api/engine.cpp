@@ -85,6 +85,33 @@ std::optional<TireView> Simulation::tire_at(std::size_t index) const {
   if (index >= world.tires().size()) return std::nullopt;
   return world.view_of(world.tires()[index]);
 }
+std::size_t Simulation::vehicle_count() const { return session_->world().vehicles().count(); }
+std::optional<VehicleView> Simulation::vehicle_at(std::size_t index) const {
+  static_assert(kMaxVehicleWheels == VehicleJoints::kMaxWheels);
+  const World& world = session_->world();
+  const VehicleJoints& joints = world.vehicles();
+  if (index >= joints.count()) return std::nullopt;
+  const auto v = static_cast<std::uint32_t>(index);
+  VehicleView view;
+  view.index = index;
+  view.chassis = joints.chassis(v);
+  view.player = world.player_vehicle() == v;
+  const PropState chassis = world.rigid().prop_state(view.chassis);
+  view.pose = chassis.pose;
+  view.center = chassis.center;
+  view.velocity = chassis.velocity;
+  view.angular_velocity = chassis.angular_velocity;
+  view.wheel_count = joints.wheel_count(v);
+  for (std::size_t w = 0; w < view.wheel_count; ++w)
+    view.wheel_ids[w] = world.tires()[joints.wheel_tire(v, w)].id;
+  const VehicleControl& control = joints.control(v);
+  view.throttle = control.throttle;
+  view.lean = control.lean;
+  view.brake = control.brake;
+  view.head_center = session_->vehicle_head_center(v);
+  if (const std::optional<VehicleHead>& head = session_->vehicle_head(v)) view.head_radius = head->radius;
+  return view;
+}
 std::size_t Simulation::prop_count() const { return session_->world().rigid().props().size(); }
 std::optional<PropView> Simulation::prop(PropId id) const { return session_->world().prop_view(id); }
 std::span<const Obstacle> Simulation::obstacles() const { return session_->world().rigid().obstacles(); }

@@ -1,5 +1,7 @@
 #include "tire/level.h"
 
+#include <algorithm>
+
 #include "tire/io/file_io.h"
 #include "tire/io/level.h"
 
@@ -44,6 +46,9 @@ LevelInfo level_info(const Level& level) {
           level.script.time_limit,
           level.medals,
           level.tires.size(),
+          level.vehicles.size(),
+          std::any_of(level.vehicles.begin(), level.vehicles.end(),
+                      [](const LevelVehicle& v) { return v.player; }),
           level.bounds.box,
           level.bounds.min.has_value(),
           level.bounds.max.has_value()};

@@ -58,6 +58,12 @@ Aabb level_extent(const Level& level) {
   for (const PropSpec& p : level.props) add_prop(e, p);
   for (const Region& r : level.script.regions) e.add(r.box);
   for (const TireSpec& t : level.tires) add_tire(e, t);
+  for (const LevelVehicle& v : level.vehicles) {
+    add_prop(e, v.spec.chassis);
+    const Pose pose = Pose::make(v.spec.chassis.position, v.spec.chassis.angle);
+    for (const WheelSpec& w : v.spec.wheels)
+      e.add(Aabb{pose.to_world(w.axle.point), pose.to_world(w.axle.point)}.expanded(w.tire.outer_radius));
+  }
   for (const Trigger& trigger : level.script.triggers)
     for (const Action& action : trigger.actions) {
       if (const auto* s = std::get_if<SpawnTire>(&action)) add_tire(e, s->tire);

@@ -142,6 +142,11 @@ std::vector<LevelKey> root_keys() {
       Key("props", T::array, "rigid bodies simulated by Box2D, at most {max}")
           .range({0, static_cast<double>(LevelLimits::max_props)})
           .nested(LevelObject::prop),
+      Key("vehicles", T::array,
+          "at most {max}; chassis on wheels; one may be the player (then no tire is); needs the global "
+          "solver method")
+          .range({0, static_cast<double>(LevelLimits::max_vehicles)})
+          .nested(LevelObject::vehicle),
       Key("bounds", T::object,
           "the box the player must stay in; leaving it loses, or respawns at the last checkpoint")
           .nested(LevelObject::bounds),
@@ -434,11 +439,114 @@ std::vector<LevelKey> medals_keys() {
   });
 }
 
+// The rows of `keys` named by `names`, in that order: an object that takes another's keys takes
+// the same rows (their ranges, defaults and parameters), not a copy of their rules.
+std::vector<LevelKey> rows_of(const std::vector<LevelKey>& keys,
+                              std::initializer_list<std::string_view> names) {
+  std::vector<LevelKey> out;
+  for (const std::string_view name : names)
+    for (const LevelKey& k : keys)
+      if (k.key == name) out.push_back(k);
+  return out;
+}
+
+std::vector<LevelKey> vehicle_keys() {
+  using T = KeyType;
+  const Drivetrain d;
+  const LevelVehicle vehicle;
+  const Range torque{0.0, 1e5};
+  return table({
+      Key("player", T::boolean, "the player drives it; at most one player among the tires and vehicles")
+          .by_default(vehicle.player),
+      Key("chassis", T::object, "the body the wheels hang from: a dynamic box, circle or polygon")
+          .required()
+          .nested(LevelObject::chassis),
+      Key("wheels", T::array, "2 to {max}: tires on axles of the chassis")
+          .range({2, static_cast<double>(VehicleJoints::kMaxWheels)})
+          .required()
+          .nested(LevelObject::wheel),
+      Key("motor_torque", T::number, "{range}: most torque a driven wheel's motor gives")
+          .range(torque, "N·m")
+          .by_default(number(d.motor_torque)),
+      Key("motor_speed", T::number, "{range}: a driven wheel's spin relative to the chassis at full throttle")
+          .range({0.0, 1000.0}, "rad/s")
+          .by_default(number(d.motor_speed)),
+      Key("brake_torque", T::number, "{range}: most torque each wheel's brake holds")
+          .range(torque, "N·m")
+          .by_default(number(d.brake_torque)),
+      Key("lean_torque", T::number, "{range}: torque on the chassis at full lean")
+          .range(torque, "N·m")
+          .by_default(number(d.lean_torque)),
+      Key("head", T::object,
+          "the driver's head: a player vehicle's touching the ground or a static or kinematic prop loses the "
+          "level")
+          .nested(LevelObject::head),
+  });
+}
+
+std::vector<LevelKey> chassis_keys() {
+  std::vector<LevelKey> keys =
+      rows_of(prop_keys(), {"shape", "position", "angle", "size", "radius", "points", "density", "friction",
+                            "restitution", "velocity", "angular_velocity"});
+  for (LevelKey& k : keys) {
+    if (k.key == "shape") {
+      k.choices.pop_back();  // no chain: a chassis has mass
+      k.description = "\"box\", \"circle\" or \"polygon\"";
+    }
+    if (k.key == "points") {
+      std::erase_if(k.shapes, [](const std::string& s) { return s == "chain"; });
+      std::erase_if(k.point_counts, [](const LevelKey::PointCount& c) { return c.shape == "chain"; });
+      const LevelKey::PointCount& polygon = k.point_counts.front();
+      k.description = "polygon only, relative to position, each in " + range_for_docs(k.range) + "; " +
+                      std::to_string(polygon.min) + " to " + std::to_string(polygon.max) +
+                      ", convex, counter-clockwise";
+    }
+  }
+  return keys;
+}
+
+std::vector<LevelKey> wheel_keys() {
+  using T = KeyType;
+  const AxleSpec axle;
+  std::vector<LevelKey> keys = table({
+      Key("axle", T::vec2, "where the wheel's hub hangs, in the chassis' frame, each in {range}")
+          .range({-100.0, 100.0}, "m")
+          .required(),
+      Key("axis", T::vec2, "the suspension's direction in the chassis' frame: a unit vector, each in {range}")
+          .range({-1.0, 1.0})
+          .by_default(vec2(axle.axis)),
+      Key("stiffness", T::number, "{range}: the suspension's spring along the axis; 0 is a rigid axle")
+          .range({0.0, 1e7}, "N/m")
+          .by_default(number(axle.stiffness)),
+      Key("damping", T::number, "{range}: the suspension's damper")
+          .range({0.0, 1e6}, "N·s/m")
+          .by_default(number(axle.damping)),
+      Key("driven", T::boolean, "the motor turns this wheel").by_default(axle.driven),
+  });
+  for (LevelKey& k :
+       rows_of(tire_keys(), {"material", "angle", "outer_radius", "inner_radius", "segments", "mass",
+                             "friction", "kinetic_friction", "pressure", "compliance", "spokes",
+                             "material_damping", "rolling_resistance", "restitution"}))
+    keys.push_back(std::move(k));
+  return keys;
+}
+
+std::vector<LevelKey> head_keys() {
+  using T = KeyType;
+  return table({
+      Key("position", T::vec2, "its centre in the chassis' frame, each in {range}")
+          .range({-100.0, 100.0}, "m")
+          .required(),
+      Key("radius", T::number, "{range}").range({kMinPropLength, 10.0}, "m").required(),
+  });
+}
+
 const std::array<std::vector<LevelKey>, kLevelObjects>& all_keys() {
   // Built once, in LevelObject's order.
   static const std::array<std::vector<LevelKey>, kLevelObjects> keys{
-      root_keys(), solver_keys(), tire_keys(),   compliance_keys(), obstacle_keys(), prop_keys(),
-      path_keys(), region_keys(), budget_keys(), bounds_keys(),     medals_keys()};
+      root_keys(),   solver_keys(),  tire_keys(),    compliance_keys(), obstacle_keys(),
+      prop_keys(),   path_keys(),    region_keys(),  budget_keys(),     bounds_keys(),
+      medals_keys(), vehicle_keys(), chassis_keys(), wheel_keys(),      head_keys()};
   return keys;
 }
 

@@ -117,11 +117,19 @@ void populate_world(const Level& level, World& world) {
   for (const Obstacle& o : level.obstacles) world.add_obstacle(o);
   for (const PropSpec& p : level.props) world.add_prop(p);
   for (const TireSpec& t : level.tires) world.add_tire(t);
+  // The reader has checked what add_vehicle refuses (the method, the wheel count): each is added.
+  for (const LevelVehicle& v : level.vehicles) {
+    const std::optional<std::uint32_t> added = world.add_vehicle(v.spec);
+    if (added && v.player) world.set_player_vehicle(*added);
+  }
 }
 
 std::unique_ptr<LevelSession> make_session(const Level& level) {
   auto session = std::make_unique<LevelSession>(level.solver, level.gravity);
   populate_world(level, session->world());
+  for (std::size_t v = 0; v < level.vehicles.size(); ++v)
+    if (level.vehicles[v].head)
+      session->set_vehicle_head(static_cast<std::uint32_t>(v), *level.vehicles[v].head);
   session->set_bounds(level.bounds.box);
   session->set_script(level.script);
   return session;

@@ -17,6 +17,9 @@ namespace {
 
 using json = nlohmann::json;
 
+// How far from 1 the length of a wheel's axis may be before it is refused rather than normalised.
+constexpr double kAxisTolerance = 1e-3;
+
 // A unit as messages print it: the reference page's "kg/m²" as "kg/m^2".
 std::string message_unit(const LevelKey& key) {
   std::string out = key.unit;
@@ -151,46 +154,48 @@ Vec2 read_gravity(JsonReader& r, const json& j, const std::string& path, const c
   return r.vec2(j, path, key, fallback, x.range, x.unit, required);
 }
 
-TireSpec read_tire(JsonReader& r, const json& j, const std::string& path) {
-  const auto key = [](std::string_view name) -> const LevelKey& {
-    return level_key(LevelObject::tire, name);
+TireSpec read_tire(JsonReader& r, const json& j, const std::string& path, LevelObject object) {
+  // The keys `object` has of a tire's (a wheel's are its material's): the others keep TireSpec{}'s.
+  const auto key = [object](std::string_view name) { return find_level_key(object, name); };
+  const auto number = [&](std::string_view name, double& field) {
+    if (const LevelKey* k = key(name)) field = read_number(r, j, path, *k, field);
   };
   TireSpec t;
-  if (!r.object(j, path, level_key_names(LevelObject::tire))) return t;
-  kMaterials[read_choice_index(r, j, path, key("material"), 0)].apply_to(t);
-  t.position = read_vec2(r, j, path, key("position"), t.position);
-  t.velocity = read_vec2(r, j, path, key("velocity"), t.velocity);
-  t.angle = read_number(r, j, path, key("angle"), t.angle);
-  t.angular_velocity = read_number(r, j, path, key("angular_velocity"), t.angular_velocity);
-  t.outer_radius = read_number(r, j, path, key("outer_radius"), t.outer_radius);
-  t.inner_radius = read_number(r, j, path, key("inner_radius"), t.inner_radius);
+  if (!r.object(j, path, level_key_names(object))) return t;
+  kMaterials[read_choice_index(r, j, path, *key("material"), 0)].apply_to(t);
+  if (const LevelKey* k = key("position")) t.position = read_vec2(r, j, path, *k, t.position);
+  if (const LevelKey* k = key("velocity")) t.velocity = read_vec2(r, j, path, *k, t.velocity);
+  number("angle", t.angle);
+  number("angular_velocity", t.angular_velocity);
+  number("outer_radius", t.outer_radius);
+  number("inner_radius", t.inner_radius);
   if (j.contains("outer_radius") || j.contains("inner_radius")) {
     if (t.inner_radius >= t.outer_radius)
       r.fail(join_path(path, "inner_radius"), "must be less than outer_radius (" +
                                                   JsonReader::describe(t.outer_radius) + "), got " +
                                                   JsonReader::describe(t.inner_radius));
   }
-  t.segments = read_integer(r, j, path, key("segments"), t.segments);
-  t.mass = read_number(r, j, path, key("mass"), t.mass);
-  t.friction = read_number(r, j, path, key("friction"), t.friction);
+  t.segments = read_integer(r, j, path, *key("segments"), t.segments);
+  number("mass", t.mass);
+  number("friction", t.friction);
   // Kinetic friction defaults to the static coefficient (the row's default_follows) when the tire
   // gives one, else to its material's.
-  t.kinetic_friction = read_number(r, j, path, key("kinetic_friction"),
+  t.kinetic_friction = read_number(r, j, path, *key("kinetic_friction"),
                                    j.contains("friction") ? t.friction : t.kinetic_friction);
-  t.pressure = read_number(r, j, path, key("pressure"), t.pressure);
+  number("pressure", t.pressure);
   if (const auto it = j.find("compliance"); it != j.end())
     t.compliance = read_compliance(r, *it, join_path(path, "compliance"), t.compliance);
-  t.spokes = read_enum(r, j, path, key("spokes"), t.spokes);
-  t.material_damping = read_number(r, j, path, key("material_damping"), t.material_damping);
-  t.rolling_resistance = read_number(r, j, path, key("rolling_resistance"), t.rolling_resistance);
-  t.player = read_boolean(r, j, path, key("player"), t.player);
-  t.drive_acceleration = read_number(r, j, path, key("drive_acceleration"), t.drive_acceleration);
-  t.jump_speed = read_number(r, j, path, key("jump_speed"), t.jump_speed);
-  t.max_speed = read_number(r, j, path, key("max_speed"), t.max_speed);
-  t.restitution = read_number(r, j, path, key("restitution"), t.restitution);
-  t.inflate_rate = read_number(r, j, path, key("inflate_rate"), t.inflate_rate);
-  t.min_pressure = read_number(r, j, path, key("min_pressure"), t.min_pressure);
-  t.max_pressure = read_number(r, j, path, key("max_pressure"), t.max_pressure);
+  t.spokes = read_enum(r, j, path, *key("spokes"), t.spokes);
+  number("material_damping", t.material_damping);
+  number("rolling_resistance", t.rolling_resistance);
+  if (const LevelKey* k = key("player")) t.player = read_boolean(r, j, path, *k, t.player);
+  number("drive_acceleration", t.drive_acceleration);
+  number("jump_speed", t.jump_speed);
+  number("max_speed", t.max_speed);
+  number("restitution", t.restitution);
+  number("inflate_rate", t.inflate_rate);
+  number("min_pressure", t.min_pressure);
+  number("max_pressure", t.max_pressure);
   if (t.min_pressure > t.max_pressure)
     r.fail(join_path(path, "max_pressure"), "must be at least min_pressure (" +
                                                 JsonReader::describe(t.min_pressure) + "), got " +
@@ -263,13 +268,14 @@ Obstacle read_obstacle(JsonReader& r, const json& j, const std::string& path) {
 
 }  // namespace
 
-PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
-  const auto key = [](std::string_view name) -> const LevelKey& {
-    return level_key(LevelObject::prop, name);
-  };
+PropSpec read_prop(JsonReader& r, const json& j, const std::string& path, LevelObject object) {
+  // A chassis has the keys of a dynamic prop that is not a chain: the others keep PropSpec{}'s.
+  const auto key = [object](std::string_view name) -> const LevelKey& { return level_key(object, name); };
+  const auto has = [object](std::string_view name) { return find_level_key(object, name) != nullptr; };
   PropSpec p;
-  if (!r.object(j, path, level_key_names(LevelObject::prop))) return p;
-  p.name = read_string(r, j, path, key("name"), p.name);
+  if (object == LevelObject::chassis) p.type = PropType::dynamic_body;
+  if (!r.object(j, path, level_key_names(object))) return p;
+  if (has("name")) p.name = read_string(r, j, path, key("name"), p.name);
   const LevelKey& shape_key = key("shape");
   if (!j.contains("shape")) {
     std::string choices;
@@ -277,14 +283,14 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
     r.fail(join_path(path, "shape"), "is required: one of " + choices);
   }
   p.shape = read_enum(r, j, path, shape_key, p.shape);
-  const std::string& shape = shape_key.choices[static_cast<std::size_t>(p.shape)];
-  p.type = read_enum(r, j, path, key("type"), p.type);
-  const std::string& type = key("type").choices[static_cast<std::size_t>(p.type)];
+  const std::string& shape = level_key(LevelObject::prop, "shape").choices[static_cast<std::size_t>(p.shape)];
+  if (has("type")) p.type = read_enum(r, j, path, key("type"), p.type);
+  const std::string& type = level_key(LevelObject::prop, "type").choices[static_cast<std::size_t>(p.type)];
   p.position = read_vec2(r, j, path, key("position"), p.position);
   p.angle = read_number(r, j, path, key("angle"), p.angle);
 
   // Shape keys: each belongs to some shapes only.
-  for (const LevelKey& k : level_keys(LevelObject::prop)) {
+  for (const LevelKey& k : level_keys(object)) {
     if (!j.contains(k.key) || applies_to_shape(k, shape)) continue;
     std::string which;
     for (std::size_t i = 0; i < k.shapes.size(); ++i)
@@ -303,7 +309,7 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
                                               JsonReader::describe(j["points"]));
       break;
     }
-    case PropShape::chain:
+    case PropShape::chain:  // not a chassis' choice
       p.points = read_points(r, j, path, points, *point_count(points, shape));
       p.loop = read_boolean(r, j, path, key("loop"), p.loop);
       p.thickness = read_number(r, j, path, key("thickness"), p.thickness);
@@ -327,13 +333,85 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path) {
   p.restitution = read_number(r, j, path, key("restitution"), p.restitution);
   p.velocity = read_vec2(r, j, path, key("velocity"), p.velocity);
   p.angular_velocity = read_number(r, j, path, key("angular_velocity"), p.angular_velocity);
-  if (const auto it = j.find("path"); it != j.end()) {
+  if (const auto it = j.find("path"); it != j.end() && has("path")) {
     if (p.type != PropType::kinematic_body)
       r.fail(join_path(path, "path"), "applies only to kinematic props, and this one is " + type);
     p.path = read_path(r, *it, join_path(path, "path"));
   }
   return p;
 }
+
+namespace {
+
+WheelSpec read_wheel(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::wheel, name);
+  };
+  WheelSpec w;
+  w.tire = read_tire(r, j, path, LevelObject::wheel);  // checks the wheel's keys too
+  if (!j.is_object()) return w;
+  w.axle.point = read_vec2(r, j, path, key("axle"), w.axle.point);
+  const Vec2 axis = read_vec2(r, j, path, key("axis"), w.axle.axis);
+  // A unit vector as written to a few digits ([0.7071, 0.7071]) is made exactly one; anything
+  // further from it is a mistake.
+  const double norm = length(axis);
+  if (std::abs(norm - 1.0) <= kAxisTolerance)
+    w.axle.axis = axis / norm;
+  else
+    r.fail(join_path(path, "axis"),
+           "must be a unit vector (length 1 within " + JsonReader::describe(kAxisTolerance) + "), got " +
+               JsonReader::describe(j["axis"]) + " of length " + JsonReader::describe(norm));
+  w.axle.stiffness = read_number(r, j, path, key("stiffness"), w.axle.stiffness);
+  w.axle.damping = read_number(r, j, path, key("damping"), w.axle.damping);
+  w.axle.driven = read_boolean(r, j, path, key("driven"), w.axle.driven);
+  return w;
+}
+
+VehicleHead read_head(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::head, name);
+  };
+  VehicleHead h;
+  if (!r.object(j, path, level_key_names(LevelObject::head))) return h;
+  h.position = read_vec2(r, j, path, key("position"), h.position);
+  h.radius = read_number(r, j, path, key("radius"), h.radius);
+  return h;
+}
+
+LevelVehicle read_vehicle(JsonReader& r, const json& j, const std::string& path) {
+  const auto key = [](std::string_view name) -> const LevelKey& {
+    return level_key(LevelObject::vehicle, name);
+  };
+  LevelVehicle v;
+  if (!r.object(j, path, level_key_names(LevelObject::vehicle))) return v;
+  v.player = read_boolean(r, j, path, key("player"), v.player);
+  if (const auto it = j.find("chassis"); it != j.end())
+    v.spec.chassis = read_prop(r, *it, join_path(path, "chassis"), LevelObject::chassis);
+  else
+    r.fail(join_path(path, "chassis"), "is required: the body the wheels hang from, as a prop's keys");
+  const LevelKey& wheels = key("wheels");
+  const auto min_wheels = static_cast<std::size_t>(wheels.range.min);
+  const auto max_wheels = static_cast<std::size_t>(wheels.range.max);
+  const std::string count = std::to_string(min_wheels) + " to " + std::to_string(max_wheels) + " wheels";
+  const std::string wheels_path = join_path(path, "wheels");
+  if (const auto it = j.find("wheels"); it == j.end()) {
+    r.fail(wheels_path, "is required: an array of " + count);
+  } else if (r.array(*it, wheels_path, max_wheels)) {
+    if (it->size() < min_wheels)
+      r.fail(wheels_path, "must be an array of " + count + ", got " + std::to_string(it->size()));
+    for (std::size_t i = 0; i < it->size(); ++i)
+      v.spec.wheels.push_back(read_wheel(r, (*it)[i], join_path(wheels_path, i)));
+  }
+  Drivetrain& d = v.spec.drivetrain;
+  d.motor_torque = read_number(r, j, path, key("motor_torque"), d.motor_torque);
+  d.motor_speed = read_number(r, j, path, key("motor_speed"), d.motor_speed);
+  d.brake_torque = read_number(r, j, path, key("brake_torque"), d.brake_torque);
+  d.lean_torque = read_number(r, j, path, key("lean_torque"), d.lean_torque);
+  if (const auto it = j.find("head"); it != j.end()) v.head = read_head(r, *it, join_path(path, "head"));
+  return v;
+}
+
+}  // namespace
 
 namespace {
 
@@ -386,20 +464,31 @@ void check_budgets(JsonReader& r, const json& doc, const Level& level) {
   const auto named = [&](ParamId id, int limit) {
     return std::string(parameter(id).key) + " (" + std::to_string(limit) + ")";
   };
+  // The level's tires, then its vehicles' wheels, each named by its path.
+  std::vector<std::pair<std::string, int>> tires;  // path, segments
+  for (std::size_t i = 0; i < level.tires.size(); ++i)
+    tires.emplace_back(join_path("/tires", i), level.tires[i].segments);
+  for (std::size_t i = 0; i < level.vehicles.size(); ++i)
+    for (std::size_t w = 0; w < level.vehicles[i].spec.wheels.size(); ++w)
+      tires.emplace_back(join_path(join_path(join_path("/vehicles", i), "wheels"), w),
+                         level.vehicles[i].spec.wheels[w].tire.segments);
   std::size_t particles = 0;
-  for (std::size_t i = 0; i < level.tires.size(); ++i) {
-    particles += 2 * static_cast<std::size_t>(level.tires[i].segments);
+  for (std::size_t i = 0; i < tires.size(); ++i) {
+    particles += 2 * static_cast<std::size_t>(tires[i].second);
     if (i + 1 == static_cast<std::size_t>(b.tires) + 1)
-      r.fail(join_path("/tires", i),
-             "the level's own tires are more than " + named(ParamId::budget_tires, b.tires));
+      r.fail(tires[i].first, "the level's own tires are more than " + named(ParamId::budget_tires, b.tires));
     if (particles > static_cast<std::size_t>(b.particles)) {
-      r.fail(join_path("/tires", i), "the level's own tires have more particles than " +
-                                         named(ParamId::budget_particles, b.particles));
+      r.fail(tires[i].first, "the level's own tires have more particles than " +
+                                 named(ParamId::budget_particles, b.particles));
       break;
     }
   }
-  if (level.props.size() > static_cast<std::size_t>(b.props))
-    r.fail(join_path("/props", static_cast<std::size_t>(b.props)),
+  const std::size_t props = level.props.size() + level.vehicles.size();  // a chassis is a prop
+  if (props > static_cast<std::size_t>(b.props))
+    r.fail(level.props.size() > static_cast<std::size_t>(b.props)
+               ? join_path("/props", static_cast<std::size_t>(b.props))
+               : join_path(join_path("/vehicles", static_cast<std::size_t>(b.props) - level.props.size()),
+                           "chassis"),
            "the level's own props are more than " + named(ParamId::budget_props, b.props));
   const auto triggers = doc.find("triggers");
   if (triggers == doc.end() || !triggers->is_array()) return;
@@ -468,13 +557,27 @@ void read_bounds(JsonReader& r, const json& doc, Level& level, const std::vector
                                          written("/bounds/max"));
     return;
   }
-  // The player starts inside: a level lost before its first tick is a mistake.
+  // The player starts inside: a level lost before its first tick is a mistake. A player vehicle
+  // starts where its chassis does.
   std::size_t player = 0;
   for (std::size_t i = 0; i < level.tires.size(); ++i)
     if (level.tires[i].player) player = i;
-  if (player >= level.tires.size()) return;
-  const Vec2 start = level.tires[player].position;
-  const std::string position = join_path(join_path("/tires", player), "position");
+  Vec2 start;
+  std::string position;
+  const auto vehicle = std::find_if(level.vehicles.begin(), level.vehicles.end(),
+                                    [](const LevelVehicle& v) { return v.player; });
+  if (vehicle != level.vehicles.end()) {
+    start = vehicle->spec.chassis.position;
+    position = join_path(
+        join_path(join_path("/vehicles", static_cast<std::size_t>(vehicle - level.vehicles.begin())),
+                  "chassis"),
+        "position");
+  } else if (player < level.tires.size()) {
+    start = level.tires[player].position;
+    position = join_path(join_path("/tires", player), "position");
+  } else {
+    return;
+  }
   if (!doc.contains(json::json_pointer(position))) return;  // missing: reported as such
   const std::string where = " the player's start " + written(position) + " (" + position + ")";
   if (b.min && !(b.min->x <= start.x && b.min->y <= start.y))
@@ -522,6 +625,14 @@ void check_totals(JsonReader& r, const json& doc, const Level& level) {
   for (std::size_t i = 0; i < level.props.size(); ++i)
     count_prop(t, level.props[i].points.size() + level.props[i].path.waypoints.size(),
                join_path("/props", i));
+  for (std::size_t i = 0; i < level.vehicles.size(); ++i) {
+    const std::string path = join_path("/vehicles", i);
+    const VehicleSpec& v = level.vehicles[i].spec;
+    count_prop(t, v.chassis.points.size(), join_path(path, "chassis"));
+    for (std::size_t w = 0; w < v.wheels.size(); ++w)
+      count_tire(t, static_cast<std::size_t>(v.wheels[w].tire.segments),
+                 join_path(join_path(path, "wheels"), w));
+  }
   // The script's spawn actions, read from the document so that each is named by its own path.
   if (const auto triggers = doc.find("triggers"); triggers != doc.end() && triggers->is_array()) {
     for (std::size_t i = 0; i < triggers->size(); ++i) {
@@ -580,8 +691,8 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
   if (const auto it = doc.find("solver"); it != doc.end()) level.solver = read_solver(r, *it, "/solver");
   if (const auto it = doc.find("budgets"); it != doc.end()) level.budgets = read_budgets(r, *it, "/budgets");
 
+  std::string first_player;  // the player tire's or vehicle's path
   if (const auto it = doc.find("tires"); it != doc.end() && r.array(*it, "/tires", LevelLimits::max_tires)) {
-    std::string first_player;
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string path = join_path("/tires", i);
       level.tires.push_back(read_tire(r, (*it)[i], path));
@@ -609,6 +720,23 @@ std::optional<Level> read_level(const json& doc, std::vector<JsonIssue>& issues)
         r.fail(path + "/name", "must be unique, and /props/" + std::to_string(first->second) +
                                    " is already \"" + printable(name) + "\"");
     }
+  }
+  if (const auto it = doc.find("vehicles");
+      it != doc.end() && r.array(*it, "/vehicles", LevelLimits::max_vehicles)) {
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const std::string path = join_path("/vehicles", i);
+      level.vehicles.push_back(read_vehicle(r, (*it)[i], path));
+      if (!level.vehicles.back().player) continue;
+      if (first_player.empty())
+        first_player = path;
+      else
+        r.fail(path + "/player",
+               "only one tire or vehicle may be the player, and " + first_player + " already is");
+    }
+    if (!level.vehicles.empty() && level.solver.method != SolverMethod::global)
+      r.fail("/vehicles", std::string("a level with vehicles needs the global solver method (\"solver\": "
+                                      "{\"method\": \"global\"}), and this one's is \"") +
+                              method_name(level.solver.method) + "\"");
   }
   std::vector<std::string> prop_names;
   for (const PropSpec& p : level.props)

@@ -15,8 +15,12 @@
 
 namespace tire {
 
-TireSpec read_tire(JsonReader& r, const nlohmann::json& j, const std::string& path);
-PropSpec read_prop(JsonReader& r, const nlohmann::json& j, const std::string& path);
+// A tire, or (LevelObject::wheel) a wheel's tire: the keys of its material alone.
+TireSpec read_tire(JsonReader& r, const nlohmann::json& j, const std::string& path,
+                   LevelObject object = LevelObject::tire);
+// A prop, or (LevelObject::chassis) a vehicle's chassis: a dynamic prop, no chain.
+PropSpec read_prop(JsonReader& r, const nlohmann::json& j, const std::string& path,
+                   LevelObject object = LevelObject::prop);
 
 // A parameter of the table (tire/parameters.h) at its field in `j`, with the row's range and unit.
 double read_parameter(JsonReader& r, const nlohmann::json& j, const std::string& path, ParamId id,

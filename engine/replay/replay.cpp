@@ -70,14 +70,16 @@ bool read_flag(JsonReader& r, const json& j, const std::string& path, const char
 ReplayInput read_input(JsonReader& r, const json& j, const std::string& path, std::uint64_t ticks) {
   ReplayInput in;
   if (!r.object(j, path,
-                {"tick", "steer", "jump", "inflate", "spawn", "grab", "grab_radius", "drag", "release", "set",
-                 "gravity", "restart"}))
+                {"tick", "steer", "jump", "inflate", "lean", "brake", "spawn", "grab", "grab_radius", "drag",
+                 "release", "set", "gravity", "restart"}))
     return in;
   bool ok = true;
   // Inputs act before the step of their tick, so the last one that can act is ticks − 1.
   in.tick = read_tick(r, j, path, ticks == 0 ? 0 : ticks - 1, ok);
   if (j.contains("steer")) in.steer = r.number(j, path, "steer", 0.0, {-1.0, 1.0}, "");
   if (j.contains("inflate")) in.inflate = r.number(j, path, "inflate", 0.0, {-1.0, 1.0}, "");
+  if (j.contains("lean")) in.lean = r.number(j, path, "lean", 0.0, {-1.0, 1.0}, "");
+  if (j.contains("brake")) in.brake = r.boolean(j, path, "brake", false);
   in.jump = read_flag(r, j, path, "jump");
   if (j.contains("spawn")) in.spawn = r.vec2(j, path, "spawn", {}, kCoordinate, "m");
   if (j.contains("grab")) in.grab = r.vec2(j, path, "grab", {}, kCoordinate, "m");
@@ -203,7 +205,8 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
     // nothing, and a restart drops the steer given before it (a level starts unsteered). Each is
     // refused rather than left for the last to win.
     constexpr std::size_t kNone = SIZE_MAX;
-    std::size_t tick_steer = kNone, tick_jump = kNone, tick_inflate = kNone;
+    std::size_t tick_steer = kNone, tick_jump = kNone, tick_inflate = kNone, tick_lean = kNone,
+                tick_brake = kNone;
     replay.inputs.reserve(it->size());
     for (std::size_t i = 0; i < it->size(); ++i) {
       const std::string path = join_path("/inputs", i);
@@ -216,6 +219,8 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
         tick_steer = kNone;
         tick_jump = kNone;
         tick_inflate = kNone;
+        tick_lean = kNone;
+        tick_brake = kNone;
       }
       if (in.restart && tick_steer != kNone)
         r.fail(path + "/restart",
@@ -235,6 +240,16 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
         r.fail(path + "/inflate", "a second inflate on tick " + std::to_string(in.tick) +
                                       " (the first is /inputs/" + std::to_string(tick_inflate) +
                                       "/inflate): only the last would act; give one inflate per tick");
+      if (in.lean && tick_lean != kNone)
+        r.fail(path + "/lean", "a second lean on tick " + std::to_string(in.tick) +
+                                   " (the first is /inputs/" + std::to_string(tick_lean) +
+                                   "/lean): only the last would act; give one lean per tick");
+      if (in.brake && tick_brake != kNone)
+        r.fail(path + "/brake", "a second brake on tick " + std::to_string(in.tick) +
+                                    " (the first is /inputs/" + std::to_string(tick_brake) +
+                                    "/brake): only the last would act; give one brake per tick");
+      if (in.lean) tick_lean = i;
+      if (in.brake) tick_brake = i;
       if (in.steer) tick_steer = i;
       if (in.jump) tick_jump = i;
       if (in.inflate) tick_inflate = i;
@@ -329,6 +344,8 @@ std::string replay_to_json(const Replay& replay) {
     ojson o{{"tick", in.tick}};
     if (in.steer) o["steer"] = *in.steer;
     if (in.inflate) o["inflate"] = *in.inflate;
+    if (in.lean) o["lean"] = *in.lean;
+    if (in.brake) o["brake"] = *in.brake;
     if (in.jump) o["jump"] = true;
     if (in.spawn) o["spawn"] = vec(*in.spawn);
     if (in.grab) o["grab"] = vec(*in.grab);
@@ -361,11 +378,14 @@ std::string replay_to_json(const Replay& replay) {
 void apply_input(const ReplayInput& in, LevelSession& session, const Level& level, TickInput& held) {
   if (in.restart) {
     session = std::move(*make_session(level));
-    held.steer = held.inflate = 0.0;
+    held.steer = held.inflate = held.lean = 0.0;
+    held.brake = false;
   }
   World& world = session.world();
   if (in.steer) held.steer = *in.steer;
   if (in.inflate) held.inflate = *in.inflate;
+  if (in.lean) held.lean = *in.lean;
+  if (in.brake) held.brake = *in.brake;
   if (in.jump) held.jump = true;
   if (in.spawn) {
     TireSpec spec;

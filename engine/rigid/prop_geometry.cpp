@@ -206,4 +206,33 @@ bool is_convex_ccw(const std::vector<Vec2>& points) {
   return std::abs(turning - 2.0 * 3.141592653589793) < 1e-6;
 }
 
+namespace {
+
+double segment_distance_squared(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = length_squared(ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return length_squared(p - (a + ab * t));
+}
+
+}  // namespace
+
+bool circle_touches(const PropGeometry& g, Vec2 center, double radius) {
+  if (g.shape == PropShape::circle) return length(center) <= g.radius + radius;
+  const std::vector<Vec2>& v = g.vertices;
+  const std::size_t n = v.size();
+  const bool closed = g.shape != PropShape::chain || g.loop;
+  const double r2 = radius * radius;
+  for (std::size_t i = 0; i + (closed ? 0 : 1) < n; ++i)
+    if (segment_distance_squared(center, v[i], v[(i + 1) % n]) <= r2) return true;
+  if (!closed || n < 3) return false;
+  // Inside a closed outline (a convex polygon, or a closed chain of either winding): crossings.
+  bool inside = false;
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++)
+    if ((v[i].y > center.y) != (v[j].y > center.y) &&
+        center.x < v[j].x + (v[i].x - v[j].x) * (center.y - v[j].y) / (v[i].y - v[j].y))
+      inside = !inside;
+  return inside;
+}
+
 }  // namespace tire

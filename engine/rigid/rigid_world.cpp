@@ -282,6 +282,15 @@ void RigidWorld::set_gravity(Vec2 gravity) {
   gravity_ = gravity;
 }
 
+void RigidWorld::place_prop(std::uint32_t i, Vec2 position, double angle) {
+  if (i >= props_.size() || !props_[i].alive) return;
+  b2Body& b = *bodies_[i];
+  b.SetTransform(to_b2(position), static_cast<float>(angle));
+  b.SetLinearVelocity(b2Vec2(0.0f, 0.0f));
+  b.SetAngularVelocity(0.0f);
+  b.SetAwake(true);
+}
+
 void RigidWorld::apply_impulse_now(std::string_view name, Vec2 impulse) {
   const auto i = find_prop(name);
   if (!i || props_[*i].spec.type != PropType::dynamic_body) return;

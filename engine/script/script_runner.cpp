@@ -39,6 +39,7 @@ const char* to_string(EndReason reason) {
     case EndReason::lose_action: return "lose_action";
     case EndReason::time_limit: return "time_limit";
     case EndReason::out_of_bounds: return "out_of_bounds";
+    case EndReason::head_hit: return "head_hit";
   }
   return "none";
 }
@@ -131,6 +132,9 @@ std::size_t ScriptRunner::count_crossings(TriggerState& state, const RegionCross
     if (crossing.who == Who::player && (!player || id != *player)) continue;
     if (region.contains(host.tire_centroid(t))) scratch_.push_back(id);
   }
+  // A player vehicle crosses as the player, by its chassis' centre of mass.
+  if (const std::optional<Vec2> vehicle = host.player_vehicle_center(); vehicle && region.contains(*vehicle))
+    scratch_.push_back(kPlayerVehicle);
   std::sort(scratch_.begin(), scratch_.end());
 
   // Both lists are ascending: walk them together. A tire that appears inside (spawned there, or
@@ -212,6 +216,7 @@ void ScriptRunner::change_counter(const ChangeCounter& change) {
 }
 
 bool ScriptRunner::player_inside(const Region& region, const ScriptHost& host) const {
+  if (const std::optional<Vec2> vehicle = host.player_vehicle_center()) return region.contains(*vehicle);
   const std::optional<TireId> player = host.player();
   if (!player) return false;
   for (std::size_t t = 0, n = host.tire_count(); t < n; ++t)

@@ -1,10 +1,13 @@
 #include "tire/session/level_session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
 #include "session_script_host.h"
 #include "tire/math/state_hash.h"
+#include "tire/rigid/prop_geometry.h"
+#include "tire/rigid/rigid_world.h"
 
 namespace tire {
 
@@ -29,12 +32,13 @@ void LevelSession::set_script(const ScriptSpec& spec) {
 }
 
 ScriptStatus LevelSession::status() const {
-  if (out_of_bounds_) return ScriptStatus::lost;
+  if (out_of_bounds_ || head_hit_) return ScriptStatus::lost;
   return script_ ? script_->status() : ScriptStatus::running;
 }
 
 EndReason LevelSession::end_reason() const {
   if (out_of_bounds_) return EndReason::out_of_bounds;
+  if (head_hit_) return EndReason::head_hit;
   return script_ ? script_->end_reason() : EndReason::none;
 }
 
@@ -44,9 +48,9 @@ void LevelSession::note_end() {
 
 void LevelSession::check_bounds() {
   if (!bounds_ || status() != ScriptStatus::running) return;
-  const Tire* player = world_.player();
+  const std::optional<Vec2> player = player_position();
   if (!player) return;
-  const Vec2 c = player->centroid();
+  const Vec2 c = *player;
   const Aabb& b = *bounds_;
   if (c.x >= b.min.x && c.x <= b.max.x && c.y >= b.min.y && c.y <= b.max.y) return;
   if (has_checkpoints_) {
@@ -66,11 +70,12 @@ void LevelSession::step(const TickInput& input) {
     return true;
   });
   // The script has stopped once the level is over; so it has when the bounds ended it.
-  if (script_ && !out_of_bounds_) {
+  if (script_ && !out_of_bounds_ && !head_hit_) {
     SessionScriptHost host(*this);
     script_->update(host);
   }
   check_bounds();
+  check_head();
   note_end();
 }
 
@@ -100,7 +105,59 @@ bool LevelSession::take_firing() {
 }
 
 void LevelSession::respawn_player() {
-  if (const Tire* p = world_.player()) world_.reset_tire(p->id, checkpoint_);
+  if (const auto v = world_.player_vehicle())
+    world_.reset_vehicle(*v, checkpoint_);
+  else if (const Tire* p = world_.player())
+    world_.reset_tire(p->id, checkpoint_);
+}
+
+std::optional<Vec2> LevelSession::player_position() const {
+  if (const auto v = world_.player_vehicle())
+    return world_.rigid().prop_state(world_.vehicles().chassis(*v)).center;
+  if (const Tire* p = world_.player()) return p->centroid();
+  return std::nullopt;
+}
+
+void LevelSession::set_vehicle_head(std::uint32_t v, const VehicleHead& head) {
+  if (heads_.size() <= v) heads_.resize(v + 1);
+  heads_[v] = head;
+}
+
+const std::optional<VehicleHead>& LevelSession::vehicle_head(std::uint32_t v) const {
+  static const std::optional<VehicleHead> none;
+  return v < heads_.size() ? heads_[v] : none;
+}
+
+std::optional<Vec2> LevelSession::vehicle_head_center(std::uint32_t v) const {
+  const std::optional<VehicleHead>& head = vehicle_head(v);
+  if (!head || v >= world_.vehicles().count()) return std::nullopt;
+  return world_.rigid().current_pose(world_.vehicles().chassis(v)).to_world(head->position);
+}
+
+void LevelSession::check_head() {
+  if (status() != ScriptStatus::running) return;
+  const auto v = world_.player_vehicle();
+  if (!v) return;
+  const std::optional<Vec2> center = vehicle_head_center(*v);
+  if (!center) return;
+  const double radius = vehicle_head(*v)->radius;
+  const RigidWorld& rigid = world_.rigid();
+  rigid.query(Aabb{*center, *center}.expanded(radius), near_obstacles_, near_props_);
+  bool hit = false;
+  for (const std::uint32_t o : near_obstacles_) {
+    const Aabb& box = rigid.obstacles()[o].box;
+    const Vec2 nearest{std::clamp(center->x, box.min.x, box.max.x),
+                       std::clamp(center->y, box.min.y, box.max.y)};
+    hit = hit || length_squared(nearest - *center) <= radius * radius;
+  }
+  for (const std::uint32_t i : near_props_) {
+    const Prop& p = rigid.props()[i];
+    if (!p.alive || p.spec.type == PropType::dynamic_body) continue;  // the ground is static or kinematic
+    hit = hit || circle_touches(p.geometry, rigid.current_pose(i).to_local(*center), radius);
+  }
+  if (!hit) return;
+  head_hit_ = true;
+  show_message("the driver's head hit the ground", 3.0);
 }
 
 std::optional<TireId> LevelSession::grab(Vec2 point, double radius) {
@@ -147,6 +204,7 @@ std::uint64_t LevelSession::state_hash() const {
   // Only once it happens, so that the digest of every run that never left the bounds stays what it
   // was before bounds existed (the replays' recorded hashes).
   if (out_of_bounds_) h.add(std::uint8_t{1});
+  if (head_hit_) h.add(std::uint8_t{2});
   return h.digest();
 }
 

@@ -18,6 +18,11 @@ std::size_t SessionScriptHost::tire_count() const { return world_.tires().size()
 TireId SessionScriptHost::tire_id(std::size_t index) const { return world_.tires()[index].id; }
 Vec2 SessionScriptHost::tire_centroid(std::size_t index) const { return world_.tires()[index].centroid(); }
 
+std::optional<Vec2> SessionScriptHost::player_vehicle_center() const {
+  if (!world_.player_vehicle()) return std::nullopt;
+  return session_.player_position();
+}
+
 std::optional<std::size_t> SessionScriptHost::find_prop(std::string_view name) const {
   const auto i = world_.rigid().find_prop(name);
   return i ? std::optional<std::size_t>(*i) : std::nullopt;

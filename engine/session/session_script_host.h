@@ -18,6 +18,7 @@ class SessionScriptHost final : public ScriptHost {
   std::size_t tire_count() const override;
   TireId tire_id(std::size_t index) const override;
   Vec2 tire_centroid(std::size_t index) const override;
+  std::optional<Vec2> player_vehicle_center() const override;
   std::optional<std::size_t> find_prop(std::string_view name) const override;
   Vec2 prop_position(std::size_t index) const override;
 

@@ -258,7 +258,7 @@ TireId World::add_tire(const TireSpec& spec) {
   tires_.emplace_back(id, spec, topologies_.of(TireShape::of(spec)));
   for (std::size_t i = 0; i < tire_setting_count_; ++i)
     set_tire_parameter(tires_.back(), tire_settings_[i].id, tire_settings_[i].value);
-  if (spec.player || !player_) player_ = id;
+  if (spec.player || (!player_ && !player_vehicle_)) player_ = id;
   // Room for the contacts between tires, so that stepping never allocates: a tire in a pile
   // touches at most six others, and a pair is counted once.
   const std::size_t pairs = 4 * tires_.size();
@@ -357,7 +357,7 @@ std::optional<std::uint32_t> World::add_vehicle(const VehicleSpec& spec) {
     segments = std::max(segments, t.n);
   }
   player_ = player;  // a wheel is not the player
-  if (!player_ && !tires_.empty()) {
+  if (!player_ && !player_vehicle_ && !tires_.empty()) {
     const auto free = std::find_if(tires_.begin(), tires_.end(), [](const Tire& t) { return t.wheel < 0; });
     if (free != tires_.end()) player_ = free->id;
   }
@@ -373,6 +373,27 @@ bool World::set_vehicle_control(std::uint32_t v, const VehicleControl& control) 
 bool World::set_player_vehicle(std::uint32_t v) {
   if (v >= vehicles_.count()) return false;
   player_vehicle_ = v;
+  player_.reset();  // the player is the vehicle, not a tire
+  return true;
+}
+
+bool World::reset_vehicle(std::uint32_t v, std::optional<Vec2> position) {
+  if (v >= vehicles_.count()) return false;
+  const double before = energy_now();
+  const std::uint32_t chassis = vehicles_.chassis(v);
+  const Vec2 at = position.value_or(rigid_.props()[chassis].spec.position);
+  rigid_.place_prop(chassis, at, 0.0);
+  vehicles_.clear(v);
+  const Pose pose = Pose::make(at, 0.0);
+  for (std::size_t w = 0; w < vehicles_.wheel_count(v); ++w) {
+    Tire& t = tires_[vehicles_.wheel_tire(v, w)];
+    wake_island_of(t);
+    t.spec.position = pose.to_world(vehicles_.axle(v, w).point);
+    t.spec.velocity = {};
+    t.spec.angular_velocity = 0.0;
+    t.reset();
+  }
+  energy_in_ += energy_now() - before;
   return true;
 }
 

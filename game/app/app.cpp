@@ -122,7 +122,11 @@ void App::after_level_change() {
   bounds_ = level_bounds(session_.simulation());
   world_renderer_.set_underground(underground(session_.simulation()));
   const std::optional<tire::TireView> player = player_view();
-  camera_.snap(player ? camera_.aim(player->centroid, {}) : (bounds_.min + bounds_.max) * 0.5, bounds_);
+  const std::optional<tire::VehicleView> vehicle = player_vehicle_view();
+  camera_.snap(vehicle  ? camera_.aim(vehicle->center, {})
+               : player ? camera_.aim(player->centroid, {})
+                        : (bounds_.min + bounds_.max) * 0.5,
+               bounds_);
   accumulator_ = 0.0;
   pending_jump_ = false;
   grabbing_ = false;
@@ -200,6 +204,13 @@ void App::editor_frame() {
 }
 
 bool App::level_over() const { return session_.simulation().status() != tire::ScriptStatus::running; }
+
+std::optional<tire::VehicleView> App::player_vehicle_view() const {
+  const tire::Simulation& simulation = session_.simulation();
+  for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i)
+    if (v->player) return v;
+  return std::nullopt;
+}
 
 std::optional<tire::TireView> App::player_view() const {
   const std::optional<tire::TireId> id = session_.simulation().player();
@@ -422,13 +433,16 @@ tire::TickInput App::tick_input() const {
   const double pump = (held(SDL_SCANCODE_LSHIFT, SDL_SCANCODE_RSHIFT) ? 1.0 : 0.0) -
                       (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
   in.inflate = std::clamp(pump + gamepads_.inflate(), -1.0, 1.0);
-  // A vehicle (the level's player may be one): Up/W leans back, Down/S forward, Space brakes; the
-  // steer above is its throttle. The world reads them only for a vehicle, the jump and the pump only
-  // for a tire.
-  const double lean = (held(SDL_SCANCODE_UP, SDL_SCANCODE_W) ? 1.0 : 0.0) -
-                      (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
-  in.lean = std::clamp(lean + gamepads_.lean(), -1.0, 1.0);
-  in.brake = held_.contains(SDL_SCANCODE_SPACE) || gamepads_.brake();
+  // A player vehicle: Up/W (or the pad's stick) leans back, Down/S forward, Space (or the pad's A
+  // held) brakes; the steer above is its throttle. It neither jumps nor inflates.
+  if (player_vehicle_view()) {
+    const double lean = (held(SDL_SCANCODE_UP, SDL_SCANCODE_W) ? 1.0 : 0.0) -
+                        (held(SDL_SCANCODE_DOWN, SDL_SCANCODE_S) ? 1.0 : 0.0);
+    in.lean = std::clamp(lean + gamepads_.lean(), -1.0, 1.0);
+    in.brake = held_.contains(SDL_SCANCODE_SPACE) || gamepads_.brake();
+    in.jump = false;
+    in.inflate = 0.0;
+  }
   return in;
 }
 
@@ -551,7 +565,9 @@ void App::draw_frame(double wall_seconds) {
   // The camera holds still while the mouse drags a tire, so the cursor keeps pointing where it pulls,
   // and once the tire has left the level: it watches it fall away rather than follow it down.
   const bool gone = session_.simulation().end_reason() == tire::EndReason::out_of_bounds;
-  if (const std::optional<tire::TireView> p = player_view(); p && !grabbing_ && !gone)
+  if (const std::optional<tire::VehicleView> v = player_vehicle_view(); v && !grabbing_ && !gone)
+    camera_.follow(camera_.aim(v->center, v->velocity), bounds_, wall_seconds);
+  else if (const std::optional<tire::TireView> p = player_view(); p && !grabbing_ && !gone)
     camera_.follow(camera_.aim(session_.interpolated_centroid(*p, alpha), p->velocity), bounds_,
                    wall_seconds);
 

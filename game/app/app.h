@@ -106,7 +106,8 @@ class App {
   void draw_ui();
   std::string summary_json(long long frames) const;
   bool level_over() const;
-  std::optional<tire::TireView> player_view() const;  // the player tire, if there is one
+  std::optional<tire::TireView> player_view() const;             // the player tire, if there is one
+  std::optional<tire::VehicleView> player_vehicle_view() const;  // the player vehicle, if there is one
   void warn(const std::string& text);
   void save_replay();
   // "" when the outputs asked for (--record, --screenshot, --audio-log) may be written, else why

@@ -95,6 +95,7 @@ const char* end_title(tire::ScriptStatus status, tire::EndReason reason) {
   switch (reason) {
     case tire::EndReason::time_limit: return "Time's up";
     case tire::EndReason::out_of_bounds: return "Off the edge";
+    case tire::EndReason::head_hit: return "Crashed";
     default: return "You lost";
   }
 }
@@ -132,6 +133,8 @@ EndChoice draw_end_screen(tire::ScriptStatus status, tire::EndReason reason, con
       centred_text("The time limit ran out before the finish.", {0.9f, 0.9f, 0.9f, 1.0f});
     else if (reason == tire::EndReason::out_of_bounds)
       centred_text("The tire left the level.", {0.9f, 0.9f, 0.9f, 1.0f});
+    else if (reason == tire::EndReason::head_hit)
+      centred_text("The driver's head hit the ground.", {0.9f, 0.9f, 0.9f, 1.0f});
     if (!note.empty()) centred_text(note.c_str(), {1.0f, 0.85f, 0.35f, 1.0f});
     if (medals) draw_medals(won ? medal : tire::Medal::none, *medals, won);
     ImGui::Spacing();

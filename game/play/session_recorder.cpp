@@ -61,7 +61,8 @@ void SessionRecorder::begin(const std::filesystem::path& level_file, tire::Vec2 
   level_sha256_ = level_sha(level_file_);
   // The level path is made relative to the replay file when saved; the recorder holds a placeholder.
   recorder_.emplace(level_file_.string(), level_sha256_);
-  steer_ = inflate_ = 0.0;
+  steer_ = inflate_ = lean_ = 0.0;
+  brake_ = false;
   gravity_ = gravity;
 }
 
@@ -82,7 +83,8 @@ void SessionRecorder::on_events(std::uint64_t, const std::vector<SessionEvent>& 
             if (recorder_ && file == level_file_ && level_sha(file) == level_sha256_) {
               in.restart = true;  // the same level, restarted: one recording goes on
               input(in);
-              steer_ = inflate_ = 0.0;
+              steer_ = inflate_ = lean_ = 0.0;
+              brake_ = false;
               gravity_ = tire::level_info(*e.level).gravity;
             } else {  // another level, or the file changed: a new recording
               begin(file, tire::level_info(*e.level).gravity);
@@ -140,8 +142,16 @@ void SessionRecorder::on_step(std::uint64_t, const tire::TickInput& input_now) {
     in.inflate = input_now.inflate;
     inflate_ = input_now.inflate;
   }
+  if (input_now.lean != lean_) {
+    in.lean = input_now.lean;
+    lean_ = input_now.lean;
+  }
+  if (input_now.brake != brake_) {
+    in.brake = input_now.brake;
+    brake_ = input_now.brake;
+  }
   in.jump = input_now.jump;
-  if (in.steer || in.jump || in.inflate) input(in);
+  if (in.steer || in.jump || in.inflate || in.lean || in.brake) input(in);
 }
 
 void SessionRecorder::on_stepped(const tire::Simulation& session) {

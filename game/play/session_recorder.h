@@ -57,6 +57,8 @@ class SessionRecorder final : public SessionObserver {
   std::string level_sha256_;
   double steer_ = 0.0;
   double inflate_ = 0.0;
+  double lean_ = 0.0;
+  bool brake_ = false;
   tire::Vec2 gravity_;
 };
 

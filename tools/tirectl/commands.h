@@ -12,6 +12,8 @@ struct RunOptions {
   long long ticks = 60;
   std::vector<std::string> overrides;
   double steer = 0.0;
+  double lean = 0.0;   // a player vehicle's lean, held for the whole run
+  bool brake = false;  // a player vehicle's brakes, held for the whole run
   std::vector<long long> jump_at;
   long long trace_every = 0;  // > 0: a readable line about the player every this many ticks (stderr)
   std::string input;          // a replay whose inputs drive the run

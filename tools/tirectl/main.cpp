@@ -18,12 +18,18 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--ticks", run.ticks, "Fixed ticks to step")->transform(integer_in({0, 1e8}));
   run_cmd->add_option("--set", run.overrides,
                       "Override a numeric key by dotted path, e.g. solver.substeps=16");
-  // A replay given with --input drives the player: --steer and --jump-at would be ignored, so they
+  // A replay given with --input drives the player: --steer, --lean, --brake and --jump-at would be
+  // ignored, so they
   // exclude it (CLI11: "--input excludes --steer", exit 2).
   CLI::Option* input_opt =
       run_cmd->add_option("--input", run.input, "Drive the player with the inputs of this replay file");
   run_cmd->add_option("--steer", run.steer, "Player steering in [-1, 1] for the whole run")
       ->check(number_in({-1, 1}))
+      ->excludes(input_opt);
+  run_cmd->add_option("--lean", run.lean, "A player vehicle's lean in [-1, 1] for the whole run")
+      ->check(number_in({-1, 1}))
+      ->excludes(input_opt);
+  run_cmd->add_flag("--brake", run.brake, "Hold a player vehicle's brakes for the whole run")
       ->excludes(input_opt);
   run_cmd->add_option("--jump-at", run.jump_at, "Ask the player to jump at this tick (repeatable)")
       ->transform(integer_in({0, 1e8}))

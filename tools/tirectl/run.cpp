@@ -89,6 +89,19 @@ struct EnergyWatch {
   }
 };
 
+// The player vehicle, if the player is one.
+std::optional<tire::VehicleView> player_vehicle(const tire::Simulation& simulation) {
+  for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i)
+    if (v->player) return v;
+  return std::nullopt;
+}
+
+nlohmann::ordered_json vehicle_json(const tire::VehicleView& v) {
+  return {{"index", v.index},          {"player", v.player},
+          {"position", vec(v.center)}, {"velocity", vec(v.velocity)},
+          {"angle", v.pose.angle},     {"angular_velocity", v.angular_velocity}};
+}
+
 nlohmann::ordered_json summary(const tire::Simulation& simulation,
                                const std::optional<tire::LevelMedals>& medals, const SubstepTally& tally,
                                const EnergyWatch& energy) {
@@ -110,6 +123,10 @@ nlohmann::ordered_json summary(const tire::Simulation& simulation,
     props.push_back(
         {{"name", p.name}, {"position", vec(p.state.pose.position)}, {"angle", p.state.pose.angle}});
   }
+  // Each vehicle's chassis: its centre of mass, velocity and angle.
+  nlohmann::ordered_json vehicles = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i)
+    vehicles.push_back(vehicle_json(*v));
   const tire::SolverReport report = simulation.solver_report();
   // Each run budget reached (levels/README.md, "budgets"): when first, and how much it dropped.
   nlohmann::ordered_json budgets = nlohmann::ordered_json::array();
@@ -160,6 +177,7 @@ nlohmann::ordered_json summary(const tire::Simulation& simulation,
           {"respawns", simulation.respawns()},
           {"tires", tires},
           {"props", props},
+          {"vehicles", vehicles},
           {"substeps", substeps},
           {"energy", energy.to_json()},
           {"overlap", overlap},
@@ -170,6 +188,15 @@ nlohmann::ordered_json summary(const tire::Simulation& simulation,
 }
 
 void trace(const tire::Simulation& simulation, const EnergyWatch& energy) {
+  if (const std::optional<tire::VehicleView> v = player_vehicle(simulation)) {
+    std::fprintf(stderr,
+                 "t=%6.2f s  chassis (%7.3f, %6.3f) m  speed (%6.2f, %6.2f) m/s  angle %6.3f rad  spin %6.2f "
+                 "rad/s  throttle %5.2f  lean %5.2f%s  %d substeps  energy %.1f J  brought in %.1f J\n",
+                 simulation.time(), v->center.x, v->center.y, v->velocity.x, v->velocity.y, v->pose.angle,
+                 v->angular_velocity, v->throttle, v->lean, v->brake ? "  braking" : "",
+                 simulation.tick_substeps(), energy.now.total(), energy.brought_in);
+    return;
+  }
   const std::optional<tire::TireId> id = simulation.player();
   if (!id) return;
   const tire::TireView p = *simulation.tire(*id);
@@ -223,6 +250,8 @@ int run(const RunOptions& options) {
   } else {
     tire::ReplayInput hold;
     hold.steer = options.steer;
+    if (options.lean != 0.0) hold.lean = options.lean;
+    if (options.brake) hold.brake = true;
     inputs.push_back(hold);
     std::vector<long long> jumps = options.jump_at;
     std::sort(jumps.begin(), jumps.end());

@@ -106,8 +106,8 @@ class Simulation {
   std::uint64_t state_hash() const;
   const SolverConfig& config() const;
   Vec2 gravity() const;
-  std::optional<TireId> player() const;
-  std::vector<TireId> tires() const;  // in the order they were added
+  std::optional<TireId> player() const;  // nullopt when the player is a vehicle (vehicle_at's `player`)
+  std::vector<TireId> tires() const;     // in the order they were added
   std::optional<TireView> tire(TireId id) const;
   // The tires without building a list, for what reads them every frame: by index from 0, in the
   // order they were added (an index moves when a tire before it is removed); nullopt past the
@@ -115,6 +115,10 @@ class Simulation {
   //   for (std::size_t i = 0; const std::optional<TireView> t = simulation.tire_at(i); ++i)
   std::size_t tire_count() const;
   std::optional<TireView> tire_at(std::size_t index) const;
+  // The vehicles (levels/README.md, "Vehicles"), by index from 0 in the order they were added;
+  // nullopt past the last, walked as tire_at is.
+  std::size_t vehicle_count() const;
+  std::optional<VehicleView> vehicle_at(std::size_t index) const;
   std::size_t prop_count() const;  // ids 0 .. prop_count() − 1
   std::optional<PropView> prop(PropId id) const;
   std::span<const Obstacle> obstacles() const;

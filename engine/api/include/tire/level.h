@@ -26,6 +26,8 @@ struct LevelInfo {
   std::optional<double> time_limit;   // s, from its script
   std::optional<LevelMedals> medals;  // the times that earn a medal, if it has them
   std::size_t tires = 0;              // the tires it places (not those its script spawns)
+  std::size_t vehicles = 0;           // the vehicles it places (levels/README.md, "Vehicles")
+  bool player_vehicle = false;        // its player is a vehicle, not a tire
   // The box the player must stay in (levels/README.md, "bounds"), and whether the level gives its
   // lower and upper corners; a corner it does not give is computed from its geometry (a computed
   // top is open: +inf).

@@ -17,11 +17,19 @@
 #include "tire/tire/parameters.h"
 #include "tire/tire/solver_config.h"
 #include "tire/tire/tire_spec.h"
+#include "tire/tire/vehicle_joints.h"
 
 namespace tire {
 
 class LevelSession;
 class World;
+
+// A vehicle as a level places it (levels/README.md, "Vehicles").
+struct LevelVehicle {
+  VehicleSpec spec;
+  bool player = false;
+  std::optional<VehicleHead> head;  // touching an obstacle or a static or kinematic prop loses
+};
 
 struct Level {
   std::string name;
@@ -32,6 +40,7 @@ struct Level {
   std::vector<TireSpec> tires;
   std::vector<Obstacle> obstacles;
   std::vector<PropSpec> props;
+  std::vector<LevelVehicle> vehicles;
   LevelBounds bounds;                 // the box the player must stay in (level_bounds.h)
   ScriptSpec script;                  // regions, goal, time limit, counters, triggers (levels/SCRIPTING.md)
   std::optional<LevelMedals> medals;  // the times that earn a medal (level_medals.h), if it has them
@@ -46,6 +55,7 @@ struct LevelLimits {
   static constexpr std::size_t max_tires = 10000;
   static constexpr std::size_t max_obstacles = 100000;
   static constexpr std::size_t max_props = 10000;
+  static constexpr std::size_t max_vehicles = 16;
   static constexpr double max_coordinate = 10000.0;  // m
 };
 

@@ -46,9 +46,13 @@ enum class LevelObject {
   region,
   budgets,
   bounds,
-  medals
+  medals,
+  vehicle,  // levels/README.md "Vehicles": a chassis on wheels
+  chassis,  // a vehicle's chassis: a dynamic prop's keys
+  wheel,    // a vehicle's wheel: its axle and a tire's material keys
+  head      // the driver's head, in the chassis' frame
 };
-inline constexpr std::size_t kLevelObjects = static_cast<std::size_t>(LevelObject::medals) + 1;
+inline constexpr std::size_t kLevelObjects = static_cast<std::size_t>(LevelObject::head) + 1;
 
 enum class KeyType {
   number,   // a finite number in `range`

@@ -3,11 +3,11 @@
 // into a simulation (Simulation::step(InputFeed&), tire/engine.h) and checked. The game records
 // them, tirectl records and checks them, and the replay suite runs them in ctest.
 //
-// Inputs are changes: steer holds until the next steer; jump, spawn, grab, drag, release, set,
-// gravity and restart act once, at their tick, before that tick's step. Several inputs may share
-// a tick; they apply in file order, and each acts. So a tick holds at most one steer and one jump
-// (a second steer would replace the first unseen, a second jump would do nothing), and no steer
-// before a restart on the same tick (the restart drops it): the reader refuses those.
+// Inputs are changes: steer, inflate, lean and brake hold until the next of theirs; jump, spawn, grab, drag,
+// release, set, gravity and restart act once, at their tick, before that tick's step. Several inputs may
+// share a tick; they apply in file order, and each acts. So a tick holds at most one steer, inflate, lean,
+// brake and jump (a second steer would replace the first unseen, a second jump would do nothing),
+// and no steer before a restart on the same tick (the restart drops it): the reader refuses those.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +35,8 @@ struct ReplayInput {
   std::optional<double> steer;  // [-1, 1], holds
   bool jump = false;
   std::optional<double> inflate;       // [-1, 1], holds: +1 inflates the player, −1 deflates it
+  std::optional<double> lean;          // [-1, 1], holds: a player vehicle's lean (TickInput::lean)
+  std::optional<bool> brake;           // holds: a player vehicle's brakes on (true) or off (false)
   std::optional<Vec2> spawn;           // a default tire at this point (a mouse click)
   std::optional<Vec2> grab;            // grab the tire at this point (mouse press)
   double grab_radius = kGrabRadius;    // how near a tread particle the press must be (m)
@@ -152,7 +154,8 @@ class InputFeed {
   explicit InputFeed(std::span<const ReplayInput> inputs, ReplayRecorder* recorder = nullptr)
       : inputs_(inputs), recorder_(recorder) {}
   // Calls apply(input, held) for each input of the next tick, in file order, and returns the
-  // tick's player input: steer and inflate hold from tick to tick; jump is for its tick only.
+  // tick's player input: steer, inflate, lean and brake hold from tick to tick; jump is for its
+  // tick only.
   template <typename Apply>
   const TickInput& next_tick(Apply&& apply) {
     held_.jump = false;

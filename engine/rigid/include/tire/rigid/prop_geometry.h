@@ -41,6 +41,10 @@ struct PropGeometry {
 // one that was not came in from behind the solid, and passes.
 std::optional<SurfaceContact> local_contact(const PropGeometry& g, Vec2 from, Vec2 to, bool held = true);
 
+// True when a circle (its centre in the shape's frame) touches or overlaps the shape: a chain by
+// its line alone (either side), a closed chain also inside.
+bool circle_touches(const PropGeometry& g, Vec2 center, double radius);
+
 // True when a polygon's points are convex and counter-clockwise (no three in a line).
 bool is_convex_ccw(const std::vector<Vec2>& points);
 

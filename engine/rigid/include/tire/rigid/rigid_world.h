@@ -126,6 +126,8 @@ class RigidWorld {
   bool path_command(std::string_view name, PathCommand command);
 
   void set_gravity(Vec2 gravity);
+  // Moves a live prop's origin to `position` at `angle`, at rest and awake (between ticks: a respawn).
+  void place_prop(std::uint32_t i, Vec2 position, double angle);
   // An impulse (N·s) at a live prop's centre of mass, now (between ticks); ignored for a name not
   // in the world or a prop that cannot move.
   void apply_impulse_now(std::string_view name, Vec2 impulse);

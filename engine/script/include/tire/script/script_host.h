@@ -31,6 +31,9 @@ class ScriptHost {
   virtual std::size_t tire_count() const = 0;
   virtual TireId tire_id(std::size_t index) const = 0;
   virtual Vec2 tire_centroid(std::size_t index) const = 0;
+  // A player vehicle's chassis' centre of mass, which stands for the player's position (the goal,
+  // crossings by the player) when the player is a vehicle rather than a tire; nullopt otherwise.
+  virtual std::optional<Vec2> player_vehicle_center() const { return std::nullopt; }
 
   // ---- Props, by index; a name not (or no longer) in the world gives nullopt
   virtual std::optional<std::size_t> find_prop(std::string_view name) const = 0;

@@ -70,6 +70,8 @@ class ScriptRunner {
   void run(const Action& action, ScriptHost& host);
   void change_counter(const ChangeCounter& change);
   bool player_inside(const Region& region, const ScriptHost& host) const;
+  // The id a player vehicle crosses regions under: no tire's (ids count up from 0).
+  static constexpr TireId kPlayerVehicle = ~TireId{0};
   void finish(ScriptStatus status, EndReason reason);
 
   ScriptSpec spec_;

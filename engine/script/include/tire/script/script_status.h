@@ -15,9 +15,17 @@ const char* to_string(ScriptStatus status);  // "running", "won", "lost"
 
 // What ended a level. The script ends it by its goal, a win or lose action or the time limit; the
 // level session (tire/session/level_session.h) by the player leaving the level's bounds.
-enum class EndReason : std::uint8_t { none, goal, win_action, lose_action, time_limit, out_of_bounds };
+enum class EndReason : std::uint8_t {
+  none,
+  goal,
+  win_action,
+  lose_action,
+  time_limit,
+  out_of_bounds,
+  head_hit
+};
 
-// "none", "goal", "win_action", "lose_action", "time_limit", "out_of_bounds"
+// "none", "goal", "win_action", "lose_action", "time_limit", "out_of_bounds", "head_hit"
 const char* to_string(EndReason reason);
 
 // The tick at which a time is reached: the first tick count n with n · dt ≥ seconds, with a

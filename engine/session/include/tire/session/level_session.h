@@ -64,8 +64,19 @@ class LevelSession {
   std::optional<Vec2> checkpoint() const { return checkpoint_; }
   void request_next_level() { next_level_requested_ = true; }
   bool next_level_requested() const { return next_level_requested_; }
-  // Puts the player back at the checkpoint (or its spawn point), at rest.
+  // Puts the player back at the checkpoint (or its spawn point), at rest: a player vehicle upright,
+  // its wheels on their axles (World::reset_vehicle).
   void respawn_player();
+  // Where the player is: a player vehicle's chassis' centre of mass, else the player tire's centroid;
+  // nullopt with neither. What the goal, region crossings, the bounds and cameras follow.
+  std::optional<Vec2> player_position() const;
+
+  // Vehicle v's driver's head (levels/README.md, "Vehicles"): after each tick, the player vehicle's
+  // head touching an obstacle or a static or kinematic prop loses the level (EndReason::head_hit).
+  void set_vehicle_head(std::uint32_t v, const VehicleHead& head);
+  const std::optional<VehicleHead>& vehicle_head(std::uint32_t v) const;
+  // The head's circle in the world now: its centre, and its radius in `radius`; nullopt for none.
+  std::optional<Vec2> vehicle_head_center(std::uint32_t v) const;
 
   // Mouse grab: the tire under `point` (within `radius` of its tread) is pulled by its nearest
   // tread particle towards the target, until released. Returns the tire grabbed.
@@ -78,6 +89,7 @@ class LevelSession {
 
  private:
   void check_bounds();  // after the script: the player outside the bounds respawns or loses
+  void check_head();    // then: the player vehicle's head on the ground loses
   void note_end();      // the tick the level ended on, once
 
   World world_;
@@ -87,6 +99,9 @@ class LevelSession {
   std::optional<Aabb> bounds_;
   bool has_checkpoints_ = false;
   bool out_of_bounds_ = false;  // the level was lost by leaving the bounds
+  bool head_hit_ = false;       // the level was lost by the driver's head touching the ground
+  std::vector<std::optional<VehicleHead>> heads_;           // by vehicle
+  std::vector<std::uint32_t> near_obstacles_, near_props_;  // check_head's query, kept to not allocate
   int respawns_ = 0;
   std::optional<std::uint64_t> end_tick_;
   bool next_level_requested_ = false;

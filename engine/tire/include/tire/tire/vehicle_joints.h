@@ -74,6 +74,13 @@ struct Drivetrain {
   double lean_torque = 80.0;    // torque on the chassis at full lean (N·m)
 };
 
+// The driver's head, a circle fixed to a chassis: what a level session watches (a head that touches
+// the ground loses the level); the joints do not use it.
+struct VehicleHead {
+  Vec2 position;  // its centre in the chassis' frame (m)
+  double radius = 0.0;
+};
+
 // A vehicle as built: a chassis (a dynamic prop, placed by its spec's position and angle) on its
 // wheels, with a drivetrain.
 struct VehicleSpec {
@@ -122,6 +129,18 @@ class VehicleJoints {
   std::size_t wheel_count(std::uint32_t vehicle) const { return vehicles_[vehicle].wheels.size(); }
   std::uint32_t wheel_tire(std::uint32_t vehicle, std::size_t w) const {
     return vehicles_[vehicle].wheels[w].tire;
+  }
+  const AxleSpec& axle(std::uint32_t vehicle, std::size_t w) const {
+    return vehicles_[vehicle].wheels[w].axle;
+  }
+  // Forgets the joints' last forces and the control (a vehicle put back at rest).
+  void clear(std::uint32_t vehicle) {
+    Vehicle& v = vehicles_[vehicle];
+    v.control = {};
+    for (Wheel& w : v.wheels) {
+      w.hub_force = {};
+      w.torque = 0.0;
+    }
   }
   // The world's tire indices moved (a tire was removed before `removed`): the wheels after it follow.
   void tire_removed(std::uint32_t removed);

@@ -3,6 +3,7 @@
 // it each tick.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -53,6 +54,30 @@ struct TireView {
   std::span<const Vec2> positions;
   TickContacts contacts;         // what its contacts did over the last tick
   std::optional<TireGrab> grab;  // while a particle of it is grabbed
+};
+
+// The most wheels a vehicle has (VehicleJoints::kMaxWheels).
+inline constexpr std::size_t kMaxVehicleWheels = 8;
+
+// A vehicle (levels/README.md, "Vehicles"): its chassis, a dynamic prop, on its wheels, tires.
+struct VehicleView {
+  std::size_t index = 0;  // in the order the vehicles were added
+  PropId chassis = 0;     // its prop (Simulation::prop)
+  bool player = false;    // the player's input drives it
+  Pose pose;              // the chassis' origin and angle (rad, counter-clockwise)
+  Vec2 center;            // the chassis' centre of mass (m): the player's position for a player vehicle
+  Vec2 velocity;          // of the centre of mass (m/s)
+  double angular_velocity = 0.0;  // rad/s, counter-clockwise
+  std::array<TireId, kMaxVehicleWheels> wheel_ids{};
+  std::size_t wheel_count = 0;
+  std::span<const TireId> wheels() const { return {wheel_ids.data(), wheel_count}; }
+  // What drives it now: throttle and lean in [-1, 1] (the player's steer and lean), the brakes.
+  double throttle = 0.0;
+  double lean = 0.0;
+  bool brake = false;
+  // The driver's head in the world, if it has one: centre (m) and radius (m).
+  std::optional<Vec2> head_center;
+  double head_radius = 0.0;
 };
 
 // The world's mechanical energy between ticks, and what was brought into it from outside since it

@@ -53,8 +53,13 @@ class World {
   bool set_vehicle_control(std::uint32_t v, const VehicleControl& control);
   const VehicleJoints& vehicles() const { return vehicles_; }
   // The vehicle step()'s input drives (its steer the throttle, its lean and brake), if any: a level
-  // whose player is a vehicle. False for no such vehicle.
+  // whose player is a vehicle. No tire is the player from then on, unless its spec says player.
+  // False for no such vehicle.
   bool set_player_vehicle(std::uint32_t v);
+  // Puts vehicle v back at rest: its chassis' origin at `position` (its spawn position when
+  // nullopt), upright (angle 0), its wheels rebuilt on their axle points in the shape they were built
+  // with, the joints' forces and its control cleared (a respawn). False for no such vehicle.
+  bool reset_vehicle(std::uint32_t v, std::optional<Vec2> position = std::nullopt);
   std::optional<std::uint32_t> player_vehicle() const { return player_vehicle_; }
 
   // The run's budgets (run_budgets.h): what spawn_tire, spawn_prop and the level session may add.
