@@ -30,9 +30,6 @@ std::uint32_t block_of(std::uint32_t particle, std::uint32_t n) {
 // rest of a constraint's assembly).
 std::uint32_t next_block(std::uint32_t k, std::uint32_t n) { return k + 1 == n ? 0 : k + 1; }
 std::size_t offset_of(std::uint32_t particle, std::uint32_t n) { return particle < n ? 0 : 2; }
-std::size_t dof_of(std::uint32_t particle, std::uint32_t n) {
-  return CyclicBlockCholesky::kBlock * block_of(particle, n) + offset_of(particle, n);
-}
 
 // s n nᵀ, a 2×2 symmetric outer product: its three distinct entries.
 struct Outer {
@@ -143,7 +140,7 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     d[(o + 1) * B + o + 1] += m;
     const Vec2 predicted = p.x_prev[i] + p.v[i] * h;  // x̃ (predict_positions made x exactly this)
     const Vec2 r = (p.x[i] - predicted) * -m;
-    const std::size_t k = dof_of(i, n);
+    const std::size_t k = GlobalSolver::dof(i, n);
     base_f_[k] = r.x;
     base_f_[k + 1] = r.y;
   }
@@ -160,8 +157,8 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     Link l;
     l.a = c.a;
     l.b = c.b;
-    l.dof_a = dof_of(c.a, n);
-    l.dof_b = dof_of(c.b, n);
+    l.dof_a = GlobalSolver::dof(c.a, n);
+    l.dof_b = GlobalSolver::dof(c.b, n);
     const Vec2 d = p.x[c.b] - p.x[c.a];
     const double len = length(d);
     if (len > 0.0) {               // coincident particles: no gradient (as in the Gauss–Seidel kernel)
@@ -223,7 +220,7 @@ void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, b
   double* g = gradient_of(rows_.size());
   std::fill(g, g + CyclicBlockCholesky::kBlock * t.n, 0.0);
   for (std::uint32_t k = 0; k < c.count; ++k) {
-    const std::size_t d = dof_of(c.first + k, t.n);
+    const std::size_t d = GlobalSolver::dof(c.first + k, t.n);
     g[d] = gradient_[k].x;
     g[d + 1] = gradient_[k].y;
   }
@@ -310,7 +307,7 @@ bool GlobalSolver::find_contacts(const Tire& t, const SubstepContext& ctx, const
     const std::int32_t existing = contact_of_[i];
     if (existing >= 0 && static_cast<std::size_t>(existing) < first_new) continue;
     Vec2 x = p.x[i];
-    if (dx) x += at(dx, dof_of(i, t.n));
+    if (dx) x += at(dx, GlobalSolver::dof(i, t.n));
     std::optional<SurfaceContact> hit;
     std::int32_t prop = -1;
     Vec2 surface_velocity;
@@ -372,7 +369,7 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
       const std::int32_t existing = contact_of_[i];
       if (existing >= 0 && static_cast<std::size_t>(existing) < first_new) continue;
       Vec2 x = p.x[i];
-      if (dx) x += at(dx, dof_of(i, t.n));
+      if (dx) x += at(dx, GlobalSolver::dof(i, t.n));
       const Vec2 d = x - tread.hub;
       if (length_squared(d) >= reach2) continue;  // outside the tread's bounding circle
       const std::uint32_t k = tread_edge_towards(tread.x, tread.n, tread.hub, d);
@@ -430,7 +427,7 @@ bool GlobalSolver::solve_pass(const Tire& t) {
   // −k d C into f; on a body also −k d aᵀ into B, k a aᵀ into K_qq and k a C into f_q.
   const auto add_row = [&](const Contact& c, Vec2 d, double k, double force) {
     const std::uint32_t i = c.particle;
-    const std::size_t dof = dof_of(i, n);
+    const std::size_t dof = GlobalSolver::dof(i, n);
     add_outer(k_.diagonal(block_of(i, n)), offset_of(i, n), offset_of(i, n), outer(d, k));
     f_[dof] += d.x * force;
     f_[dof + 1] += d.y * force;
@@ -488,7 +485,7 @@ std::int32_t GlobalSolver::add_contact_row(const Tire& t, const Contact& c, Vec2
   const std::size_t r = rows_.size();
   double* y = y_.data() + r * stride_;
   std::fill(y, y + CyclicBlockCholesky::kBlock * t.n, 0.0);
-  const std::size_t dof = dof_of(c.particle, t.n);
+  const std::size_t dof = GlobalSolver::dof(c.particle, t.n);
   y[dof] = d.x;
   y[dof + 1] = d.y;
   Row row;
@@ -620,7 +617,7 @@ bool GlobalSolver::solve_system(const Tire& t) {
     c.mu_n = c.mu_t = 0.0;
     if (!c.normal_active) continue;
     const std::uint32_t i = c.particle;
-    const Vec2 x = p.x[i] + at(dx_.data(), dof_of(i, n));
+    const Vec2 x = p.x[i] + at(dx_.data(), GlobalSolver::dof(i, n));
     const Vec2 tangent = perp(c.normal);
     double moved_n = 0.0, moved_t = 0.0;  // the prop's point along n and t, when it is a body
     if (c.body >= 0) {
@@ -647,7 +644,7 @@ bool GlobalSolver::update_active_set(const Tire& t, const SubstepContext& ctx) {
         changed = true;
       }
     } else {  // released: back in if the step would push it into its surface
-      const Vec2 x = t.particles.x[c.particle] + at(dx_.data(), dof_of(c.particle, t.n));
+      const Vec2 x = t.particles.x[c.particle] + at(dx_.data(), GlobalSolver::dof(c.particle, t.n));
       const double moved =
           c.body >= 0 ? along(bodies_[static_cast<std::size_t>(c.body)], c.normal, c.arm) : 0.0;
       if (c.plane + moved - dot(c.normal, x) > ctx.config->contact_slop) {
@@ -683,7 +680,7 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
     if (len > 0.0) {  // C = |x − target| with the grab's compliance, undamped
       double* g = gradient_of(rows_.size());
       std::fill(g, g + 4 * static_cast<std::ptrdiff_t>(n), 0.0);
-      const std::size_t k = dof_of(t.grab_particle, n);
+      const std::size_t k = GlobalSolver::dof(t.grab_particle, n);
       g[k] = d.x / len;
       g[k + 1] = d.y / len;
       Row row;
@@ -720,12 +717,8 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
     if (!(ctx.config->reuse_factor && solve_changes(t)) && !solve_pass(t)) return failed();
   t.newton_turn = std::max(t.newton_turn, largest_turn(t, dx_.data()));
   t.global_work += work_;
-  for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), dof_of(i, n));
+  for (std::uint32_t i = 0; i < 2 * n; ++i) t.particles.x[i] += at(dx_.data(), GlobalSolver::dof(i, n));
   write_back(t, ctx);
-}
-
-std::size_t GlobalSolver::dof(std::uint32_t particle, std::uint32_t segments) {
-  return dof_of(particle, segments);
 }
 
 bool GlobalSolver::prepare_solve_response() {
@@ -785,6 +778,13 @@ bool GlobalSolver::prepare_response(bool hold_fixed_friction) {
 }
 
 void GlobalSolver::respond(double* const* rs, std::size_t count) const {
+  respond_forward(rs, count);
+  (response_from_solve_ ? k_ : k0_).backward(rs, count);
+}
+
+void GlobalSolver::respond_backward(double* r) const { (response_from_solve_ ? k_ : k0_).backward(r); }
+
+void GlobalSolver::respond_forward(double* const* rs, std::size_t count, Gram* gram) const {
   const CyclicBlockCholesky& k = response_from_solve_ ? k_ : k0_;
   const std::size_t size = k.size();
   const std::size_t m = response_rows_;
@@ -804,17 +804,31 @@ void GlobalSolver::respond(double* const* rs, std::size_t count) const {
     first = std::min(first, f);
   }
   k.forward(rs, count, first);
+  // δμ = S⁻¹ (−Y₀ᵀ u) for each load, S = Y₀ᵀ Y₀ + α̃ (prepare_response's factor).
+  constexpr std::size_t R = CyclicBlockCholesky::kMaxRightHandSides;
+  double yu[R][kMaxRows] = {};
+  double z[R][kMaxRows] = {};
+  for (std::size_t v = 0; v < count; ++v) {
+    for (std::size_t q = 0; q < m; ++q) {
+      yu[v][q] = dot_n(column(q), rs[v], size);
+      z[v][q] = -yu[v][q];
+    }
+    cholesky_solve(response_s_, m, z[v]);
+  }
+  if (gram)
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t j = 0; j <= i; ++j) {
+        double g = dot_n(rs[i], rs[j], size);
+        for (std::size_t q = 0; q < m; ++q) g += yu[i][q] * z[j][q];
+        (*gram)[i][j] = (*gram)[j][i] = g;
+      }
   for (std::size_t v = 0; v < count; ++v) {
     double* r = rs[v];
-    double z[kMaxRows] = {};
-    for (std::size_t q = 0; q < m; ++q) z[q] = -dot_n(column(q), r, size);
-    cholesky_solve(response_s_, m, z);
     for (std::size_t q = 0; q < m; ++q) {
       const double* y = column(q);
-      for (std::size_t i = 0; i < size; ++i) r[i] += z[q] * y[i];
+      for (std::size_t i = 0; i < size; ++i) r[i] += z[v][q] * y[i];
     }
   }
-  k.backward(rs, count);
 }
 
 double GlobalSolver::largest_turn(const Tire& t, const double* dx) const {

@@ -123,7 +123,7 @@ double wheel_turn(const Particles& p, const TurnFrame& f) {
   return tire::atan2(s.y, s.x);
 }
 
-void turn_gradient(const Particles& p, const TurnFrame& f, std::uint32_t n, double* g) {
+double turn_gradient(const Particles& p, const TurnFrame& f, std::uint32_t n, double* g) {
   const TurnSums s = turn_sums(p, f);
   const double scale = 1.0 / (s.x * s.x + s.y * s.y);
   for (std::uint32_t i = 0; i < 2 * n; ++i) {
@@ -133,6 +133,7 @@ void turn_gradient(const Particles& p, const TurnFrame& f, std::uint32_t n, doub
     g[d] = gi.x;
     g[d + 1] = gi.y;
   }
+  return tire::atan2(s.y, s.x);
 }
 
 }  // namespace vehicle_rows
@@ -378,12 +379,11 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       RowInfo& row = rows[m++];
       row.wheel = k;
       row.kind = motor;
-      row.c = wheel_turn(t.particles, tf) - chassis_turn - target * h;
+      row.c = turn_gradient(t.particles, tf, n, w.gradient[motor].data()) - chassis_turn - target * h;
       row.alpha = 0.0;
       row.bound = torque * h2;
       row.jc[2] = -1.0;
       row.lambda = w.torque * h2;
-      turn_gradient(t.particles, tf, n, w.gradient[motor].data());
       // At its bound since the last substep and still short of its speed (−C, the way its force
       // would go, the way it already pushes): it stays there, Δλ = 0, and needs no response.
       row.fixed = std::abs(row.lambda) >= row.bound * (1.0 - 1e-9) && -row.c * row.lambda > 0.0;
@@ -392,58 +392,69 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
     }
   }
 
-  // Each wheel's response to its rows, K̂_w⁻¹ J_wᵀ, and D = Σ J_w K̂_w⁻¹ J_wᵀ + J_c M_c⁻¹ J_cᵀ.
-  double a[kMaxRows][kMaxRows + 1] = {};
+  // Each wheel's response to its rows, K̂_w⁻¹ J_wᵀ, and D = Σ J_w K̂_w⁻¹ J_wᵀ + J_c M_c⁻¹ J_cᵀ. From
+  // the wheel's last solve, its half-responses and J_w K̂_w⁻¹ J_wᵀ (GlobalSolver::respond_forward):
+  // the move below sums them and sweeps up the factor once.
+  double a[kMaxRows][kMaxRows + 1];
+  for (std::size_t i = 0; i < m; ++i) std::fill_n(a[i], m + 1, 0.0);
+  bool exact[kMaxWheels] = {};
   for (std::size_t k = 0; k < v.wheels.size(); ++k) {
     Wheel& w = v.wheels[k];
     const Tire& t = tires[w.tire];
     const std::size_t size = CyclicBlockCholesky::kBlock * t.n;
     GlobalSolver& s = solver(w.solver);
-    const bool exact = s.prepare_solve_response();
-    const RigidMotion motion = exact ? RigidMotion{} : t.rigid_motion();
-    double* loads[kRows];
+    exact[k] = s.prepare_solve_response();
+    std::size_t live[kRows];
     std::size_t count = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-      if (rows[i].wheel != k || rows[i].fixed) continue;
-      std::vector<double>& out = w.response[rows[i].kind];
-      const std::vector<double>& g = w.gradient[rows[i].kind];
-      std::copy(g.begin(), g.begin() + static_cast<std::ptrdiff_t>(size), out.begin());
-      if (exact) {
-        loads[count++] = out.data();  // answered together below
-      } else {
-        // A wheel whose system holds a free prop has no symmetric response: the wheel taken as a
-        // rigid body instead (its mass and inertia about the hub).
-        Vec2 force;
-        double moment = 0.0;
-        for (std::uint32_t p = 0; p < 2 * t.n; ++p) {
-          const std::size_t dof = GlobalSolver::dof(p, t.n);
-          const Vec2 gp{g[dof], g[dof + 1]};
-          force += gp;
-          moment += cross(t.particles.x[p] - motion.centroid, gp);
-        }
-        const Vec2 dv = force / t.total_mass();
-        const double dw = motion.inertia > 0.0 ? moment / motion.inertia : 0.0;
-        for (std::uint32_t p = 0; p < 2 * t.n; ++p) {
-          const std::size_t dof = GlobalSolver::dof(p, t.n);
-          const Vec2 dp = dv + perp(t.particles.x[p] - motion.centroid) * dw;
-          out[dof] = dp.x;
-          out[dof + 1] = dp.y;
-        }
+    for (std::size_t i = 0; i < m; ++i)
+      if (rows[i].wheel == k && !rows[i].fixed) live[count++] = i;
+    if (count == 0) continue;
+    if (exact[k]) {
+      double* loads[kRows];
+      for (std::size_t r = 0; r < count; ++r) {
+        const RowInfo& row = rows[live[r]];
+        std::copy_n(w.gradient[row.kind].begin(), size, w.response[row.kind].begin());
+        loads[r] = w.response[row.kind].data();
+      }
+      GlobalSolver::Gram gram;
+      s.respond_forward(loads, count, &gram);
+      for (std::size_t r = 0; r < count; ++r)
+        for (std::size_t q = 0; q < count; ++q) a[live[r]][live[q]] = gram[r][q];
+      continue;
+    }
+    // A wheel whose system holds a free prop has no symmetric response: the wheel taken as a rigid
+    // body instead (its mass and inertia about the hub), its response whole.
+    const RigidMotion motion = t.rigid_motion();
+    for (std::size_t r = 0; r < count; ++r) {
+      const RowInfo& row = rows[live[r]];
+      const std::vector<double>& g = w.gradient[row.kind];
+      std::vector<double>& out = w.response[row.kind];
+      Vec2 force;
+      double moment = 0.0;
+      for (std::uint32_t p = 0; p < 2 * t.n; ++p) {
+        const std::size_t dof = GlobalSolver::dof(p, t.n);
+        const Vec2 gp{g[dof], g[dof + 1]};
+        force += gp;
+        moment += cross(t.particles.x[p] - motion.centroid, gp);
+      }
+      const Vec2 dv = force / t.total_mass();
+      const double dw = motion.inertia > 0.0 ? moment / motion.inertia : 0.0;
+      for (std::uint32_t p = 0; p < 2 * t.n; ++p) {
+        const std::size_t dof = GlobalSolver::dof(p, t.n);
+        const Vec2 dp = dv + perp(t.particles.x[p] - motion.centroid) * dw;
+        out[dof] = dp.x;
+        out[dof + 1] = dp.y;
       }
     }
-    if (count > 0) s.respond(loads, count);
-    // J_i K̂⁻¹ J_jᵀ, symmetric (K̂ is): each pair once; a row held at its bound is not solved for.
-    for (std::size_t i = 0; i < m; ++i) {
-      if (rows[i].wheel != k || rows[i].fixed) continue;
-      const std::vector<double>& gi = w.gradient[rows[i].kind];
-      for (std::size_t j = 0; j <= i; ++j) {
-        if (rows[j].wheel != k || rows[j].fixed) continue;
-        const std::vector<double>& wj = w.response[rows[j].kind];
+    // J_i K̂⁻¹ J_jᵀ, symmetric: each pair once.
+    for (std::size_t r = 0; r < count; ++r)
+      for (std::size_t q = 0; q <= r; ++q) {
+        const std::vector<double>& gi = w.gradient[rows[live[r]].kind];
+        const std::vector<double>& wj = w.response[rows[live[q]].kind];
         double s2 = 0.0;
-        for (std::size_t q = 0; q < size; ++q) s2 += gi[q] * wj[q];
-        a[i][j] = a[j][i] = s2;
+        for (std::size_t d = 0; d < size; ++d) s2 += gi[d] * wj[d];
+        a[live[r]][live[q]] = a[live[q]][live[r]] = s2;
       }
-    }
   }
   const double inverse[3] = {chassis.inverse_mass, chassis.inverse_mass, chassis.inverse_inertia};
   for (std::size_t i = 0; i < m; ++i) {
@@ -519,7 +530,11 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       impulses[rows[i].wheel] += Vec2{rows[i].jc[0], rows[i].jc[1]} * (delta[i] / h);
     }
   }
-  for (Wheel& w : v.wheels) move_wheel(tires[w.tire], w.load.data());
+  for (std::size_t k = 0; k < v.wheels.size(); ++k) {
+    Wheel& w = v.wheels[k];
+    if (exact[k]) solver(w.solver).respond_backward(w.load.data());  // the half-responses' sum, swept up
+    move_wheel(tires[w.tire], w.load.data());
+  }
   Vec2 total;
   for (std::size_t k = 0; k < v.wheels.size(); ++k) {
     const Tire& t = tires[v.wheels[k].tire];

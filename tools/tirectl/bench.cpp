@@ -7,6 +7,8 @@
 #include <iostream>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -106,10 +108,17 @@ constexpr const char* kFlatLevel = R"json({
   "obstacles": [ { "min": [-50, -1], "max": [50, 0] } ]
 })json";
 
-std::unique_ptr<Steppable> flat_level() {
-  tire::LevelOpen open = tire::open_level_text(kFlatLevel, "flat-level");
+// A scene's level text, read as a level file is; a scene the reader refuses is this program's fault.
+std::unique_ptr<Steppable> level_scene(const char* text, const char* name) {
+  tire::LevelOpen open = tire::open_level_text(text, name);
+  if (!open.level) {
+    for (const std::string& error : open.errors) std::fprintf(stderr, "%s\n", error.c_str());
+    throw std::logic_error(std::string("tirectl bench: the scene ") + name + " does not load");
+  }
   return std::make_unique<SimulationScene>(tire::Simulation(std::move(open.level)));
 }
+
+std::unique_ptr<Steppable> flat_level() { return level_scene(kFlatLevel, "flat-level"); }
 
 // A walled pile: `count` default tires (28 segments, 8 substeps × 1 iteration unless said) stacked in rows in
 // a box as wide as about sqrt(count) tires, already touching, with soft–soft contacts on; optionally with
@@ -330,6 +339,20 @@ std::unique_ptr<Steppable> rolling_world(tire::SolverMethod method, int substeps
   return std::make_unique<SimulationScene>(std::move(world));
 }
 
+// A car (levels/README.md, "Vehicles"): a 48 kg box chassis on two default tires, each on a rigid
+// axle, both driven, flat out along flat ground with nothing in its way; the default method. Its
+// cost against "rolling-global-2x1" (one default tire rolling) is issue 37's figure.
+constexpr const char* kCarLevel = R"json({
+  "name": "Car (bench)",
+  "solver": { "sleep": false },
+  "obstacles": [ { "min": [-10000, -1], "max": [10000, 0] } ],
+  "vehicles": [ { "player": true,
+    "chassis": { "shape": "box", "position": [0, 1.05], "size": [1.6, 0.3], "density": 100 },
+    "wheels": [ { "axle": [-0.7, -0.4] }, { "axle": [0.7, -0.4] } ] } ]
+})json";
+
+std::unique_ptr<Steppable> car_level() { return level_scene(kCarLevel, "car"); }
+
 const Scene kScenes[] = {
     {"prototype",
      "1 tire, 28 segments, radial spokes, 1 substep x 22 iterations, resting",
@@ -358,6 +381,11 @@ const Scene kScenes[] = {
     {"rolling-global-2x1",
      "as rolling-gauss-seidel-8x1, solved by the global method at 2 substeps x 1 iteration",
      [] { return rolling_world(tire::SolverMethod::global, 2); },
+     {1.0, false}},
+    {"car-global-2x1",
+     "a car: a 48 kg box on two default tires, both driven, flat out on flat ground, default method "
+     "(global 2 x 1); against rolling-global-2x1",
+     [] { return car_level(); },
      {1.0, false}},
     {"global-tire-resting",
      "as global-tire, resting (no steering)",

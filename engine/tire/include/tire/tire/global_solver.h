@@ -91,6 +91,13 @@ class GlobalSolver {
   // The same for `count` loads at once (at most CyclicBlockCholesky::kMaxRightHandSides): one sweep
   // down the factor for all of them.
   void respond(double* const* rs, std::size_t count) const;
+  // respond() in its two halves, for loads whose responses are wanted only combined: the first
+  // leaves each r as its half-response ŵ = u + Y₀ δμ (respond's before its sweep up the factor)
+  // and, when `gram` is given, gram[i][j] = rᵢ · K̂₀⁻¹ rⱼ = uᵢ·uⱼ + (Y₀ᵀuᵢ)·δμⱼ (symmetric);
+  // respond_backward(Σ cᵢ ŵᵢ) is then K̂₀⁻¹ Σ cᵢ rᵢ, one sweep up for the combination.
+  using Gram = double[CyclicBlockCholesky::kMaxRightHandSides][CyclicBlockCholesky::kMaxRightHandSides];
+  void respond_forward(double* const* rs, std::size_t count, Gram* gram = nullptr) const;
+  void respond_backward(double* r) const;
   // A load on the next solve only: a force r (kg·m, force × h², in block order: dof()) added to its
   // f, as the tire's neighbours push it (an island's last multipliers, island_contacts.h). The
   // solve reads it and forgets it; r must live until then.
@@ -111,7 +118,11 @@ class GlobalSolver {
   // solve: past SolverConfig::refine_turn the linearised step no longer holds.
   double largest_turn(const Tire& t, const double* dx) const;
   // Where particle i's (x, y) sit in a vector of the tire's unknowns (respond's r and w).
-  static std::size_t dof(std::uint32_t particle, std::uint32_t segments);
+  // Block k holds tread particle k and then rim particle k + n (n segments).
+  static std::size_t dof(std::uint32_t particle, std::uint32_t segments) {
+    return particle < segments ? CyclicBlockCholesky::kBlock * particle
+                               : CyclicBlockCholesky::kBlock * (particle - segments) + 2;
+  }
   std::size_t unknowns() const { return k_.size(); }
 
  private:

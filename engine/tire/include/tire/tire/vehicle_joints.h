@@ -109,7 +109,8 @@ TurnFrame turn_frame(const Particles& p);
 // reaction on the chassis cancel (a gradient linear in x, perp(r⁰ᵢ)/Σ|r⁰ᵢ|², gave the wheel only
 // cos θ_w of it: a vehicle in the air at one substep gained angular momentum).
 double wheel_turn(const Particles& p, const TurnFrame& f);
-void turn_gradient(const Particles& p, const TurnFrame& f, std::uint32_t n, double* g);
+// Writes the gradient into g (in the global solver's block order) and returns θ_w, from one pass.
+double turn_gradient(const Particles& p, const TurnFrame& f, std::uint32_t n, double* g);
 }  // namespace vehicle_rows
 
 class VehicleJoints {
