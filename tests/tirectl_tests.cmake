@@ -117,6 +117,10 @@ tirectl_test("bench settles pile-1000-settled for at most --settle ticks" 0
   ARGS bench --scene pile-1000-settled --settle 2 --warmup 0 --steps 1
   STDOUT "\npile-1000-settled,1000,56000,[0-9]+,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n"
   STDERR "pile-1000-settled: settled for 2 ticks, 0 of 1000 tires asleep")
+# The car: its level text loads (a scene the reader refused would end the run), its two wheels
+# are the scene's tires and touch the ground.
+tirectl_test("bench builds car-global-2x1" 0 ARGS bench --scene car-global-2x1 --warmup 30 --steps 3
+  STDOUT "\ncar-global-2x1,2,112,[1-9][0-9]*,0,[0-9]+,28,2,1,3,")
 tirectl_test("bench builds island-pile-60-settled-awake" 0
   ARGS bench --scene island-pile-60-settled-awake --settle 30 --warmup 0 --steps 1
   STDOUT "island-pile-60-settled-awake,60,")
