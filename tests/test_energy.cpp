@@ -410,8 +410,8 @@ TEST_CASE("energy: the shipped replays make no energy that nothing brought in", 
   // prop the books do not count (12-finale's shuttle carries the tire: 33.7 J). Left out:
   // 05-platforms and 07-sandbox-grab-tune-gravity, where kinematic platforms and a grab do more
   // (39.6 J and 8.7 kJ), level 08's rain (its replay takes long, and its contacts between tires
-  // make 464 J), 07-sandbox-goal (below) and 14-trials-goal, whose seesaw tipping under the car
-  // makes 292 J of 18 kJ (a prop between tires and its supports: docs/vehicles.md).
+  // make 464 J), 07-sandbox-goal (below) and 14-trials-goal, whose car lands off the seesaw with its
+  // wheels driven: a spike of 306 J of elastic energy for one tick (as the case below).
   // docs/at-rest.md, "The energy watch's books".
   const std::string replay = GENERATE("01-first-roll-goal", "01-first-roll-inflate", "01-first-roll-restart",
                                       "02-jumps-goal", "03-hills-goal", "04-crates-goal", "06-tire-rain-goal",

@@ -587,7 +587,15 @@ void App::draw_ui() {
   hud.time = finished_at_.value_or(simulation.time());  // the clock stops when the level ends
   hud.time_limit = session_.level().time_limit;
   hud.target = hud_target_;
-  if (const std::optional<tire::TireView> p = player_view()) {
+  if (const std::optional<tire::VehicleView> v = player_vehicle_view()) {
+    // A vehicle: its chassis' speed, and on the ground while any wheel touches it (within the jump
+    // grace, as a tire's, so that a bumpy ride does not flicker).
+    hud.speed = length(v->velocity);
+    hud.grounded = std::ranges::any_of(v->wheels(), [&](tire::TireId id) {
+      const std::optional<tire::TireView> wheel = simulation.tire(id);
+      return wheel && wheel->may_jump;
+    });
+  } else if (const std::optional<tire::TireView> p = player_view()) {
     hud.speed = length(p->velocity);
     hud.grounded = p->may_jump;
   }
