@@ -413,11 +413,11 @@ TEST_CASE("energy: the shipped replays make no energy that nothing brought in", 
   // make 464 J), 07-sandbox-goal (below) and 14-trials-goal, whose car lands off the seesaw with its
   // wheels driven: a spike of 306 J of elastic energy for one tick (as the case below).
   // docs/at-rest.md, "The energy watch's books".
-  const std::string replay = GENERATE("01-first-roll-goal", "01-first-roll-inflate", "01-first-roll-restart",
-                                      "02-jumps-goal", "03-hills-goal", "04-crates-goal", "06-tire-rain-goal",
-                                      "07-sandbox-push-crates", "07-sandbox-spawn-pile", "09-squeeze-goal",
-                                      "10-rocking-goal", "11-long-jump-goal", "12-finale-goal", "13-hill-climb-goal",
-                                      "15-tire-pit-goal");
+  const std::string replay =
+      GENERATE("01-first-roll-goal", "01-first-roll-inflate", "01-first-roll-restart", "02-jumps-goal",
+               "03-hills-goal", "04-crates-goal", "06-tire-rain-goal", "07-sandbox-push-crates",
+               "07-sandbox-spawn-pile", "09-squeeze-goal", "10-rocking-goal", "11-long-jump-goal",
+               "12-finale-goal", "13-hill-climb-goal", "15-tire-pit-goal");
   const Unbooked u = unbooked_over(replay);
   INFO(replay << ": brought in " << u.brought_in << " J, unbooked rise " << u.largest_rise << " J");
   CHECK(u.brought_in > 500.0);  // the player drove, jumped, spawned

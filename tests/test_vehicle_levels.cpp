@@ -293,3 +293,31 @@ TEST_CASE("vehicle levels: the goal is reached by the vehicle's chassis", "[unit
   CHECK(session->end_reason() == EndReason::goal);
   CHECK(chassis(*session).center.x >= 6.0);
 }
+
+TEST_CASE("vehicle levels: a script's impulse on a vehicle player moves the whole vehicle",
+          "[unit][vehicle_level]") {
+  // levels/SCRIPTING.md, "impulse": on a player vehicle, every body of it (the chassis, each wheel)
+  // changes velocity by impulse / the vehicle's mass, so that its momentum changes by the impulse
+  // and it does not turn; the energy it brings is booked.
+  const double added = make_session(loaded(car_level()))->world().energy_in();  // the bodies' own
+  json doc = car_level();
+  doc["triggers"] = {{{"when", {{"type", "start"}}},
+                      {"do", {{{"action", "impulse"}, {"target", "player"}, {"impulse", {120, 300}}}}}}};
+  auto session = make_session(loaded(doc));  // the start trigger runs as the session starts
+  const World& world = session->world();
+  const PropState c = chassis(*session);
+  double mass = c.mass;
+  Vec2 momentum = c.velocity * c.mass;
+  for (std::size_t w = 0; w < joints(*session).wheel_count(0); ++w) {
+    const Tire& t = world.tires()[joints(*session).wheel_tire(0, w)];
+    mass += t.total_mass();
+    const double particle_mass = t.total_mass() / static_cast<double>(t.particles.size());
+    for (std::size_t i = 0; i < t.particles.size(); ++i) momentum += t.particles.v[i] * particle_mass;
+  }
+  CHECK(momentum.x == Approx(120.0).epsilon(1e-6));
+  CHECK(momentum.y == Approx(300.0).epsilon(1e-6));
+  CHECK(c.velocity.x == Approx(120.0 / mass).epsilon(1e-6));  // Box2D keeps floats
+  CHECK(c.velocity.y == Approx(300.0 / mass).epsilon(1e-6));
+  CHECK(c.angular_velocity == 0.0);
+  CHECK(world.energy_in() - added == Approx(0.5 * (120.0 * 120.0 + 300.0 * 300.0) / mass).epsilon(1e-5));
+}

@@ -292,9 +292,12 @@ void RigidWorld::place_prop(std::uint32_t i, Vec2 position, double angle) {
 }
 
 void RigidWorld::apply_impulse_now(std::string_view name, Vec2 impulse) {
-  const auto i = find_prop(name);
-  if (!i || props_[*i].spec.type != PropType::dynamic_body) return;
-  bodies_[*i]->ApplyLinearImpulseToCenter(to_b2(impulse), true);
+  if (const auto i = find_prop(name)) apply_impulse_now(*i, impulse);
+}
+
+void RigidWorld::apply_impulse_now(std::uint32_t i, Vec2 impulse) {
+  if (i >= props_.size() || !props_[i].alive || props_[i].spec.type != PropType::dynamic_body) return;
+  bodies_[i]->ApplyLinearImpulseToCenter(to_b2(impulse), true);
 }
 
 void RigidWorld::query(const Aabb& region, std::vector<std::uint32_t>& obstacles,

@@ -39,7 +39,10 @@ void SessionScriptHost::remove_prop(std::string_view name) { world_.rigid().remo
 void SessionScriptHost::set_gravity(Vec2 gravity) { world_.set_gravity(gravity); }
 
 void SessionScriptHost::apply_impulse_to_player(Vec2 impulse) {
-  if (const Tire* p = world_.player()) world_.apply_impulse_to_tire(p->id, impulse);
+  if (const std::optional<std::uint32_t> v = world_.player_vehicle())
+    world_.apply_impulse_to_vehicle(*v, impulse);
+  else if (const Tire* p = world_.player())
+    world_.apply_impulse_to_tire(p->id, impulse);
 }
 
 void SessionScriptHost::apply_impulse_to_all_tires(Vec2 impulse) {

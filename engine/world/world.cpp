@@ -47,6 +47,30 @@ bool World::apply_impulse_to_tire(TireId id, Vec2 impulse) {
   return true;
 }
 
+bool World::apply_impulse_to_vehicle(std::uint32_t v, Vec2 impulse) {
+  if (v >= vehicles_.count()) return false;
+  const std::uint32_t c = vehicles_.chassis(v);
+  const Prop& chassis = rigid_.props()[c];
+  // Box2D's type and mass: the Prop's copies (is_dynamic, inverse_mass) are the last tick's, none
+  // before the first (a script's start trigger).
+  if (!chassis.alive || chassis.spec.type != PropType::dynamic_body) return false;
+  const double chassis_mass = rigid_.prop_state(c).mass;
+  if (!(chassis_mass > 0.0)) return false;
+  const double before = energy_now();
+  double mass = chassis_mass;
+  for (std::size_t w = 0; w < vehicles_.wheel_count(v); ++w)
+    mass += tires_[vehicles_.wheel_tire(v, w)].total_mass();
+  const Vec2 dv = impulse / mass;
+  rigid_.apply_impulse_now(c, dv * chassis_mass);
+  for (std::size_t w = 0; w < vehicles_.wheel_count(v); ++w) {
+    Tire& t = tires_[vehicles_.wheel_tire(v, w)];
+    wake_island_of(t);
+    for (Vec2& pv : t.particles.v) pv += dv;
+  }
+  energy_in_ += energy_now() - before;
+  return true;
+}
+
 void World::set_gravity(Vec2 g) {
   const double before = energy_now();
   set_gravity_unbooked(g);

@@ -591,10 +591,10 @@ void App::draw_ui() {
     // A vehicle: its chassis' speed, and on the ground while any wheel touches it (within the jump
     // grace, as a tire's, so that a bumpy ride does not flicker).
     hud.speed = length(v->velocity);
-    hud.grounded = std::ranges::any_of(v->wheels(), [&](tire::TireId id) {
+    for (const tire::TireId id : v->wheels()) {
       const std::optional<tire::TireView> wheel = simulation.tire(id);
-      return wheel && wheel->may_jump;
-    });
+      hud.grounded = hud.grounded || (wheel && wheel->may_jump);
+    }
   } else if (const std::optional<tire::TireView> p = player_view()) {
     hud.speed = length(p->velocity);
     hud.grounded = p->may_jump;

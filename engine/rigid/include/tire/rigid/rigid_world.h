@@ -131,6 +131,7 @@ class RigidWorld {
   // An impulse (N·s) at a live prop's centre of mass, now (between ticks); ignored for a name not
   // in the world or a prop that cannot move.
   void apply_impulse_now(std::string_view name, Vec2 impulse);
+  void apply_impulse_now(std::uint32_t i, Vec2 impulse);  // the same, prop i
 
   // Replaces `obstacles` and `props` with the indices of those whose (fattened) bounds overlap
   // `region`, ascending, each once (a chain's edges are Box2D proxies of their own). Does not

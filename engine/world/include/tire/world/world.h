@@ -83,6 +83,10 @@ class World {
   // What scripts (and the game's tuning panel) can do between ticks. The commands on a tire return
   // false, changing nothing, when there is no such tire (or nothing grabbed to move or release).
   bool apply_impulse_to_tire(TireId id, Vec2 impulse);  // N·s, spread over the tire's particles
+  // N·s on vehicle v as a whole: each of its bodies (chassis, wheels) changes velocity by
+  // impulse / the vehicle's mass, so that its momentum changes by the impulse and nothing turns.
+  // False for no such vehicle or a chassis that cannot move.
+  bool apply_impulse_to_vehicle(std::uint32_t v, Vec2 impulse);
   // Sets a parameter of the table (tire/parameters.h) that may change while the world runs (a
   // script, replay or panel key): "tires.<key>" on every tire, and on every tire added after it
   // (spawned by a script, a replay or the player), "player.<key>" on the player's.
