@@ -113,6 +113,13 @@ TEST_CASE("vehicle levels: the reader's errors", "[unit][vehicle_level]") {
               "v.json: /vehicles/0/wheels/1/position: unknown key; expected one of \"axle\", \"axis\""));
     CHECK(has(errors, "v.json: /vehicles/0/chassis/type: unknown key; expected one of \"shape\""));
   }
+  SECTION("a shape key of another shape names the chassis") {
+    json doc = level;
+    doc["vehicles"][0]["chassis"]["radius"] = 0.5;
+    CHECK(has(errors_of(doc),
+              "v.json: /vehicles/0/chassis/radius: applies only to circle chassis, and this one "
+              "is a box"));
+  }
   SECTION("a wheel's tire keys keep their rules; its axis is a unit vector") {
     json doc = level;
     doc["vehicles"][0]["wheels"][0]["segments"] = 2;

@@ -295,7 +295,8 @@ PropSpec read_prop(JsonReader& r, const json& j, const std::string& path, LevelO
     std::string which;
     for (std::size_t i = 0; i < k.shapes.size(); ++i)
       which += (i == 0 ? "" : i + 1 == k.shapes.size() ? " and " : ", ") + k.shapes[i];
-    r.fail(join_path(path, k.key), "applies only to " + which + " props, and this one is a " + shape);
+    const char* noun = object == LevelObject::chassis ? " chassis" : " props";
+    r.fail(join_path(path, k.key), "applies only to " + which + noun + ", and this one is a " + shape);
   }
   const LevelKey& points = key("points");
   switch (p.shape) {
