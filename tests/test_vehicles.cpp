@@ -271,3 +271,53 @@ TEST_CASE("vehicles: driven flat out over bumps, a hub stays on its axle", "[uni
   CHECK(tilt < 1.0);
   CHECK(worst < 0.01);
 }
+
+TEST_CASE("vehicles: a parked car sleeps as it rests awake, and wakes to its controls", "[unit][vehicles]") {
+  // A vehicle sleeps as one island, its chassis with its wheels (world/sleep_islands.h), once all
+  // are still; asleep it keeps the pose it would rest in awake (docs/vehicles.md).
+  SolverConfig sleeping;  // the default: sleep on
+  World world = flat_ground(sleeping);
+  World reference = flat_ground(awake());
+  const std::uint32_t v = *world.add_vehicle(car({0.0, 0.7}));
+  reference.add_vehicle(car({0.0, 0.7}));
+  run(world, 600);
+  run(reference, 600);
+  const std::uint32_t c = world.vehicles().chassis(v);
+  CHECK(world.asleep_count() == 2);
+  CHECK(!world.rigid().prop_state(c).awake);
+  const PropState rest = world.rigid().prop_state(c), settled = reference.rigid().prop_state(c);
+  INFO("chassis asleep " << rest.center.y << " m, awake " << settled.center.y << " m");
+  CHECK(length(rest.center - settled.center) < 1e-5);
+  CHECK(std::abs(rest.pose.angle - settled.pose.angle) < 1e-6);
+  for (std::size_t w = 0; w < 2; ++w)
+    CHECK(length(wheel(world, v, w).centroid() - wheel(reference, v, w).centroid()) < 1e-5);
+
+  // The brake alone lets it sleep; throttle wakes it and drives it.
+  VehicleControl brake;
+  brake.brake = true;
+  world.set_vehicle_control(v, brake);
+  run(world, 120);
+  CHECK(world.asleep_count() == 2);
+  VehicleControl throttle;
+  throttle.throttle = 1.0;
+  world.set_vehicle_control(v, throttle);
+  run(world, 60);
+  CHECK(world.asleep_count() == 0);
+  CHECK(world.rigid().prop_state(c).center.x > 1.0);
+}
+
+TEST_CASE("vehicles: parked asleep on a slope, a car rolls away when its brake is let go",
+          "[unit][vehicles]") {
+  const double slope = 15.0 * std::numbers::pi / 180.0;
+  World world = flat_ground(SolverConfig{}, {-9.81 * std::sin(slope), -9.81 * std::cos(slope)});
+  const std::uint32_t v = *world.add_vehicle(car({0.0, 0.66}));
+  VehicleControl brake;
+  brake.brake = true;
+  world.set_vehicle_control(v, brake);
+  run(world, 300);
+  REQUIRE(world.asleep_count() == 2);
+  const double parked = world.rigid().prop_state(world.vehicles().chassis(v)).center.x;
+  world.set_vehicle_control(v, {});  // nothing drives it: the change alone wakes it
+  run(world, 120);
+  CHECK(world.rigid().prop_state(world.vehicles().chassis(v)).center.x < parked - 1.0);
+}

@@ -199,7 +199,7 @@ void VehicleJoints::begin_substep(std::vector<Tire>& tires, RigidWorld& rigid, c
   const double h = ctx.h, t_end = ctx.time + ctx.h;
   for (Vehicle& v : vehicles_) {
     const Prop& chassis = rigid.props()[v.chassis];
-    if (!chassis.alive || !chassis.is_dynamic()) continue;
+    if (!chassis.alive || !chassis.is_dynamic() || asleep(v, tires)) continue;
     // The joints' last forces act on the chassis from the substep's start (their impulse F h); the
     // wheels take them as a load in their solves (load_wheels).
     turn_orbits(v, tires, rigid, h, t_end);
@@ -297,7 +297,7 @@ void VehicleJoints::load_wheels(std::vector<Tire>& tires, const SubstepContext& 
       const std::size_t size = CyclicBlockCholesky::kBlock * n;
       std::fill(w.load.begin(), w.load.begin() + static_cast<std::ptrdiff_t>(size), 0.0);
       const Prop& chassis = ctx.rigid->props()[v.chassis];
-      if (!chassis.alive) continue;
+      if (!chassis.alive || t.asleep) continue;
       const Vec2 per_rim = w.hub_force * (h2 / n);  // hub_gradient's, times λ
       for (std::uint32_t i = n; i < 2 * n; ++i) {
         const std::size_t d = GlobalSolver::dof(i, n);
@@ -315,7 +315,7 @@ void VehicleJoints::solve(std::vector<Tire>& tires, RigidWorld& rigid, const Sub
 void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWorld& rigid,
                                   const SubstepContext& ctx, bool last) {
   const Prop& chassis = rigid.props()[v.chassis];
-  if (!chassis.alive || !chassis.is_dynamic()) return;
+  if (!chassis.alive || !chassis.is_dynamic() || asleep(v, tires)) return;
   const double h = ctx.h, h2 = h * h, t_start = ctx.time, t_end = ctx.time + ctx.h;
   const double rigid_alpha = ctx.config->rigid_compliance / h2;
   const VehicleControl& control = v.control;

@@ -76,12 +76,16 @@ void SleepIslands::refresh(const std::vector<Tire>& tires) {
 void SleepIslands::gather_props(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
                                 const RigidWorld& rigid) {
   props_.clear();
-  for (const std::uint32_t i : members)
-    for (const std::uint32_t p : tires[i].prop_candidates)
-      if (!picked_[p] && rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) {
-        picked_[p] = 1;
-        props_.push_back(p);
-      }
+  const auto pick = [&](std::uint32_t p) {
+    if (!picked_[p] && rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) {
+      picked_[p] = 1;
+      props_.push_back(p);
+    }
+  };
+  for (const std::uint32_t i : members) {
+    for (const std::uint32_t p : tires[i].prop_candidates) pick(p);
+    if (tires[i].chassis >= 0) pick(static_cast<std::uint32_t>(tires[i].chassis));
+  }
   for (const std::uint32_t p : props_) picked_[p] = 0;
 }
 
@@ -144,7 +148,7 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
     const double drift = length(m.centroid - t.still_anchor) + std::abs(turn) * t.spec.outer_radius;
     // A tire held, driven or grabbed is not resting, however slowly it moves.
     const bool still = drift <= config.sleep_speed * config.sleep_time && deform2 < limit2 && !t.grabbed &&
-                       t.control.steer == 0.0;
+                       t.control.steer == 0.0 && !t.driven;
     t.still_time = still ? t.still_time + config.dt : 0.0;
     if (!still) {
       t.still_anchor = m.centroid;
@@ -159,9 +163,12 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
     const auto& props = rigid.props();
     for (std::uint32_t p = 0; p < props.size(); ++p) parent_[n + p] = n + p;
     for (const TirePair& pair : pairs) join(pair.a, pair.b);
-    for (const std::uint32_t i : awake_)
+    for (const std::uint32_t i : awake_) {
       for (const std::uint32_t p : tires[i].prop_candidates)
         if (props[p].alive && props[p].spec.type == PropType::dynamic_body) join(i, n + p);
+      // A vehicle's wheel with its chassis, near or not: the vehicle sleeps and wakes whole.
+      if (tires[i].chassis >= 0) join(i, n + static_cast<std::uint32_t>(tires[i].chassis));
+    }
     for (const std::uint32_t i : awake_) {
       still_[i] = std::numeric_limits<double>::infinity();
       blocked_[i] = 0;
@@ -199,8 +206,10 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
 void SleepIslands::hold_props_near_awake_tires(const std::vector<Tire>& tires, RigidWorld& rigid) {
   const auto& props = rigid.props();
   std::fill(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(props.size()), std::uint8_t{0});
-  for (const std::uint32_t i : awake_)
+  for (const std::uint32_t i : awake_) {
     for (const std::uint32_t p : tires[i].prop_candidates) near_[p] = 1;
+    if (tires[i].chassis >= 0) near_[static_cast<std::uint32_t>(tires[i].chassis)] = 1;  // hangs on them
+  }
   for (std::uint32_t p = 0; p < props.size(); ++p)
     if (props[p].alive && props[p].spec.type == PropType::dynamic_body)
       rigid.set_sleeping_allowed(p, !near_[p]);

@@ -359,7 +359,6 @@ std::optional<std::uint32_t> World::add_vehicle(const VehicleSpec& spec) {
   PropSpec chassis_spec = spec.chassis;
   chassis_spec.type = PropType::dynamic_body;
   const std::uint32_t chassis = add_prop(chassis_spec);
-  rigid_.set_sleeping_allowed(chassis, false);  // the wheels keep it awake (vehicle_joints.h)
   const Pose pose = Pose::make(chassis_spec.position, chassis_spec.angle);
   const std::optional<TireId> player = player_;
   std::vector<std::uint32_t> wheels;
@@ -531,10 +530,20 @@ void World::step(const TickInput& input) {
   // The method (tire_method.h) says whether Box2D steps with the substeps (rigid_world.h: each of
   // its steps is then h) and whether the tick takes the refinement's substeps
   // (SolverConfig::refine_turn).
-  // A vehicle's wheels stay awake with it: the chassis, which Box2D may not put to sleep, hangs on them.
-  for (std::uint32_t v = 0; v < vehicles_.count(); ++v)
-    for (std::size_t w = 0; w < vehicles_.wheel_count(v); ++w)
-      if (tires_[vehicles_.wheel_tire(v, w)].asleep) sleep_.wake(tires_, vehicles_.wheel_tire(v, w), rigid_);
+  // A vehicle sleeps as one island, its chassis and its wheels (SleepIslands::settle joins them), and
+  // wakes whole: while its motor or lean is at work (a brake alone lets it rest: it holds), when its
+  // control changes (a brake let go), and when its chassis moves (Box2D woke it: a blow, a respawn).
+  for (std::uint32_t v = 0; v < vehicles_.count(); ++v) {
+    const VehicleControl& c = vehicles_.control(v);
+    const bool driven = c.throttle != 0.0 || c.lean != 0.0;
+    const bool changed = vehicles_.take_control_change(v);
+    const bool wake = driven || changed || rigid_.prop_state(vehicles_.chassis(v)).awake;  // Box2D's, now
+    for (std::size_t w = 0; w < vehicles_.wheel_count(v); ++w) {
+      Tire& t = tires_[vehicles_.wheel_tire(v, w)];
+      t.driven = driven;
+      if (wake && t.asleep) wake_island_of(t);
+    }
+  }
   const TireMethod& method = tire_method(config_.method);
   if (!method.refines_substeps()) refine_ = 1;
   tick_config_ = config_;

@@ -291,6 +291,8 @@ struct Tire {
   Vec2 still_anchor;  // its hub when it last became still
   Vec2 still_spoke;   // and the direction from its hub to tread particle 0 then (unit)
   TireId island = 0;  // while asleep: the island it sleeps in (the id of one of its tires)
+  // A vehicle's wheel whose motor or lean is at work this tick: not resting, however slowly it moves.
+  bool driven = false;
 };
 
 }  // namespace tire

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "tire/math/geometry.h"
@@ -122,7 +123,14 @@ class VehicleJoints {
   std::size_t count() const { return vehicles_.size(); }
   std::size_t solver_count() const { return wheel_solvers_.size(); }  // the next wheel's slot is this
   void set_control(std::uint32_t vehicle, const VehicleControl& control) {
-    vehicles_[vehicle].control = control;
+    Vehicle& v = vehicles_[vehicle];
+    v.control_changed = v.control_changed || control.throttle != v.control.throttle ||
+                        control.brake != v.control.brake || control.lean != v.control.lean;
+    v.control = control;
+  }
+  // Whether its control changed since the last call (a sleeping vehicle wakes to it: a brake let go).
+  bool take_control_change(std::uint32_t vehicle) {
+    return std::exchange(vehicles_[vehicle].control_changed, false);
   }
   const VehicleControl& control(std::uint32_t vehicle) const { return vehicles_[vehicle].control; }
   const Drivetrain& drivetrain(std::uint32_t vehicle) const { return vehicles_[vehicle].drivetrain; }
@@ -190,10 +198,16 @@ class VehicleJoints {
   };
   struct Vehicle {
     std::uint32_t chassis = 0;
+    bool control_changed = false;  // set_control's, until take_control_change()
     std::vector<Wheel> wheels;
     Drivetrain drivetrain;
     VehicleControl control;
   };
+  // Its wheels sleep, and with them its chassis: a vehicle sleeps and wakes whole (its island,
+  // world/sleep_islands.h), and the joints of a sleeping one rest.
+  static bool asleep(const Vehicle& v, const std::vector<Tire>& tires) {
+    return tires[v.wheels.front().tire].asleep;
+  }
   void turn_orbits(Vehicle& v, std::vector<Tire>& tires, RigidWorld& rigid, double h, double t_end);
   void solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWorld& rigid, const SubstepContext& ctx,
                      bool last);
