@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
       "M mute. Mouse: click spawns a tire, drag grabs one.\n"
       "Gamepad: left stick/d-pad steer, A jump, triggers inflate/deflate, Start pause, Back restart,\n"
       "shoulders next/previous level.\n"
+      "A car (levels 13-15): Right/Left throttle and reverse, Space brake, Up/W lean back, Down/S lean\n"
+      "forward; pad: left stick throttle and lean, A brake.\n"
       "Progress and ghosts: $XDG_DATA_HOME/soft-tire/ (else ~/.local/share/soft-tire/).",
       "tire-game"};
   std::string level;

@@ -36,6 +36,14 @@ const char* const kKeys[][2] = {
     {"Left drag (on a tire)", "grab and pull it"},
 };
 
+// Driving a car (a level whose player is a vehicle: levels 13 to 15).
+const char* const kCar[][2] = {
+    {"Right / D, Left / A", "throttle forward, reverse (hold)"},
+    {"Space", "brake (hold): holds the car on a slope"},
+    {"Up / W, Down / S", "lean back, lean forward (hold): lifts or drops the nose, turns it in the air"},
+    {"Pad: left stick", "throttle (x) and lean (y); A held brakes"},
+};
+
 // A game controller (any SDL knows; plugged in at any time).
 const char* const kPad[][2] = {
     {"Left stick / d-pad", "steer (the stick in proportion)"},
@@ -130,6 +138,9 @@ void draw_help(bool* open) {
     ImGui::Spacing();
     ImGui::TextDisabled("Gamepad");
     key_table("pad", kPad, std::size(kPad));
+    ImGui::Spacing();
+    ImGui::TextDisabled("Driving a car (its driver's head must not touch the ground)");
+    key_table("car", kCar, std::size(kCar));
     ImGui::Spacing();
     ImGui::TextDisabled("Edit the level file while playing: it reloads on save.");
   }
