@@ -125,15 +125,21 @@ inline std::size_t prop_points(const PropSpec& p) { return p.points.size() + p.p
 
 // Whether the level fits SessionBudget once its budgets are lowered to it.
 inline bool affordable(const Level& level, const SessionBudget& budget) {
-  std::size_t particles = 0, points = 0;
+  std::size_t particles = 0, points = 0, tires = level.tires.size(), props = level.props.size();
   for (const TireSpec& t : level.tires) particles += 2 * static_cast<std::size_t>(t.segments);
   for (const PropSpec& p : level.props) points += prop_points(p);
+  for (const LevelVehicle& v : level.vehicles) {  // its wheels are tires, its chassis a prop
+    tires += v.spec.wheels.size();
+    for (const WheelSpec& w : v.spec.wheels) particles += 2 * static_cast<std::size_t>(w.tire.segments);
+    props += 1;
+    points += prop_points(v.spec.chassis);
+  }
   for (const Trigger& trigger : level.script.triggers)
     for (const Action& a : trigger.actions)
       if (const auto* s = std::get_if<SpawnProp>(&a)) points += prop_points(s->prop);
-  if (level.tires.size() > static_cast<std::size_t>(budget.most.tires) ||
+  if (tires > static_cast<std::size_t>(budget.most.tires) ||
       particles > static_cast<std::size_t>(budget.most.particles) ||
-      level.props.size() > static_cast<std::size_t>(budget.most.props) || points > budget.max_points ||
+      props > static_cast<std::size_t>(budget.most.props) || points > budget.max_points ||
       level.obstacles.size() > budget.max_obstacles)
     return false;
   const double sweeps =
