@@ -102,8 +102,11 @@ std::optional<VehicleView> Simulation::vehicle_at(std::size_t index) const {
   view.velocity = chassis.velocity;
   view.angular_velocity = chassis.angular_velocity;
   view.wheel_count = joints.wheel_count(v);
-  for (std::size_t w = 0; w < view.wheel_count; ++w)
+  for (std::size_t w = 0; w < view.wheel_count; ++w) {
     view.wheel_ids[w] = world.tires()[joints.wheel_tire(v, w)].id;
+    view.wheel_driven[w] = joints.axle(v, w).driven;
+  }
+  view.motor_speed = joints.drivetrain(v).motor_speed;
   const VehicleControl& control = joints.control(v);
   view.throttle = control.throttle;
   view.lean = control.lean;
