@@ -36,8 +36,14 @@ HelmetLook other_helmet() {
 }
 
 HelmetLook ghost_helmet() {
-  return {rgba(210, 235, 255, 110), rgba(235, 248, 255, 170), rgba(150, 200, 255, 90),
-          rgba(235, 248, 255, 140), rgba(235, 248, 255, 60)};
+  HelmetLook look;
+  look.shell = rgba(210, 235, 255, 110);
+  look.edge = rgba(235, 248, 255, 170);
+  look.visor = rgba(150, 200, 255, 90);
+  look.glint = rgba(235, 248, 255, 140);
+  look.stripe = rgba(235, 248, 255, 60);
+  look.suit = rgba(150, 200, 255, 70);
+  return look;
 }
 
 void draw_helmet(Draw& d, const Camera& camera, const tire::Pose& chassis, tire::Vec2 local, double radius,
