@@ -158,7 +158,7 @@ void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& sessi
     tex.vertices.clear();
   }
   if (player) draw_tire(d, camera, session, *player, alpha, true, shaded(*player));
-  draw_heads(d, camera, session, alpha, debug);
+  draw_heads(d, camera, session, alpha);
   if (debug.enabled) draw_debug(d, camera, session, alpha, debug);
   draw_grab(d, camera, session, alpha);
   d.flush();
@@ -405,8 +405,7 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
   if (t.grab) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
 }
 
-void WorldRenderer::draw_heads(Draw& d, const Camera& camera, const GameSession& session, double alpha,
-                               const DebugOptions& debug) {
+void WorldRenderer::draw_heads(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
   const tire::Simulation& simulation = session.simulation();
   for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i) {
     if (!v->head_center) continue;
@@ -415,21 +414,6 @@ void WorldRenderer::draw_heads(Draw& d, const Camera& camera, const GameSession&
     const tire::Vec2 local = head_local(v->pose, *v->head_center);
     draw_helmet(d, camera, chassis, local, v->head_radius, v->player ? player_helmet() : other_helmet(),
                 shape_);
-    // The debug view shows the head as what the level watches: a circle (the sensor the ground must
-    // not touch) and a line to the chassis' centre of mass, which it is fixed to.
-    if (debug.enabled) {
-      const tire::Vec2 at = chassis.to_world(local);
-      shape_.clear();
-      for (int k = 0; k < 24; ++k) {
-        const double a = 2.0 * std::numbers::pi * k / 24;
-        shape_.push_back(camera.to_screen(at + tire::Vec2{std::cos(a), std::sin(a)} * v->head_radius));
-      }
-      const SDL_Color sensor = rgba(255, 70, 200, 230);
-      d.polyline(shape_, true, 1.5f, sensor);
-      const tire::Vec2 center = chassis.to_world(v->pose.to_local(v->center));
-      d.line(camera.to_screen(center), camera.to_screen(at), 1.0f, sensor);
-      d.circle(camera.to_screen(center), 3.0f, sensor, 8);
-    }
   }
 }
 
