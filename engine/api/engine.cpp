@@ -1,9 +1,12 @@
 #include "tire/engine.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 
 #include "tire/io/level.h"
+#include "tire/math/trig.h"
 #include "tire/replay/replay.h"
 #include "tire/session/level_session.h"
 #include "tire/tire/parameters.h"
@@ -102,8 +105,11 @@ std::optional<VehicleView> Simulation::vehicle_at(std::size_t index) const {
   view.velocity = chassis.velocity;
   view.angular_velocity = chassis.angular_velocity;
   view.wheel_count = joints.wheel_count(v);
-  for (std::size_t w = 0; w < view.wheel_count; ++w)
+  for (std::size_t w = 0; w < view.wheel_count; ++w) {
     view.wheel_ids[w] = world.tires()[joints.wheel_tire(v, w)].id;
+    view.wheel_driven[w] = joints.axle(v, w).driven;
+  }
+  view.motor_speed = joints.drivetrain(v).motor_speed;
   const VehicleControl& control = joints.control(v);
   view.throttle = control.throttle;
   view.lean = control.lean;
@@ -213,7 +219,30 @@ void Simulation::set_threads(unsigned threads) { session_->world().set_threads(t
 unsigned Simulation::threads() const { return session_->world().threads_in_use(); }
 void Simulation::set_schedule(StepSchedule schedule) { session_->world().set_schedule(schedule); }
 
-void Simulation::debug_draw(DebugDraw& draw) const { session_->world().debug_draw(draw); }
+void Simulation::debug_draw(DebugDraw& draw) const {
+  session_->world().debug_draw(draw);
+  // The drivers' heads: the level session keeps them, not the world. Each is drawn where its
+  // chassis is drawn (DebugDraw::prop_pose), as a ring of kHeadPoints and a line to the chassis'
+  // centre of mass.
+  if (!(draw.flags() & DebugDraw::structure)) return;
+  constexpr int kHeadPoints = 24;
+  const VehicleJoints& joints = session_->world().vehicles();
+  for (std::uint32_t v = 0; v < joints.count(); ++v) {
+    const std::optional<VehicleHead>& head = session_->vehicle_head(v);
+    if (!head) continue;
+    const PropState chassis = session_->world().rigid().prop_state(joints.chassis(v));
+    const Pose pose = draw.prop_pose(joints.chassis(v), chassis.pose);
+    const Vec2 center = pose.to_world(head->position);
+    std::array<Vec2, kHeadPoints> ring;
+    for (int k = 0; k < kHeadPoints; ++k) {
+      const double a = 2.0 * std::numbers::pi * k / kHeadPoints;
+      const CosSin cs = cos_sin(a);
+      ring[static_cast<std::size_t>(k)] = center + Vec2{cs.cos, cs.sin} * head->radius;
+    }
+    draw.polygon(ring, DebugShape::head);
+    draw.segment(pose.to_world(chassis.pose.to_local(chassis.center)), center, DebugShape::head);
+  }
+}
 
 ReplayCheck check_replay(const std::filesystem::path& replay_file) {
   ReplayCheck out;

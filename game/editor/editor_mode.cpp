@@ -54,7 +54,7 @@ std::vector<Handle> handles_of(const Json& doc, const editor::Selection& selecti
       out.push_back({Handle::Kind::corner, s->outline[static_cast<std::size_t>(c)], *item, c});
   if (s->form == Form::circle)
     out.push_back({Handle::Kind::radius, editor::to_world(*s, {s->radius, 0.0}), *item});
-  if (item->kind == ItemKind::prop && s->form != Form::chain) {
+  if ((item->kind == ItemKind::prop || item->kind == ItemKind::vehicle) && s->form != Form::chain) {
     double extent = 0.0;
     for (const Vec2 p : s->outline) extent = std::max(extent, tire::length(p - s->position));
     out.push_back({Handle::Kind::angle, editor::to_world(*s, {0.0, extent + kRotatePixels / scale}), *item});
@@ -67,8 +67,13 @@ std::vector<Handle> handles_of(const Json& doc, const editor::Selection& selecti
                      (points[i] + points[(i + 1) % points.size()]) * 0.5,
                      {item->kind, item->index, set, i + 1}});
   };
-  if (s->form == Form::polygon || s->form == Form::chain)
+  // A vehicle's polygon chassis is reshaped in the property panel; its handles are its wheels' axle
+  // points and its driver's head, dragged in the chassis' frame.
+  if ((s->form == Form::polygon || s->form == Form::chain) && item->kind != ItemKind::vehicle)
     add_points(s->outline, PointSet::points, s->form == Form::polygon || s->loop);
+  for (std::size_t w = 0; w < s->axles.size(); ++w)
+    out.push_back({Handle::Kind::point, s->axles[w], {item->kind, item->index, PointSet::axles, w}});
+  if (s->head) out.push_back({Handle::Kind::point, *s->head, {item->kind, item->index, PointSet::head, 0}});
   if (!s->waypoints.empty()) add_points(s->waypoints, PointSet::waypoints, false);
   return out;
 }
@@ -316,6 +321,7 @@ void Editor::key_down(const SDL_Keysym& key) {
     case SDL_SCANCODE_P: set_tool(EditTool::polygon); break;
     case SDL_SCANCODE_L: set_tool(EditTool::chain); break;
     case SDL_SCANCODE_T: set_tool(EditTool::tire); break;
+    case SDL_SCANCODE_K: set_tool(EditTool::vehicle); break;
     case SDL_SCANCODE_R: set_tool(EditTool::region); break;
     case SDL_SCANCODE_X: set_tool(EditTool::goal); break;
     case SDL_SCANCODE_W: set_tool(EditTool::waypoint); break;
@@ -366,6 +372,13 @@ void Editor::mouse_down(int x, int y, Uint8 button, bool shift) {
     case EditTool::chain: drawing_.push_back(at); return;
     case EditTool::tire:
       add_item(ItemKind::tire, {{"position", editor::vec2(at)}});
+      tool_ = EditTool::select;
+      return;
+    case EditTool::vehicle:
+      // The player's, in a level that has no player yet (no tire, none marked).
+      add_item(ItemKind::vehicle,
+               editor::default_vehicle(at, editor::count(doc_.json(), ItemKind::tire) == 0 &&
+                                               !editor::names_a_player(doc_.json())));
       tool_ = EditTool::select;
       return;
     case EditTool::waypoint: {
@@ -438,12 +451,11 @@ void Editor::press_select(Vec2 p, bool shift) {
     if (!shift) selection_.clear();
     editor::select(selection_, *hit);
   }
-  // Moving snaps the item's reference point (its origin, hub or lower-left corner) to the grid.
+  // Moving snaps the item's reference point (its origin, hub or lower-left corner) to the grid: a
+  // vehicle's is its chassis' origin.
   const auto shape = editor::shape_of(doc_.json(), hit->kind, hit->index);
-  drag_anchor_ = shape
-                     ? (shape->form == ItemShape::Form::box && hit->kind != ItemKind::prop ? shape->outline[0]
-                                                                                           : shape->position)
-                     : p;
+  const bool corner = hit->kind == ItemKind::obstacle || hit->kind == ItemKind::region;
+  drag_anchor_ = shape ? (corner && !shape->outline.empty() ? shape->outline[0] : shape->position) : p;
   drag_base_ = doc_.json();
   doc_.begin_gesture();
   drag_ = Drag::move;
@@ -485,7 +497,22 @@ void Editor::mouse_move(int x, int y) {
       doc_.preview(editor::with_angle(drag_base_, drag_item_, a));
       break;
     }
-    case Drag::point: doc_.preview(editor::with_point(drag_base_, drag_item_, snapped(p))); break;
+    case Drag::point: {
+      const auto s = editor::shape_of(drag_base_, drag_item_.kind, drag_item_.index);
+      if (s && snap_ && (drag_item_.set == PointSet::axles || drag_item_.set == PointSet::head)) {
+        // A vehicle's axle point or head moves by whole grid steps along the chassis' own axes, so
+        // that [0.6, -0.3] dragged sideways stays at -0.3 and a symmetric car stays symmetric.
+        const Vec2 start =
+            drag_item_.set == PointSet::head ? s->head.value_or(s->position) : s->axles.at(drag_item_.point);
+        const Vec2 local = editor::to_local(*s, p) - editor::to_local(*s, press_world_);
+        const Vec2 steps{std::round(local.x / grid_) * grid_, std::round(local.y / grid_) * grid_};
+        doc_.preview(editor::with_point(drag_base_, drag_item_,
+                                        editor::to_world(*s, editor::to_local(*s, start) + steps)));
+        break;
+      }
+      doc_.preview(editor::with_point(drag_base_, drag_item_, snapped(p)));
+      break;
+    }
     default: break;
   }
 }
@@ -652,7 +679,8 @@ void Editor::draw_overlay(Draw& d) {
     for (const Vec2 p : points) out.push_back(camera_.to_screen(p));
     return out;
   };
-  for (const ItemKind kind : {ItemKind::obstacle, ItemKind::region, ItemKind::prop, ItemKind::tire}) {
+  for (const ItemKind kind :
+       {ItemKind::obstacle, ItemKind::region, ItemKind::prop, ItemKind::tire, ItemKind::vehicle}) {
     for (std::size_t i = 0; i < editor::count(doc, kind); ++i) {
       const auto s = editor::shape_of(doc, kind, i);
       if (!s || s->outline.empty()) continue;
@@ -666,6 +694,19 @@ void Editor::draw_overlay(Draw& d) {
       }
       const bool open = s->form == ItemShape::Form::chain && !s->loop;
       d.polyline(pts, !open, selected ? 3.0f : 1.0f, selected ? chosen : outline);
+      // A vehicle's wheels and head, each joined to the chassis' origin by a thin line.
+      const auto ring = [&](Vec2 c, double r) {
+        std::vector<ScreenPoint> circle;
+        for (int k = 0; k < 32; ++k) {
+          const double a = 2.0 * std::numbers::pi * k / 32;
+          circle.push_back(camera_.to_screen(c + Vec2{std::cos(a), std::sin(a)} * r));
+        }
+        d.polyline(circle, true, selected ? 2.0f : 1.0f, selected ? chosen : outline);
+        d.line(camera_.to_screen(s->position), camera_.to_screen(c), 1.0f, selected ? chosen : outline);
+      };
+      for (std::size_t w = 0; w < s->axles.size() && w < s->wheel_radii.size(); ++w)
+        ring(s->axles[w], s->wheel_radii[w]);
+      if (s->head) ring(*s->head, s->head_radius);
       if (!s->waypoints.empty()) {
         std::vector<Vec2> route{s->position};
         route.insert(route.end(), s->waypoints.begin(), s->waypoints.end());

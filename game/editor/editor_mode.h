@@ -22,7 +22,7 @@
 namespace game {
 
 // What a click with the mouse does in the editor.
-enum class EditTool { select, obstacle, box, circle, polygon, chain, tire, region, goal, waypoint };
+enum class EditTool { select, obstacle, box, circle, polygon, chain, tire, vehicle, region, goal, waypoint };
 
 // What the editor asks of the app.
 enum class EditorRequest { none, play, quit };
@@ -130,6 +130,8 @@ class Editor {
   float palette_width_ = 180.0f;     // as last drawn
   void draw_keys(const std::string& id, const std::string& pointer, tire::LevelObject object,
                  const std::string& shape);
+  // An array of level objects (a vehicle's wheels), each a tree node of its keys.
+  void draw_array(const std::string& id, const std::string& pointer, const tire::LevelKey& key);
 
   bool confirm_quit_ = false;
   EditorRequest request_ = EditorRequest::none;

@@ -37,6 +37,9 @@ constexpr ToolButton kTools[] = {
     {EditTool::chain, "Chain", "L",
      "click terrain points left to right (solid below), Enter or right click ends"},
     {EditTool::tire, "Tire", "T", "click to place a tire; the first is the player"},
+    {EditTool::vehicle, "Vehicle", "K",
+     "click to place a car (its chassis' centre); in a level without a player it is the player.\n"
+     "Selected: drag it whole, its square handles move each wheel's axle and the driver's head"},
     {EditTool::region, "Region", "R", "drag a named region for the script"},
     {EditTool::goal, "Goal", "X", "drag the region the player must reach to win"},
     {EditTool::waypoint, "Waypoint", "W", "with a prop selected, each click adds a waypoint to its path"},
@@ -48,6 +51,7 @@ LevelObject object_of(ItemKind kind) {
     case ItemKind::region: return LevelObject::region;
     case ItemKind::prop: return LevelObject::prop;
     case ItemKind::tire: return LevelObject::tire;
+    case ItemKind::vehicle: return LevelObject::vehicle;
   }
   return LevelObject::root;
 }
@@ -242,7 +246,9 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
   const Json::json_pointer where(pointer);
   PropertyTable table("##keys" + id);
   for (const LevelKey& key : tire::level_keys(object)) {
-    if (object == LevelObject::prop && !shape.empty() && !tire::applies_to_shape(key, shape)) continue;
+    if ((object == LevelObject::prop || object == LevelObject::chassis) && !shape.empty() &&
+        !tire::applies_to_shape(key, shape))
+      continue;
     if (key.key == "$schema") continue;
     const std::string field = id + "/" + key.key;
     if (key.type == KeyType::object && key.nested) {
@@ -255,18 +261,29 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
         if (!present) {
           if (ImGui::SmallButton(("set##" + field).c_str())) {
             Json next = doc_.json();
-            next.at(where)[key.key] =
-                *key.nested == LevelObject::medals ? starting_medals(doc_.json()) : Json::object();
+            next.at(where)[key.key] = *key.nested == LevelObject::medals ? starting_medals(doc_.json())
+                                      : *key.nested == LevelObject::head
+                                          ? editor::default_vehicle({}, false)["head"]  // it needs both keys
+                                          : Json::object();
             apply(std::move(next), "adding it was");
           }
           ImGui::SameLine();
           ImGui::TextDisabled(*key.nested == LevelObject::bounds ? "(computed from the level)"
                                                                  : "(defaults)");
         } else {
-          draw_keys(field, pointer + "/" + key.key, *key.nested, "");
+          // A chassis shows the keys of its shape, as a prop does.
+          const std::string nested_shape =
+              *key.nested == LevelObject::chassis ? editor::string_at(parent[key.key], "shape", "box") : "";
+          draw_keys(field, pointer + "/" + key.key, *key.nested, nested_shape);
         }
         ImGui::TreePop();
       }
+      continue;
+    }
+    if (key.type == KeyType::array && key.nested && object != LevelObject::root) {
+      // A vehicle's wheels: one node each, with its keys, and a button to add one like the last.
+      table.end();
+      draw_array(field, pointer, key);
       continue;
     }
     if (key.type == KeyType::array || key.type == KeyType::object) continue;  // counters: kept as written
@@ -303,12 +320,42 @@ void Editor::draw_keys(const std::string& id, const std::string& pointer, LevelO
   }
 }
 
+void Editor::draw_array(const std::string& id, const std::string& pointer, const LevelKey& key) {
+  const Json& parent = doc_.json().at(Json::json_pointer(pointer));
+  const auto it = parent.find(key.key);
+  const std::size_t n = it != parent.end() && it->is_array() ? it->size() : 0;
+  const std::string singular = key.key.ends_with("s") ? key.key.substr(0, key.key.size() - 1) : key.key;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string field = id + "/" + std::to_string(i);
+    const std::string where = pointer + "/" + key.key + "/" + std::to_string(i);
+    if (ImGui::TreeNode((singular + " " + std::to_string(i) + "##" + field).c_str())) {
+      draw_keys(field, where, *key.nested, "");
+      if (ImGui::SmallButton(("remove##" + field).c_str())) {
+        Json next = doc_.json();
+        next.at(Json::json_pointer(pointer + "/" + key.key)).erase(i);
+        if (apply(std::move(next), "removing it was")) selection_ = {selection_.front().item()};
+      }
+      ImGui::TreePop();
+    }
+  }
+  if (n > 0 && ImGui::SmallButton(("add a " + singular + "##" + id).c_str())) {
+    // A copy of the last, its axle (a wheel's) a little behind it.
+    Json next = doc_.json();
+    Json& items = next.at(Json::json_pointer(pointer + "/" + key.key));
+    Json copy = items.back();
+    if (copy.is_object() && copy.contains("axle"))
+      copy["axle"] = editor::vec2(editor::vec2_at(copy, "axle", {}) + tire::Vec2{-0.5, 0.0});
+    items.push_back(std::move(copy));
+    apply(std::move(next), "adding it was");
+  }
+}
+
 void Editor::draw_level_properties() {
   ImGui::TextUnformatted("Level");
   draw_keys("root", "", LevelObject::root, "");
   const Json& doc = doc_.json();
   ImGui::Separator();
-  for (const char* key : {"tires", "obstacles", "props", "regions", "counters", "triggers"}) {
+  for (const char* key : {"tires", "vehicles", "obstacles", "props", "regions", "counters", "triggers"}) {
     const auto it = doc.find(key);
     ImGui::TextDisabled(
         "%s: %zu%s", key, it != doc.end() && it->is_array() ? it->size() : 0,
@@ -325,6 +372,11 @@ void Editor::draw_item_properties(const editor::Pick& item) {
       item.kind == ItemKind::prop
           ? editor::string_at(doc[editor::array_key(item.kind)][item.index], "shape", "box")
           : "";
+  if (item.kind == ItemKind::vehicle) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("drag it whole; its square handles: each wheel's axle, the driver's head");
+    ImGui::PopStyleColor();
+  }
   draw_keys(pointer, pointer, object_of(item.kind), shape);
 }
 
@@ -347,12 +399,19 @@ Json Editor::computed_default(const std::string& pointer, const LevelKey& key) c
   }
   // A tire that names a material preset: the preset's value, where it sets the key (as the level
   // reader applies it: tire/io/level_format.h).
-  if (pointer.starts_with("/tires/")) {
-    const Json::json_pointer tire_pointer(
-        pointer.substr(0, pointer.find('/', std::string_view("/tires/").size())));
-    if (doc_.json().contains(tire_pointer))
+  // A vehicle's wheel likewise ("/vehicles/0/wheels/1", or its compliance below it).
+  std::optional<Json::json_pointer> tire_pointer;
+  if (pointer.starts_with("/tires/"))
+    tire_pointer =
+        Json::json_pointer(pointer.substr(0, pointer.find('/', std::string_view("/tires/").size())));
+  else if (const std::size_t w = pointer.find("/wheels/");
+           pointer.starts_with("/vehicles/") && w != std::string::npos)
+    tire_pointer =
+        Json::json_pointer(pointer.substr(0, pointer.find('/', w + std::string_view("/wheels/").size())));
+  if (tire_pointer) {
+    if (doc_.json().contains(*tire_pointer))
       if (const tire::MaterialPreset* m =
-              tire::find_material_preset(editor::string_at(doc_.json().at(tire_pointer), "material", "")))
+              tire::find_material_preset(editor::string_at(doc_.json().at(*tire_pointer), "material", "")))
         if (const std::optional<double> v = m->value(row->key)) return *v;
   }
   if (!follows.empty())

@@ -30,9 +30,18 @@ bool has_item(const Json& doc, const Pick& p) {
 
 const char* set_key(PointSet set) { return set == PointSet::waypoints ? "waypoints" : "points"; }
 
-// The array a point pick indexes into, or nullptr.
+// The object whose position, angle and shape an item's handles change: a vehicle's chassis, or the
+// item itself.
+Json& body_of(Json& doc, const Pick& p) {
+  Json& item = item_at(doc, p);
+  if (p.kind != ItemKind::vehicle) return item;
+  if (!item.contains("chassis") || !item["chassis"].is_object()) item["chassis"] = Json::object();
+  return item["chassis"];
+}
+
+// The array a point pick indexes into, or nullptr (none for a vehicle's axles or head).
 Json* point_array(Json& doc, const Pick& p) {
-  if (!has_item(doc, p.item())) return nullptr;
+  if (!has_item(doc, p.item()) || p.set == PointSet::axles || p.set == PointSet::head) return nullptr;
   Json& item = item_at(doc, p);
   Json* holder = &item;
   if (p.set == PointSet::waypoints) {
@@ -43,6 +52,24 @@ Json* point_array(Json& doc, const Pick& p) {
   return it != holder->end() && it->is_array() ? &*it : nullptr;
 }
 
+// The [x, y] a point pick names, or nullptr. A vehicle's axle point or head is made when missing.
+Json* point_at(Json& doc, const Pick& p) {
+  if (!has_item(doc, p.item())) return nullptr;
+  Json& item = item_at(doc, p);
+  if (p.set == PointSet::axles) {
+    if (!item.contains("wheels") || !item["wheels"].is_array() || p.point >= item["wheels"].size() ||
+        !item["wheels"][p.point].is_object())
+      return nullptr;
+    return &item["wheels"][p.point]["axle"];
+  }
+  if (p.set == PointSet::head) {
+    if (!item.contains("head") || !item["head"].is_object()) return nullptr;
+    return &item["head"]["position"];
+  }
+  Json* points = point_array(doc, p);
+  return points && p.point < points->size() ? &(*points)[p.point] : nullptr;
+}
+
 void shift(Json& j, const char* key, Vec2 d) {
   if (j.contains(key)) j[key] = vec2(vec2_at(j, key, {}) + d);
 }
@@ -51,6 +78,12 @@ void move_item(Json& doc, const Pick& p, Vec2 d) {
   Json& j = item_at(doc, p);
   switch (p.kind) {
     case ItemKind::tire: shift(j, "position", d); break;
+    case ItemKind::vehicle: {
+      // The wheels and the head hang in the chassis' frame: they come along.
+      Json& chassis = body_of(doc, p);
+      chassis["position"] = vec2(vec2_at(chassis, "position", {}) + d);
+      break;
+    }
     case ItemKind::obstacle:
     case ItemKind::region:
       shift(j, "min", d);
@@ -91,9 +124,9 @@ Json moved(const Json& doc, const Selection& selection, Vec2 delta) {
     }
     if (is_selected(selection, p.item())) continue;
     const auto shape = shape_of(out, p.kind, p.index);
-    Json* points = point_array(out, p);
-    if (!shape || !points || p.point >= points->size()) continue;
-    Json& q = (*points)[p.point];
+    Json* point = point_at(out, p);
+    if (!shape || !point) continue;
+    Json& q = *point;
     const Vec2 old{q.is_array() && q.size() == 2 && q[0].is_number() ? q[0].get<double>() : 0.0,
                    q.is_array() && q.size() == 2 && q[1].is_number() ? q[1].get<double>() : 0.0};
     if (p.set == PointSet::waypoints)
@@ -111,7 +144,15 @@ Json removed(const Json& doc, const Selection& selection) {
     const Pick& p = *it;
     if (p.is_point()) {
       if (is_selected(selection, p.item())) continue;
-      if (Json* points = point_array(out, p); points && p.point < points->size()) points->erase(p.point);
+      if (p.set == PointSet::axles && has_item(out, p.item())) {
+        Json& item = item_at(out, p);
+        if (item.contains("wheels") && item["wheels"].is_array() && p.point < item["wheels"].size())
+          item["wheels"].erase(p.point);
+      } else if (p.set == PointSet::head && has_item(out, p.item())) {
+        item_at(out, p).erase("head");
+      } else if (Json* points = point_array(out, p); points && p.point < points->size()) {
+        points->erase(p.point);
+      }
     } else if (has_item(out, p)) {
       out[array_key(p.kind)].erase(p.index);
     }
@@ -166,9 +207,9 @@ Json with_corner(const Json& doc, const Pick& item, int corner, Vec2 corner_worl
   const auto shape = shape_of(doc, item.kind, item.index);
   if (!shape || shape->form != ItemShape::Form::box || shape->outline.size() != 4) return doc;
   Json out = doc;
-  Json& j = item_at(out, item);
+  Json& j = body_of(out, item);
   const Vec2 opposite = shape->outline[static_cast<std::size_t>((corner + 2) % 4)];
-  if (item.kind != ItemKind::prop) {
+  if (item.kind != ItemKind::prop && item.kind != ItemKind::vehicle) {
     j["min"] = vec2({std::min(corner_world.x, opposite.x), std::min(corner_world.y, opposite.y)});
     j["max"] = vec2({std::max(corner_world.x, opposite.x), std::max(corner_world.y, opposite.y)});
     return out;
@@ -183,7 +224,7 @@ Json with_radius(const Json& doc, const Pick& item, double radius) {
   const auto shape = shape_of(doc, item.kind, item.index);
   if (!shape || shape->form != ItemShape::Form::circle) return doc;
   Json out = doc;
-  Json& j = item_at(out, item);
+  Json& j = body_of(out, item);
   if (item.kind == ItemKind::tire) {
     j["outer_radius"] = number(radius);
     j["inner_radius"] = number(shape->inner_radius * radius / shape->radius);
@@ -194,18 +235,18 @@ Json with_radius(const Json& doc, const Pick& item, double radius) {
 }
 
 Json with_angle(const Json& doc, const Pick& item, double angle) {
-  if (!has_item(doc, item) || item.kind != ItemKind::prop) return doc;
+  if (!has_item(doc, item) || (item.kind != ItemKind::prop && item.kind != ItemKind::vehicle)) return doc;
   Json out = doc;
-  item_at(out, item)["angle"] = number(angle);
+  body_of(out, item)["angle"] = number(angle);
   return out;
 }
 
 Json with_point(const Json& doc, const Pick& point, Vec2 world) {
   const auto shape = shape_of(doc, point.kind, point.index);
   Json out = doc;
-  Json* points = point_array(out, point);
-  if (!shape || !points || point.point >= points->size()) return doc;
-  (*points)[point.point] = vec2(point.set == PointSet::waypoints ? world : to_local(*shape, world));
+  Json* at = point_at(out, point);
+  if (!shape || !at) return doc;
+  *at = vec2(point.set == PointSet::waypoints ? world : to_local(*shape, world));
   return out;
 }
 
@@ -217,6 +258,39 @@ Json with_point_inserted(const Json& doc, const Pick& point, Vec2 world) {
   points->insert(points->begin() + static_cast<std::ptrdiff_t>(point.point),
                  vec2(point.set == PointSet::waypoints ? world : to_local(*shape, world)));
   return out;
+}
+
+Json default_vehicle(Vec2 at, bool player) {
+  // Keys in the reference's order, as a save writes them.
+  const auto wheel = [](Vec2 axle, bool sprung) {
+    Json w{{"axle", vec2(axle)}};
+    if (sprung) {
+      w["stiffness"] = 6000;
+      w["damping"] = 300;
+      w["driven"] = false;
+    }
+    w["outer_radius"] = 0.35;
+    w["inner_radius"] = 0.22;
+    w["segments"] = 24;
+    w["mass"] = 8;
+    return w;
+  };
+  const Json rear = wheel({-0.6, -0.3}, false), front = wheel({0.6, -0.3}, true);
+  Json v = Json::object();
+  if (player) v["player"] = true;
+  v["chassis"] = {{"shape", "box"}, {"position", vec2(at)}, {"size", vec2({1.6, 0.3})}, {"density", 100}};
+  v["wheels"] = Json::array({rear, front});
+  v["head"] = {{"position", vec2({0.3, 0.35})}, {"radius", 0.15}};
+  return v;
+}
+
+bool names_a_player(const Json& doc) {
+  for (const ItemKind kind : {ItemKind::tire, ItemKind::vehicle})
+    for (std::size_t i = 0; i < count(doc, kind); ++i) {
+      const Json& item = doc[array_key(kind)][i];
+      if (item.is_object() && item.value("player", false)) return true;
+    }
+  return false;
 }
 
 Json with_waypoint(const Json& doc, const Pick& prop, Vec2 world, Pick& added) {

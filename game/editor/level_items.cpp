@@ -12,7 +12,8 @@ namespace editor {
 namespace {
 
 constexpr int kCirclePoints = 32;
-constexpr ItemKind kTopFirst[] = {ItemKind::tire, ItemKind::prop, ItemKind::region, ItemKind::obstacle};
+constexpr ItemKind kTopFirst[] = {ItemKind::vehicle, ItemKind::tire, ItemKind::prop, ItemKind::region,
+                                  ItemKind::obstacle};
 
 const Json* item_json(const Json& doc, ItemKind kind, std::size_t index) {
   const auto it = doc.find(array_key(kind));
@@ -57,6 +58,10 @@ double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
 }
 
 bool hits(const ItemShape& s, Vec2 p, double tolerance) {
+  // A vehicle is hit on its wheels and head as on its chassis.
+  for (std::size_t w = 0; w < s.axles.size() && w < s.wheel_radii.size(); ++w)
+    if (tire::length(p - s.axles[w]) <= s.wheel_radii[w] + tolerance) return true;
+  if (s.head && tire::length(p - *s.head) <= s.head_radius + tolerance) return true;
   if (s.outline.empty()) return false;
   if (s.form == ItemShape::Form::chain) {
     const std::size_t n = s.outline.size();
@@ -76,18 +81,24 @@ const char* array_key(ItemKind kind) {
     case ItemKind::region: return "regions";
     case ItemKind::prop: return "props";
     case ItemKind::tire: return "tires";
+    case ItemKind::vehicle: return "vehicles";
   }
   return "";
 }
 
 std::string describe(const Json& doc, ItemKind kind, std::size_t index) {
-  static constexpr const char* kNames[] = {"obstacle", "region", "prop", "tire"};
+  static constexpr const char* kNames[] = {"obstacle", "region", "prop", "tire", "vehicle"};
   std::string text = std::string(kNames[static_cast<int>(kind)]) + " " + std::to_string(index);
   if (const Json* j = item_json(doc, kind, index)) {
     const std::string name = string_at(*j, "name", "");
     if (!name.empty()) text += " (" + name + ")";
     if (kind == ItemKind::prop)
       text += ": " + string_at(*j, "type", "static") + " " + string_at(*j, "shape", "?");
+    if (kind == ItemKind::vehicle) {
+      const auto wheels = j->find("wheels");
+      text += std::string(j->value("player", false) ? " (the player)" : "") + ": " +
+              std::to_string(wheels != j->end() && wheels->is_array() ? wheels->size() : 0) + " wheels";
+    }
   }
   return text;
 }
@@ -156,7 +167,32 @@ std::optional<ItemShape> shape_of(const Json& doc, ItemKind kind, std::size_t in
       s.outline = circle_points(s.position, s.radius);
       return s;
     }
-    case ItemKind::prop: {
+    case ItemKind::vehicle: {
+      static const Json kNone = Json::object();
+      const auto chassis = j.find("chassis");
+      s = prop_shape(chassis != j.end() && chassis->is_object() ? *chassis : kNone);
+      s.waypoints.clear();
+      if (const auto wheels = j.find("wheels"); wheels != j.end() && wheels->is_array())
+        for (const Json& w : *wheels) {
+          if (!w.is_object()) continue;
+          s.axles.push_back(to_world(s, vec2_at(w, "axle", {})));
+          s.wheel_radii.push_back(number_at(w, "outer_radius", tire::TireSpec{}.outer_radius));
+        }
+      if (const auto head = j.find("head"); head != j.end() && head->is_object()) {
+        s.head = to_world(s, vec2_at(*head, "position", {}));
+        s.head_radius = number_at(*head, "radius", 0.0);
+      }
+      return s;
+    }
+    case ItemKind::prop: return prop_shape(j);
+  }
+  return std::nullopt;
+}
+
+ItemShape prop_shape(const Json& j) {
+  ItemShape s;
+  {
+    {
       const tire::PropSpec defaults;
       s.position = vec2_at(j, "position", defaults.position);
       s.angle = number_at(j, "angle", defaults.angle);
@@ -180,7 +216,21 @@ std::optional<ItemShape> shape_of(const Json& doc, ItemKind kind, std::size_t in
       return s;
     }
   }
-  return std::nullopt;
+}
+
+std::vector<Vec2> extent_points(const ItemShape& s) {
+  std::vector<Vec2> points = s.outline;
+  points.insert(points.end(), s.waypoints.begin(), s.waypoints.end());
+  for (std::size_t w = 0; w < s.axles.size() && w < s.wheel_radii.size(); ++w) {
+    const double r = s.wheel_radii[w];
+    points.push_back(s.axles[w] - Vec2{r, r});
+    points.push_back(s.axles[w] + Vec2{r, r});
+  }
+  if (s.head) {
+    points.push_back(*s.head - Vec2{s.head_radius, s.head_radius});
+    points.push_back(*s.head + Vec2{s.head_radius, s.head_radius});
+  }
+  return points;
 }
 
 std::optional<Pick> pick_item(const Json& doc, Vec2 p, double tolerance) {
@@ -212,7 +262,7 @@ Selection items_inside(const Json& doc, const tire::Aabb& box) {
     for (std::size_t i = 0; i < count(doc, kind); ++i) {
       const auto s = shape_of(doc, kind, i);
       if (!s || s->outline.empty()) continue;
-      const tire::Aabb b = tire::bounds_of(s->outline);
+      const tire::Aabb b = tire::bounds_of(extent_points(*s));
       if (b.min.x >= box.min.x && b.min.y >= box.min.y && b.max.x <= box.max.x && b.max.y <= box.max.y)
         select(out, Pick{kind, i});
     }
@@ -226,8 +276,7 @@ std::optional<tire::Aabb> level_extent(const Json& doc) {
     for (std::size_t i = 0; i < count(doc, kind); ++i) {
       const auto s = shape_of(doc, kind, i);
       if (!s) continue;
-      std::vector<Vec2> points = s->outline;
-      points.insert(points.end(), s->waypoints.begin(), s->waypoints.end());
+      const std::vector<Vec2> points = extent_points(*s);
       if (points.empty()) continue;
       const tire::Aabb b = tire::bounds_of(points);
       all = all ? tire::Aabb{{std::min(all->min.x, b.min.x), std::min(all->min.y, b.min.y)},

@@ -1,7 +1,7 @@
 // What the editor can point at in a level, read straight from the level's JSON: its tires,
-// obstacles, props and regions, the points of its polygons and chains and the waypoints of its
-// paths. Reading is lenient (a missing or half-typed key takes its default), so that a level the
-// validator refuses can still be drawn and fixed.
+// obstacles, props, regions and vehicles, the points of its polygons and chains, the waypoints of
+// its paths, and a vehicle's axle points (its wheels) and driver's head. Reading is lenient (a missing or
+// half-typed key takes its default), so that a level the validator refuses can still be drawn and fixed.
 #pragma once
 
 #include <compare>
@@ -19,14 +19,15 @@ using Json = nlohmann::ordered_json;
 using tire::Vec2;
 
 // The arrays of the level's root that hold items, in the order they are drawn (the last on top).
-enum class ItemKind { obstacle, region, prop, tire };
-// The root key of each kind: "obstacles", "regions", "props", "tires".
+enum class ItemKind { obstacle, region, prop, tire, vehicle };
+// The root key of each kind: "obstacles", "regions", "props", "tires", "vehicles".
 const char* array_key(ItemKind kind);
 // One item, for messages and the panel's title: "prop 2 (crate)".
 std::string describe(const Json& doc, ItemKind kind, std::size_t index);
 
-// Which points of an item a pick names.
-enum class PointSet { none, points, waypoints };
+// Which points of an item a pick names: a polygon's or chain's points, a path's waypoints, a
+// vehicle's axle points (point w: wheel w's `axle`) or its driver's head (point 0: `head.position`).
+enum class PointSet { none, points, waypoints, axles, head };
 
 // An item, or one point of an item: what a click selects.
 struct Pick {
@@ -62,8 +63,18 @@ struct ItemShape {
       outline;        // world points: a box's corners, a circle's 32 points, a polygon's or chain's points
   bool loop = false;  // a chain's last point joins its first
   std::vector<Vec2> waypoints;  // a kinematic prop's path, world coordinates
+  // A vehicle: the shape above is its chassis' (position, angle and outline), and these its parts.
+  std::vector<Vec2> axles;          // each wheel's axle point, world coordinates
+  std::vector<double> wheel_radii;  // each wheel's outer radius
+  std::optional<Vec2> head;         // the driver's head's centre, world coordinates
+  double head_radius = 0.0;
 };
 std::optional<ItemShape> shape_of(const Json& doc, ItemKind kind, std::size_t index);
+// A prop's shape (or a vehicle's chassis', which has a prop's keys) from its JSON object.
+ItemShape prop_shape(const Json& prop);
+
+// Every point an item covers, for its bounds: its outline, waypoints, and a vehicle's wheels and head.
+std::vector<Vec2> extent_points(const ItemShape& shape);
 
 // How many items of a kind the document holds.
 std::size_t count(const Json& doc, ItemKind kind);
@@ -76,6 +87,7 @@ Vec2 to_local(const ItemShape& prop, Vec2 world);
 // earlier), within `tolerance` metres of a chain's line or a circle's edge.
 std::optional<Pick> pick_item(const Json& doc, Vec2 p, double tolerance);
 // The polygon or chain point, or path waypoint, within `reach` metres of `p` (the topmost prop's).
+// A vehicle's axle points and head are not picked here: they are handles of a selected vehicle.
 std::optional<Pick> pick_point(const Json& doc, Vec2 p, double reach);
 // The items whose shapes lie wholly inside `box`.
 Selection items_inside(const Json& doc, const tire::Aabb& box);

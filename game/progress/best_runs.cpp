@@ -125,10 +125,7 @@ nlohmann::json BestRuns::summary(const std::string& level_path) const {
     g["file"] = ghost_.file().string();
     g["tick"] = ghost_.tick();
     g["ticks"] = ghost_.ticks();
-    if (const std::optional<tire::TireView> p = ghost_.player()) {
-      const tire::Vec2 c = p->centroid;
-      g["position"] = {c.x, c.y};
-    }
+    if (const std::optional<tire::Vec2> c = ghost_.position()) g["position"] = {c->x, c->y};
   }
   out["ghost"] = g;
   return out;

@@ -20,6 +20,7 @@ constexpr SDL_Color kVelocity = rgba(255, 220, 0);
 constexpr SDL_Color kBounds = rgba(60, 230, 90);
 constexpr SDL_Color kCandidateObstacle = rgba(255, 140, 0);
 constexpr SDL_Color kCandidateProp = rgba(230, 0, 230);  // and the narrow-phase pairs
+constexpr SDL_Color kHead = rgba(255, 70, 200, 230);     // a driver's head: the circle the level watches
 
 // Seconds of travel a velocity arrow shows, and metres a unit normal is drawn long.
 constexpr double kVelocityArrowSeconds = 0.25;
@@ -48,8 +49,9 @@ unsigned debug_flags(const DebugOptions& o) {
 }
 
 SDL_Color SdlDebugDraw::color(SDL_Color c, DebugShape kind) const {
-  // Every kind but these two is reported for one tire (debug_draw.cpp's draw_tire).
-  const bool of_tire = kind != DebugShape::prop_bounds && kind != DebugShape::obstacle_bounds;
+  // Every kind but these three is reported for one tire (debug_draw.cpp's draw_tire).
+  const bool of_tire =
+      kind != DebugShape::prop_bounds && kind != DebugShape::obstacle_bounds && kind != DebugShape::head;
   return asleep_ && of_tire ? asleep_shade(c) : c;
 }
 
@@ -59,13 +61,16 @@ void SdlDebugDraw::segment(tire::Vec2 a, tire::Vec2 b, DebugShape kind) {
     c = kCandidateObstacle;
   else if (kind == DebugShape::candidate_prop)
     c = kCandidateProp;
+  else if (kind == DebugShape::head)
+    c = kHead;
   d_.line(camera_.to_screen(a), camera_.to_screen(b), 1.0f, color(c, kind));
 }
 
 void SdlDebugDraw::polygon(std::span<const tire::Vec2> points, DebugShape kind) {
   points_.clear();
   for (const tire::Vec2& p : points) points_.push_back(camera_.to_screen(p));
-  d_.polyline(points_, true, 1.5f, color(kind == DebugShape::rim ? kRim : kTread, kind));
+  const SDL_Color c = kind == DebugShape::rim ? kRim : kind == DebugShape::head ? kHead : kTread;
+  d_.polyline(points_, true, 1.5f, color(c, kind));
 }
 
 void SdlDebugDraw::point(tire::Vec2 p, DebugShape kind) {

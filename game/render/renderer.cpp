@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "render/debug_draw_sdl.h"
+#include "render/vehicle_draw.h"
 
 namespace game {
 
@@ -157,6 +158,7 @@ void WorldRenderer::draw(Draw& d, const Camera& camera, const GameSession& sessi
     tex.vertices.clear();
   }
   if (player) draw_tire(d, camera, session, *player, alpha, true, shaded(*player));
+  draw_heads(d, camera, session, alpha);
   if (debug.enabled) draw_debug(d, camera, session, alpha, debug);
   draw_grab(d, camera, session, alpha);
   d.flush();
@@ -401,6 +403,18 @@ void WorldRenderer::draw_tire(Draw& d, const Camera& camera, const GameSession& 
   const float cap = std::max(2.0f, camera.pixels(t.inner_radius * 0.3));
   d.circle(hub, cap, shade(kHubCap), std::clamp(static_cast<int>(cap / 1.5f), 4, 16));
   if (t.grab) d.polyline(outer_, true, 2.5f, rgba(255, 230, 90));
+}
+
+void WorldRenderer::draw_heads(Draw& d, const Camera& camera, const GameSession& session, double alpha) {
+  const tire::Simulation& simulation = session.simulation();
+  for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i) {
+    if (!v->head_center) continue;
+    // On the chassis as drawn (blended between ticks), where the engine has it on the chassis now.
+    const tire::Pose chassis = session.interpolated_pose(v->chassis, alpha);
+    const tire::Vec2 local = head_local(v->pose, *v->head_center);
+    draw_helmet(d, camera, chassis, local, v->head_radius, v->player ? player_helmet() : other_helmet(),
+                shape_);
+  }
 }
 
 void WorldRenderer::draw_grab(Draw& d, const Camera& camera, const GameSession& session, double alpha) {

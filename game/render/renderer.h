@@ -63,6 +63,8 @@ class WorldRenderer {
   // `shaded`: in asleep_shade() (draw.h), as the debug view draws a sleeping tire.
   void draw_tire(Draw& d, const Camera& camera, const GameSession& session, const tire::TireView& t,
                  double alpha, bool is_player, bool shaded);
+  // Each vehicle's driver's head, a helmet (the debug view adds the circle the engine reports).
+  void draw_heads(Draw& d, const Camera& camera, const GameSession& session, double alpha);
   void draw_debug(Draw& d, const Camera& camera, const GameSession& session, double alpha,
                   const DebugOptions& debug);
 

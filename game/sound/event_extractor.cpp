@@ -15,6 +15,7 @@ std::string_view kind_name(SoundKind kind) {
     case SoundKind::message: return "message";
     case SoundKind::win: return "win";
     case SoundKind::lose: return "lose";
+    case SoundKind::motor: return "motor";
   }
   return "?";
 }
@@ -87,7 +88,12 @@ void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::
   const std::uint64_t tick = simulation.tick();
   const std::optional<tire::TireId> player_id = simulation.player();
   const std::optional<tire::TireView> player = player_id ? simulation.tire(*player_id) : std::nullopt;
+  const std::optional<SoundEvent> motor = motor_event(simulation, motor_);
   listener_x_ = player ? std::optional<double>(player->centroid.x) : std::nullopt;
+  // A player vehicle: the view follows its centre of mass, and so does the listener.
+  if (!player)
+    for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i)
+      if (v->player) listener_x_ = v->center.x;
   for (std::size_t i = 0; const std::optional<tire::TireView> view = simulation.tire_at(i); ++i) {
     const tire::TireView& t = *view;
     if (t.asleep) continue;  // not simulated: silent, and its figures are those it fell asleep with
@@ -120,6 +126,7 @@ void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::
   if (input.jump && player_grounded_ && player)
     out.push_back({tick, SoundKind::jump, Surface::none, -1, tuning_.jump_gain, 1.0});
   player_grounded_ = player && player->may_jump;
+  if (motor) out.push_back(*motor);
   script_events(simulation, out);
 }
 

@@ -7,6 +7,8 @@
 //    follow the rise in N·s.
 //  - A grounded, awake tire rolls: pitch from its angular speed. A contact sliding under kinetic
 //    friction faster than kSkidMinSpeed skids.
+//  - A player vehicle's motor, held while it exists: pitch from its driven wheels' spin, loudness
+//    from the throttle (motor_tone.h).
 //  - The player's jump, a new checkpoint, a new script message, won and lost.
 // No SDL: tested on its own (game/tests/test_sound.cpp).
 #pragma once
@@ -17,6 +19,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "motor_tone.h"
 #include "sound_event.h"
 #include "tire/engine.h"
 
@@ -65,7 +68,8 @@ struct ExtractorTuning {
 
 class EventExtractor {
  public:
-  explicit EventExtractor(ExtractorTuning tuning = {}) : tuning_(tuning) {}
+  explicit EventExtractor(ExtractorTuning tuning = {}, MotorTuning motor = {})
+      : tuning_(tuning), motor_(motor) {}
 
   // After a tick of `simulation`, in which the player's input was `input`: appends its events to
   // `out`, the tires' and then the script's (checkpoint, message, won, lost).
@@ -92,6 +96,7 @@ class EventExtractor {
               std::vector<SoundEvent>& out);
 
   ExtractorTuning tuning_;
+  MotorTuning motor_;
   std::unordered_map<tire::TireId, TireState> tires_;
   std::optional<double> listener_x_;  // the player's hub, this tick (none: no player)
   bool player_grounded_ = false;      // before this tick's step: what the jump needs

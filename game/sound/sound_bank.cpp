@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <numbers>
 
+#include "motor_tone.h"
+
 namespace game::sound {
 
 namespace {
@@ -88,6 +90,23 @@ std::vector<float> skid() {
   return s;
 }
 
+// The motor: a buzz at kMotorHz, its odd and even overtones over a fundamental that a slower beat
+// (every second period, the cylinders firing in turn) swells, as a loop of whole periods. The
+// wave is sin φ (1 + 3a − 4a sin²φ + 2b cos φ) · (beat > 0), so it crosses zero exactly twice a
+// period: the pitch shows as the rate of its zero crossings (test_sound.cpp).
+std::vector<float> motor() {
+  constexpr int kPeriods = 60;
+  const auto period = static_cast<std::size_t>(SoundBank::kRate / kMotorHz);  // 735 samples, exactly
+  std::vector<float> s(kPeriods * period + 1);  // the last sample is the first: the loop closes
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double phase = kTwoPi * static_cast<double>(i) / static_cast<double>(period);
+    const double wave = std::sin(phase) + 0.3 * std::sin(3.0 * phase) + 0.2 * std::sin(2.0 * phase);
+    const double beat = 0.8 + 0.2 * std::cos(0.5 * phase);
+    s[i] = static_cast<float>(0.55 * wave * beat);
+  }
+  return s;
+}
+
 // A tone sweeping from f0 to f1 (exponentially) with an exponential decay.
 std::vector<float> sweep(double seconds, double f0, double f1, double decay, double overtone) {
   std::vector<float> s = samples_for(seconds);
@@ -150,6 +169,7 @@ SoundBank::SoundBank() {
   set(SoundKind::message, sweep(0.1, 660.0, 700.0, 0.04, 0.0));
   set(SoundKind::win, notes({523.25, 659.25, 783.99, 1046.5}, 0.11, 0.18));
   set(SoundKind::lose, sweep(0.8, 400.0, 140.0, 0.35, 0.5));
+  set(SoundKind::motor, motor());
 }
 
 double SoundBank::seconds(SoundKind kind, double pitch) const {

@@ -30,7 +30,7 @@ class SoundBank {
   double envelope(SoundKind kind, double seconds, double pitch) const;
 
  private:
-  std::array<Sample, 8> samples_;
+  std::array<Sample, 9> samples_;  // one per SoundKind
 };
 
 }  // namespace game::sound

@@ -17,13 +17,16 @@ enum class SoundKind : std::uint8_t {
   message,     // the script put a message on screen
   win,
   lose,
+  motor,  // the player vehicle's motor (held while there is one: one record a tick; motor_tone.h)
 };
 
 // What an impact hit.
 enum class Surface : std::uint8_t { none, ground, prop, tire };
 
 // Held sounds last while a record arrives every tick; the rest play once.
-constexpr bool is_held(SoundKind k) { return k == SoundKind::roll || k == SoundKind::skid; }
+constexpr bool is_held(SoundKind k) {
+  return k == SoundKind::roll || k == SoundKind::skid || k == SoundKind::motor;
+}
 
 std::string_view kind_name(SoundKind kind);
 std::string_view surface_name(Surface surface);
@@ -32,7 +35,7 @@ struct SoundEvent {
   std::uint64_t tick = 0;  // Simulation::tick() after the step that made it
   SoundKind kind = SoundKind::impact;
   Surface surface = Surface::none;
-  std::int64_t tire = -1;  // the tire's id, or −1 for a game event
+  std::int64_t tire = -1;  // the tire's id, or −1 for a game event and the motor
   double gain = 0.0;       // [0, 1]
   double pitch = 1.0;      // playback rate: 1 as synthesised, 2 an octave up
   double pan = 0.0;        // [-1, 1], left to right: where the tire is from the player (0 for game events)

@@ -7,7 +7,12 @@ With NEW in place of LEVEL, builds a level from a file that does not exist, only
 and keys (O and a drag: the ground; T and a click: the tire; X and a drag: the goal; Ctrl+S), and
 checks that tirectl validates it and wins it by holding right.
 
-usage: editor_drag_check.py TIRE_GAME TIRECTL LEVEL|NEW WORKDIR
+With VEHICLE, builds a level with a car: O and a drag: the ground; K and a click: the car (the
+player); X and a drag: the goal; Ctrl+S. Then finds the car's front hub on screen by its colour,
+selects the car and drags that wheel's axle handle 30 px (half a metre) to the right, saves, and
+checks that only that axle moved, in the chassis' frame; the file validates and holding right wins.
+
+usage: editor_drag_check.py TIRE_GAME TIRECTL LEVEL|NEW|VEHICLE WORKDIR
 Exit 77 (ctest: skipped) when Xvfb, xdotool or ImageMagick is missing.
 """
 import json
@@ -18,6 +23,7 @@ import sys
 import time
 
 CRATE = (214, 146, 66)  # the game's colour for dynamic props (game/renderer.cpp kDynamic)
+HUB_CAP = (60, 60, 66)  # a tire's hub cap, drawn in full detail (game/renderer.cpp kHubCap)
 
 
 def skip(why):
@@ -35,6 +41,19 @@ def free_display():
         if not os.path.exists(f"/tmp/.X11-unix/X{n}") and not os.path.exists(f"/tmp/.X{n}-lock"):
             return f":{n}"
     fail("no free X display number")
+
+
+def pixels_of(window, env, shot, colour):
+    subprocess.run(["import", "-window", window, shot], env=env, check=True)
+    ppm = subprocess.run(["convert", shot, "-depth", "8", "ppm:-"], env=env, check=True,
+                         capture_output=True).stdout
+    parts = ppm.split(maxsplit=4)
+    width, height, data = int(parts[1]), int(parts[2]), parts[4]
+    found = []
+    for i in range(0, width * height * 3, 3):
+        if data[i] == colour[0] and data[i + 1] == colour[1] and data[i + 2] == colour[2]:
+            found.append(((i // 3) % width, (i // 3) // width))
+    return found
 
 
 def crate_pixels(window, env, shot):
@@ -110,13 +129,63 @@ def build_new_level(window, env, work):
     subprocess.run(["import", "-window", window, os.path.join(work, "new-level.png")], env=env, check=True)
 
 
+def click(window, env, x, y):
+    subprocess.run(["xdotool", "mousemove", "--window", window, str(int(x)), str(int(y))], env=env, check=True)
+    time.sleep(0.3)
+    subprocess.run(["xdotool", "click", "1"], env=env, check=True)
+    time.sleep(0.3)
+
+
+def build_vehicle_level(window, env, work, tirectl, edited):
+    """A ground, the editor's car on it, a goal to its right; then the front axle dragged."""
+    key(window, env, "o")
+    drag_box(window, env, 300, 500, 1000, 540)
+    key(window, env, "k")
+    click(window, env, 380, 440)
+    key(window, env, "x")
+    drag_box(window, env, 900, 380, 990, 500)
+    key(window, env, "Escape")  # nothing selected: no handles over the hubs
+    key(window, env, "ctrl+s")
+    with open(edited) as f:
+        placed = json.load(f)
+    vehicle = placed["vehicles"][0]
+    if not vehicle.get("player"):
+        fail("the car placed in a level without a player is not the player")
+    # The hubs: the two clusters of hub-cap pixels, left (rear) and right (front).
+    hubs = pixels_of(window, env, os.path.join(work, "placed.png"), HUB_CAP)
+    if len(hubs) < 10:
+        fail(f"no wheel hubs on screen ({len(hubs)} hub-cap pixels)")
+    middle = sum(x for x, _ in hubs) / len(hubs)
+    front = [(x, y) for x, y in hubs if x > middle]
+    rear = [(x, y) for x, y in hubs if x <= middle]
+    fx, fy = sum(x for x, _ in front) / len(front), sum(y for _, y in front) / len(front)
+    rx = sum(x for x, _ in rear) / len(rear)
+    print(f"hubs on screen: rear at x {rx:.0f} px, front at ({fx:.0f}, {fy:.0f}) px")
+    if not 60 < fx - rx < 90:
+        fail(f"the hubs are {fx - rx:.0f} px apart, not about 72 (1.2 m at 60 px/m)")
+    # Select the car by its chassis, above the middle of its wheels; drag the front axle's handle.
+    click(window, env, (fx + rx) / 2, fy - 18)
+    drag(window, env, fx, fy, 30, steps=10)
+    key(window, env, "ctrl+s")
+    subprocess.run(["import", "-window", window, os.path.join(work, "axle-dragged.png")], env=env, check=True)
+    with open(edited) as f:
+        dragged = json.load(f)["vehicles"][0]
+    before = [w["axle"] for w in vehicle["wheels"]]
+    after = [w["axle"] for w in dragged["wheels"]]
+    print(f"axles before {before}, after {after}")
+    if after[0] != before[0] or dragged["chassis"] != vehicle["chassis"]:
+        fail("dragging the front axle moved the rear wheel or the chassis")
+    if abs(after[1][0] - (before[1][0] + 0.5)) > 1e-9 or after[1][1] != before[1][1]:
+        fail(f"the front axle is at {after[1]}, not half a metre right of {before[1]} in the chassis' frame")
+
+
 def main():
     game, tirectl, level, work = sys.argv[1:5]
     for tool in ("Xvfb", "xdotool", "import", "convert"):
         if not shutil.which(tool):
             skip(f"{tool} is not installed (Debian: xvfb, xdotool, imagemagick)")
     os.makedirs(work, exist_ok=True)
-    new = level == "NEW"
+    new = level in ("NEW", "VEHICLE")
     edited = os.path.join(work, "my-level.json" if new else "crates.json")
     if new:
         if os.path.exists(edited):
@@ -140,6 +209,9 @@ def main():
                                env=env, capture_output=True, text=True, timeout=30)
         window = found.stdout.split()[0]
         time.sleep(1.5)
+        if level == "VEHICLE":
+            build_vehicle_level(window, env, work, tirectl, edited)
+            return finish_new(tirectl, edited)
         if new:
             build_new_level(window, env, work)
             return finish_new(tirectl, edited)

@@ -258,6 +258,53 @@ TEST_CASE("the ghost steps in lockstep from its replay and ends where the run en
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("the ghost of a vehicle level is its player vehicle, in lockstep, drawn between ticks",
+          "[unit][game][replay]") {
+  const std::filesystem::path level_file =
+      std::filesystem::path(TIRE_LEVELS_DIR) / ".." / "tests" / "levels" / "vehicle-car.json";
+  const tire::LevelLoad load = tire::load_level_file(level_file);
+  REQUIRE(load.level);
+  const auto level = std::make_shared<const tire::Level>(*load.level);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tire-vehicle-ghost-test-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  SessionRecorder recorder;
+  recorder.begin(level_file, level->gravity);
+  auto session = std::make_unique<tire::Simulation>(level);
+  for (std::uint64_t t = 0; t < 120; ++t) {
+    const tire::TickInput in{1.0, false, 0.0, t > 60 && t < 80 ? 1.0 : 0.0, t >= 100};
+    recorder.on_step(t, in);
+    session->step(in);
+    recorder.on_stepped(*session);
+  }
+  const std::filesystem::path file = dir / "ghost.json";
+  REQUIRE(recorder.save(*session, file, true).empty());
+  Ghost ghost;
+  REQUIRE(ghost.load(file, level, level_file_sha256(level_file)).empty());
+  ghost.sync(120);
+  CHECK_FALSE(ghost.player());  // no player tire: the player is the vehicle
+  const std::optional<tire::VehicleView> v = ghost.vehicle();
+  REQUIRE(v);
+  const tire::VehicleView mine = *session->vehicle_at(0);
+  CHECK(v->center == mine.center);  // the same run, to the bit
+  CHECK(ghost.position() == mine.center);
+  REQUIRE(ghost.chassis());
+  CHECK(ghost.chassis()->vertices.size() == 4);
+  // Drawn at alpha 1 it is where it is now; at 0 where it was a tick before.
+  CHECK(ghost.interpolated_chassis(1.0).position == v->pose.position);
+  CHECK(ghost.interpolated_chassis(0.0).position.x < v->pose.position.x);
+  std::vector<tire::Vec2> wheel;
+  for (std::size_t w = 0; w < v->wheel_count; ++w) {
+    ghost.interpolated_wheel(w, 1.0, wheel);
+    const std::optional<tire::TireView> t = session->tire(mine.wheel_ids[w]);
+    REQUIRE(wheel.size() == t->positions.size());
+    CHECK(wheel.front() == t->positions.front());
+    ghost.interpolated_wheel(w, 0.0, wheel);
+    CHECK(wheel.front() != t->positions.front());
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("F5's saves never reuse a name: a second save in the same second is <name>-2.json",
           "[unit][game][replay]") {
   const auto level = level_01();

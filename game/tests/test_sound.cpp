@@ -13,6 +13,7 @@
 #include "internals.h"
 #include "sound/audio_log.h"
 #include "sound/event_extractor.h"
+#include "sound/motor_tone.h"
 #include "sound/sound_bank.h"
 #include "sound/voice_mixer.h"
 
@@ -301,7 +302,7 @@ TEST_CASE("muted, the mixer renders silence, and its volume scales what it rende
 
 TEST_CASE("every sound is synthesised inside [-1, 1] and the held ones loop", "[sound]") {
   const SoundBank bank;
-  for (int k = 0; k < 8; ++k) {
+  for (int k = 0; k <= static_cast<int>(SoundKind::motor); ++k) {
     const auto kind = static_cast<SoundKind>(k);
     const Sample& s = bank.sample(kind);
     INFO(kind_name(kind));
@@ -362,4 +363,131 @@ TEST_CASE("a failed audio log write is reported with the file and the reason, ne
     log.write({tick, SoundKind::jump, Surface::none, -1, 1.0, 1.0});
   CHECK(log.error() == "cannot write the audio log /dev/full: No space left on device");
   CHECK(log.close() == log.error());
+}
+
+// ---- The motor ---------------------------------------------------------------------------------------
+
+namespace {
+
+std::string vehicle_level(const std::string& name) {
+  return std::string(TIRE_LEVELS_DIR) + "/../tests/levels/" + name;
+}
+
+// The frequency of the left channel of `frames` rendered stereo frames at `rate`, from its zero
+// crossings (the motor's wave crosses zero exactly twice a period), skipping the first 20 ms in
+// which the voice's gain ramps up.
+double rendered_frequency(VoiceMixer& mixer, int rate, std::size_t frames) {
+  std::vector<float> out(2 * frames);
+  mixer.render(out.data(), frames);
+  const std::size_t skip = static_cast<std::size_t>(rate / 50);
+  std::size_t crossings = 0, first = 0, last = 0;
+  for (std::size_t i = skip + 1; i < frames; ++i) {
+    const float a = out[2 * (i - 1)], b = out[2 * i];
+    if ((a < 0.0f && b >= 0.0f) || (a >= 0.0f && b < 0.0f)) {
+      if (crossings == 0) first = i;
+      last = i;
+      ++crossings;
+    }
+  }
+  if (crossings < 3) return 0.0;
+  // (crossings − 1) half periods between the first crossing and the last.
+  return 0.5 * static_cast<double>(crossings - 1) * rate / static_cast<double>(last - first);
+}
+
+}  // namespace
+
+TEST_CASE("the motor's pitch follows the driven wheels' revs and its loudness the throttle", "[sound]") {
+  const MotorTuning k;
+  CHECK(motor_revs(0.0, 40.0) == 0.0);
+  CHECK(motor_revs(20.0, 40.0) == 0.5);
+  CHECK(motor_revs(-20.0, 40.0) == 0.5);  // reverse revs as high
+  CHECK(motor_revs(400.0, 40.0) == k.max_revs);
+  CHECK(motor_revs(10.0, 0.0) == 0.0);  // a motor without speed idles
+  CHECK(motor_pitch(0.0) == k.idle_pitch);
+  CHECK(motor_pitch(1.0) == k.full_pitch);
+  CHECK(motor_pitch(0.5) == Approx(0.5 * (k.idle_pitch + k.full_pitch)));
+  CHECK(motor_pitch(0.25) < motor_pitch(0.75));
+  CHECK(motor_pitch(-1.0) == k.idle_pitch);
+  CHECK(motor_gain(0.0) == k.idle_gain);
+  CHECK(motor_gain(1.0) == k.full_gain);
+  CHECK(motor_gain(-1.0) == k.full_gain);
+  CHECK(motor_gain(0.5) == Approx(0.5 * (k.idle_gain + k.full_gain)));
+}
+
+TEST_CASE("the mixer plays the motor's tone at kMotorHz times its pitch, at any output rate", "[sound]") {
+  const SoundBank bank;
+  for (const int rate : {44100, 48000}) {
+    for (const double pitch : {1.0, 1.7, 2.5, 4.0}) {
+      VoiceMixer mixer(bank);
+      mixer.set_output_rate(rate);
+      mixer.set_volume(1.0);
+      mixer.play({1, SoundKind::motor, Surface::none, -1, 0.4, pitch});
+      mixer.end_tick(1.0 / 60.0);
+      INFO("rate " << rate << ", pitch " << pitch);
+      CHECK(rendered_frequency(mixer, rate, static_cast<std::size_t>(rate)) ==
+            Approx(kMotorHz * pitch).epsilon(0.005));
+    }
+  }
+  // Mixed with impacts, the motor still sounds: the mix is louder than the impacts alone.
+  const auto rms = [&](bool with_motor) {
+    VoiceMixer mixer(bank);
+    mixer.play({1, SoundKind::impact, Surface::ground, 0, 0.8, 1.0});
+    if (with_motor) mixer.play({1, SoundKind::motor, Surface::none, -1, 0.4, 2.0});
+    CHECK(mixer.end_tick(1.0 / 60.0).playing == (with_motor ? 2u : 1u));
+    std::vector<float> out(2 * 8192);
+    mixer.render(out.data(), 8192);
+    double sum = 0.0;
+    for (const float x : out) sum += static_cast<double>(x) * x;
+    return std::sqrt(sum / static_cast<double>(out.size()));
+  };
+  CHECK(rms(true) > 1.1 * rms(false));
+}
+
+TEST_CASE("a player vehicle's motor revs up at full throttle and idles at rest; no player vehicle, no motor",
+          "[sound]") {
+  auto car = session_of(vehicle_level("vehicle-car.json"));
+  EventExtractor extractor;
+  std::vector<SoundEvent> events;
+  // Settled, at rest: the motor ticks over at idle.
+  for (int i = 0; i < 60; ++i) {
+    car->step({});
+    events.clear();
+    extractor.after_tick(*car, {}, events);
+  }
+  auto motor = of_kind(events, SoundKind::motor);
+  REQUIRE(motor.size() == 1);
+  const MotorTuning k;
+  CHECK(motor[0].gain == k.idle_gain);
+  CHECK(motor[0].pitch == Approx(k.idle_pitch).margin(0.05));
+  CHECK(motor[0].pan == 0.0);
+  // Full throttle for a second: louder, and higher as the wheels spin up.
+  double last_pitch = motor[0].pitch;
+  for (int i = 0; i < 60; ++i) {
+    car->step({1.0});
+    events.clear();
+    extractor.after_tick(*car, {1.0}, events);
+    motor = of_kind(events, SoundKind::motor);
+    REQUIRE(motor.size() == 1);
+    if (i % 20 == 19) {
+      CHECK(motor[0].pitch > last_pitch);
+      last_pitch = motor[0].pitch;
+    }
+  }
+  CHECK(motor[0].gain == Approx(k.full_gain));
+  // The pitch is the driven (rear) wheel's revs: after a second, about 8 rad/s of its 40.
+  const tire::VehicleView v = *car->vehicle_at(0);
+  const double spin = car->tire(v.wheel_ids[0])->spin - v.angular_velocity;
+  CHECK(last_pitch == Approx(motor_pitch(motor_revs(spin, v.motor_speed))));
+  CHECK(last_pitch > 1.3 * k.idle_pitch);
+  // Level 01's player is a tire: no motor.
+  auto tire = session_of(level("01-first-roll.json"));
+  CHECK(of_kind(play(*tire, 60, {1.0}), SoundKind::motor).empty());
+}
+
+TEST_CASE("listening to a vehicle changes nothing in its world", "[sound]") {
+  auto heard = session_of(vehicle_level("vehicle-car.json"));
+  auto unheard = session_of(vehicle_level("vehicle-car.json"));
+  play(*heard, 120, {1.0, false, 0.0, 0.5});
+  for (int i = 0; i < 120; ++i) unheard->step({1.0, false, 0.0, 0.5});
+  CHECK(heard->state_hash() == unheard->state_hash());
 }

@@ -27,6 +27,8 @@ enum class DebugShape : std::uint8_t {
   candidate_obstacle,  // an obstacle a tire's broad phase returned this tick (box; segment from the hub)
   candidate_prop,      // a prop a tire's broad phase returned this tick (box; segment from the hub)
   pair,                // a particle of a tire's narrow-phase pairs this substep (point)
+  head,  // a vehicle driver's head, the circle a level watches (polygon), joined to its chassis'
+         // centre of mass (segment); Simulation::debug_draw reports it with the structure
 };
 
 class DebugDraw {

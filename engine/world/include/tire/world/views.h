@@ -71,6 +71,8 @@ struct VehicleView {
   std::array<TireId, kMaxVehicleWheels> wheel_ids{};
   std::size_t wheel_count = 0;
   std::span<const TireId> wheels() const { return {wheel_ids.data(), wheel_count}; }
+  std::array<bool, kMaxVehicleWheels> wheel_driven{};  // the motor turns wheel w (its `driven` key)
+  double motor_speed = 0.0;  // a driven wheel's spin relative to the chassis at full throttle (rad/s)
   // What drives it now: throttle and lean in [-1, 1] (the player's steer and lean), the brakes.
   double throttle = 0.0;
   double lean = 0.0;
