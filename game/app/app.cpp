@@ -598,12 +598,6 @@ void App::draw_ui() {
   } else if (const std::optional<tire::TireView> p = player_view()) {
     hud.speed = length(p->velocity);
     hud.grounded = p->may_jump;
-  } else if (const std::optional<tire::VehicleView> v = player_vehicle_view()) {
-    // A player vehicle: its centre of mass' speed; on the ground while any wheel touches it.
-    hud.speed = length(v->velocity);
-    for (const tire::TireId id : v->wheels())
-      if (const std::optional<tire::TireView> w = simulation.tire(id))
-        hud.grounded = hud.grounded || w->may_jump;
   }
   hud.paused = paused_;
   hud.over = level_over();

@@ -20,7 +20,6 @@ const char* const kKeys[][2] = {
     {"Space / Up / W", "jump (when on the ground)"},
     {"Shift", "inflate (hold): stiffer, bouncier, rolls faster"},
     {"Down / S", "deflate (hold): a wider patch that grips, squeezes under low gaps"},
-    {"Driving a vehicle", "Left / Right: throttle; Up / W, Down / S: lean back, forward; Space: brake"},
     {"R", "restart the level"},
     {"P", "pause / resume"},
     {". (period)", "one tick forward while paused"},
