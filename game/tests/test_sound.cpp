@@ -454,7 +454,7 @@ TEST_CASE("the mixer plays the motor's tone at kMotorHz times its pitch, at any 
   CHECK(rms(true) > 1.1 * rms(false));
 }
 
-TEST_CASE("a player vehicle's motor revs up at full throttle and idles at rest; no player vehicle, no motor",
+TEST_CASE("a player vehicle's motor idles at rest and revs up at full throttle, and a tire player has none",
           "[sound]") {
   auto car = session_of(vehicle_level("vehicle-car.json"));
   EventExtractor extractor;
