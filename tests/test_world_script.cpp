@@ -23,7 +23,7 @@ const char* kBase = R"({
   "goal": "finish",)";
 }  // namespace
 
-TEST_CASE("start actions run before the first step; the goal wins", "[unit][script][world]") {
+TEST_CASE("start actions run before the first step, and the goal wins", "[unit][script][world]") {
   LevelSession session = load(std::string(kBase) + R"(
     "triggers": [ { "when": { "type": "start" }, "do": [
       { "action": "spawn_tire", "tire": { "position": [-2, 3] } },

@@ -88,7 +88,7 @@ void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::
   const std::uint64_t tick = simulation.tick();
   const std::optional<tire::TireId> player_id = simulation.player();
   const std::optional<tire::TireView> player = player_id ? simulation.tire(*player_id) : std::nullopt;
-  const std::optional<SoundEvent> motor = motor_event(simulation, motor_);
+  const std::optional<MotorReading> motor = read_motor(simulation, motor_);
   listener_x_ = player ? std::optional<double>(player->centroid.x) : std::nullopt;
   // A player vehicle: the view follows its centre of mass, and so does the listener.
   if (!player)
@@ -126,7 +126,14 @@ void EventExtractor::after_tick(const tire::Simulation& simulation, const tire::
   if (input.jump && player_grounded_ && player)
     out.push_back({tick, SoundKind::jump, Surface::none, -1, tuning_.jump_gain, 1.0});
   player_grounded_ = player && player->may_jump;
-  if (motor) out.push_back(*motor);
+  if (motor) {
+    // A new motor is heard at its revs at once; then they follow the wheels' smoothly.
+    heard_revs_ =
+        heard_revs_ ? smoothed_revs(*heard_revs_, motor->revs, simulation.config().dt, motor_) : motor->revs;
+    out.push_back(motor_event(tick, *heard_revs_, motor->throttle, motor_));
+  } else {
+    heard_revs_.reset();
+  }
   script_events(simulation, out);
 }
 
@@ -152,6 +159,7 @@ void EventExtractor::script_events(const tire::Simulation& simulation, std::vect
 
 void EventExtractor::reset() {
   tires_.clear();
+  heard_revs_.reset();
   player_grounded_ = false;
   checkpoint_.reset();
   messages_.clear();

@@ -97,6 +97,7 @@ class EventExtractor {
 
   ExtractorTuning tuning_;
   MotorTuning motor_;
+  std::optional<double> heard_revs_;  // the player vehicle's motor's revs as heard (smoothed)
   std::unordered_map<tire::TireId, TireState> tires_;
   std::optional<double> listener_x_;  // the player's hub, this tick (none: no player)
   bool player_grounded_ = false;      // before this tick's step: what the jump needs

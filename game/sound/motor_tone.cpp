@@ -35,17 +35,25 @@ double driven_wheel_spin(const tire::Simulation& simulation, const tire::Vehicle
   return count ? sum / count : 0.0;
 }
 
-std::optional<SoundEvent> motor_event(const tire::Simulation& simulation, const MotorTuning& tuning) {
-  for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i) {
-    if (!v->player) continue;
-    SoundEvent e;
-    e.tick = simulation.tick();
-    e.kind = SoundKind::motor;
-    e.gain = motor_gain(v->throttle, tuning);
-    e.pitch = motor_pitch(motor_revs(driven_wheel_spin(simulation, *v), v->motor_speed, tuning), tuning);
-    return e;  // the player's own: from the middle
-  }
+std::optional<MotorReading> read_motor(const tire::Simulation& simulation, const MotorTuning& tuning) {
+  for (std::size_t i = 0; const std::optional<tire::VehicleView> v = simulation.vehicle_at(i); ++i)
+    if (v->player)
+      return MotorReading{motor_revs(driven_wheel_spin(simulation, *v), v->motor_speed, tuning), v->throttle};
   return std::nullopt;
+}
+
+SoundEvent motor_event(std::uint64_t tick, double revs, double throttle, const MotorTuning& tuning) {
+  SoundEvent e;
+  e.tick = tick;
+  e.kind = SoundKind::motor;
+  e.gain = motor_gain(throttle, tuning);
+  e.pitch = motor_pitch(revs, tuning);
+  return e;  // the player's own: from the middle
+}
+
+double smoothed_revs(double heard, double revs, double dt, const MotorTuning& tuning) {
+  const double k = dt / (std::max(tuning.smoothing, 0.0) + dt);  // 1 without smoothing
+  return heard + k * (revs - heard);
 }
 
 }  // namespace game::sound

@@ -4,6 +4,7 @@
 // (tire::VehicleView, tire::TireView): the sound reads the simulation and never feeds it. No SDL.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "sound_event.h"
@@ -22,6 +23,9 @@ struct MotorTuning {
   double full_pitch = 4.0;  // at 1 rev (full speed): 4 × kMotorHz
   double idle_gain = 0.15;  // throttle 0: ticking over
   double full_gain = 0.45;  // full throttle, either way
+  // The revs heard follow the wheels' with this time constant (s): a soft wheel's spin wobbles by a
+  // few per cent from tick to tick, which would warble the tone.
+  double smoothing = 0.05;
 };
 
 // The revs of a motor whose driven wheels turn at `wheel_spin` (rad/s, relative to the chassis,
@@ -36,7 +40,17 @@ double motor_gain(double throttle, const MotorTuning& tuning = {});
 // is driven), as `simulation` shows them now.
 double driven_wheel_spin(const tire::Simulation& simulation, const tire::VehicleView& vehicle);
 
-// The motor's record for this tick: the player vehicle's, or nullopt when there is none.
-std::optional<SoundEvent> motor_event(const tire::Simulation& simulation, const MotorTuning& tuning = {});
+// What the player vehicle's motor does now: its revs and throttle; nullopt when there is none.
+struct MotorReading {
+  double revs = 0.0;
+  double throttle = 0.0;
+};
+std::optional<MotorReading> read_motor(const tire::Simulation& simulation, const MotorTuning& tuning = {});
+
+// The motor's record for tick `tick`, at `revs` (as heard: smoothed) and `throttle`.
+SoundEvent motor_event(std::uint64_t tick, double revs, double throttle, const MotorTuning& tuning = {});
+
+// The revs heard after one tick of `dt` s: `heard` moved towards `revs` by the smoothing.
+double smoothed_revs(double heard, double revs, double dt, const MotorTuning& tuning = {});
 
 }  // namespace game::sound

@@ -86,7 +86,7 @@ TEST_CASE("a vehicle placed from the palette validates, is the player and drives
   CHECK(session->world().rigid().prop_state(0).center.x > 1.0);
 }
 
-TEST_CASE("a vehicle moves whole; an axle point moves its wheel alone, in the chassis' frame",
+TEST_CASE("a vehicle moves whole, and an axle point moves its wheel alone in the chassis' frame",
           "[unit][editor]") {
   LevelDocument doc = ground_document("moved.json", true);
   const Selection vehicle{{ItemKind::vehicle, 0}};
@@ -129,7 +129,7 @@ TEST_CASE("a vehicle moves whole; an axle point moves its wheel alone, in the ch
   CHECK(near(chassis_position(doc), {2.5, 1.7}));
 }
 
-TEST_CASE("deleting a wheel leaves a car the validator refuses with one; deleting the vehicle removes it",
+TEST_CASE("a car keeps two wheels at least, and a wheel, the head or the whole vehicle is deleted and undone",
           "[unit][editor]") {
   LevelDocument doc = ground_document("deleted.json", true);
   // Two wheels at least: taking one of two is refused, and the car stays.

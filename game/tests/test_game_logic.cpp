@@ -398,7 +398,7 @@ TEST_CASE("the picture of a small tire: hub cap, rim with spokes, sidewall, trea
   for (std::uint32_t p : pixels) CHECK(reinterpret_cast<const std::uint8_t*>(&p)[3] == 255);
 }
 
-TEST_CASE("every tuning change the session applies wakes the sleeping tires; a refused one does not",
+TEST_CASE("every tuning change the session applies wakes the sleeping tires, and a refused one does not",
           "[unit][game]") {
   const auto two_tires = [](GameSession& session) {
     session.start("flat.json", flat_level());
