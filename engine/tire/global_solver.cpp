@@ -21,15 +21,9 @@ namespace {
 // substep, 0.5 rad round it a substep, dragged the tread after it and threw the ball at 70 m/s.)
 constexpr double kAnchorReach = 1e-3;
 
-// The unknowns, block by block: block i holds tread particle i (x, y) then rim particle i (x, y),
-// so every constraint of the tire couples a block to itself or to a neighbouring block.
-std::uint32_t block_of(std::uint32_t particle, std::uint32_t n) {
-  return particle < n ? particle : particle - n;
-}
 // The block after block k round the ring (without a division: an integer one cost as much as the
 // rest of a constraint's assembly).
 std::uint32_t next_block(std::uint32_t k, std::uint32_t n) { return k + 1 == n ? 0 : k + 1; }
-std::size_t offset_of(std::uint32_t particle, std::uint32_t n) { return particle < n ? 0 : 2; }
 
 // s n nᵀ, a 2×2 symmetric outer product: its three distinct entries.
 struct Outer {
@@ -134,8 +128,8 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
   for (std::uint32_t i = 0; i < 2 * n; ++i) {
     TIRE_ASSERT(p.w[i] > 0.0, "the global method needs every particle of a tire to have a finite mass");
     const double m = 1.0 / p.w[i];
-    const std::size_t o = offset_of(i, n);
-    Block4& d = base_diagonal_[block_of(i, n)];
+    const std::size_t o = GlobalSolver::offset(i, n);
+    Block4& d = base_diagonal_[GlobalSolver::block(i, n)];
     d[o * B + o] += m;
     d[(o + 1) * B + o + 1] += m;
     const Vec2 predicted = p.x_prev[i] + p.v[i] * h;  // x̃ (predict_positions made x exactly this)
@@ -192,7 +186,7 @@ void GlobalSolver::assemble(const Tire& t, const SubstepContext& ctx, double gam
     base_f_[l.dof_b] -= nrm.x * l.force;
     base_f_[l.dof_b + 1] -= nrm.y * l.force;
     const double s = l.stiffness;
-    const std::uint32_t ba = block_of(l.a, n), bb = block_of(l.b, n);
+    const std::uint32_t ba = GlobalSolver::block(l.a, n), bb = GlobalSolver::block(l.b, n);
     const std::size_t oa = l.dof_a - B * ba, ob = l.dof_b - B * bb;
     const Outer o = outer(nrm, s) + outer(perp(nrm), l.transverse);
     add_outer(base_diagonal_[ba], oa, oa, o);
@@ -428,7 +422,8 @@ bool GlobalSolver::solve_pass(const Tire& t) {
   const auto add_row = [&](const Contact& c, Vec2 d, double k, double force) {
     const std::uint32_t i = c.particle;
     const std::size_t dof = GlobalSolver::dof(i, n);
-    add_outer(k_.diagonal(block_of(i, n)), offset_of(i, n), offset_of(i, n), outer(d, k));
+    add_outer(k_.diagonal(GlobalSolver::block(i, n)), GlobalSolver::offset(i, n), GlobalSolver::offset(i, n),
+              outer(d, k));
     f_[dof] += d.x * force;
     f_[dof + 1] += d.y * force;
     if (c.body < 0) return;
@@ -491,7 +486,7 @@ std::int32_t GlobalSolver::add_contact_row(const Tire& t, const Contact& c, Vec2
   Row row;
   row.alpha_tilde = 1.0 / stiffness;
   row.b = target;
-  const std::uint32_t block = block_of(c.particle, t.n);
+  const std::uint32_t block = GlobalSolver::block(c.particle, t.n);
   row.first = block == 0 ? t.n : block;  // block 0 is the chain's border, eliminated last
   rows_.push_back(row);
   return static_cast<std::int32_t>(r);
@@ -752,8 +747,8 @@ bool GlobalSolver::prepare_response(bool hold_fixed_friction) {
   }
   for (const Contact& c : contacts_) {
     if (!c.normal_active) continue;
-    Block4& block = k0_.diagonal(block_of(c.particle, n));
-    const std::size_t o = offset_of(c.particle, n);
+    Block4& block = k0_.diagonal(GlobalSolver::block(c.particle, n));
+    const std::size_t o = GlobalSolver::offset(c.particle, n);
     add_outer(block, o, o, outer(c.normal, c.stiffness_n));
     if (c.friction_active && (hold_fixed_friction || !c.fixed))
       add_outer(block, o, o, outer(perp(c.normal), c.stiffness_t));

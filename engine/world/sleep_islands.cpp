@@ -10,6 +10,14 @@ namespace tire {
 
 namespace {
 
+// f(p) for each prop an island joins to tire t: those its broad phase found near it, and a wheel's
+// chassis, near or not (a vehicle sleeps and wakes whole; its chassis hangs on its wheels).
+template <typename F>
+void for_each_prop_near(const Tire& t, F&& f) {
+  for (const std::uint32_t p : t.prop_candidates) f(p);
+  if (t.chassis >= 0) f(static_cast<std::uint32_t>(t.chassis));
+}
+
 // The unit direction from `hub` to tread particle 0: how far the tire has turned, read from where it is.
 Vec2 spoke_of(const Tire& t, Vec2 hub) {
   const Vec2 d = t.particles.x[0] - hub;
@@ -76,16 +84,13 @@ void SleepIslands::refresh(const std::vector<Tire>& tires) {
 void SleepIslands::gather_props(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
                                 const RigidWorld& rigid) {
   props_.clear();
-  const auto pick = [&](std::uint32_t p) {
-    if (!picked_[p] && rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) {
-      picked_[p] = 1;
-      props_.push_back(p);
-    }
-  };
-  for (const std::uint32_t i : members) {
-    for (const std::uint32_t p : tires[i].prop_candidates) pick(p);
-    if (tires[i].chassis >= 0) pick(static_cast<std::uint32_t>(tires[i].chassis));
-  }
+  for (const std::uint32_t i : members)
+    for_each_prop_near(tires[i], [&](std::uint32_t p) {
+      if (!picked_[p] && rigid.props()[p].alive && rigid.props()[p].spec.type == PropType::dynamic_body) {
+        picked_[p] = 1;
+        props_.push_back(p);
+      }
+    });
   for (const std::uint32_t p : props_) picked_[p] = 0;
 }
 
@@ -163,12 +168,10 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
     const auto& props = rigid.props();
     for (std::uint32_t p = 0; p < props.size(); ++p) parent_[n + p] = n + p;
     for (const TirePair& pair : pairs) join(pair.a, pair.b);
-    for (const std::uint32_t i : awake_) {
-      for (const std::uint32_t p : tires[i].prop_candidates)
+    for (const std::uint32_t i : awake_)
+      for_each_prop_near(tires[i], [&](std::uint32_t p) {
         if (props[p].alive && props[p].spec.type == PropType::dynamic_body) join(i, n + p);
-      // A vehicle's wheel with its chassis, near or not: the vehicle sleeps and wakes whole.
-      if (tires[i].chassis >= 0) join(i, n + static_cast<std::uint32_t>(tires[i].chassis));
-    }
+      });
     for (const std::uint32_t i : awake_) {
       still_[i] = std::numeric_limits<double>::infinity();
       blocked_[i] = 0;
@@ -206,10 +209,7 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
 void SleepIslands::hold_props_near_awake_tires(const std::vector<Tire>& tires, RigidWorld& rigid) {
   const auto& props = rigid.props();
   std::fill(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(props.size()), std::uint8_t{0});
-  for (const std::uint32_t i : awake_) {
-    for (const std::uint32_t p : tires[i].prop_candidates) near_[p] = 1;
-    if (tires[i].chassis >= 0) near_[static_cast<std::uint32_t>(tires[i].chassis)] = 1;  // hangs on them
-  }
+  for (const std::uint32_t i : awake_) for_each_prop_near(tires[i], [&](std::uint32_t p) { near_[p] = 1; });
   for (std::uint32_t p = 0; p < props.size(); ++p)
     if (props[p].alive && props[p].spec.type == PropType::dynamic_body)
       rigid.set_sleeping_allowed(p, !near_[p]);

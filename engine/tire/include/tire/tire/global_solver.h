@@ -118,10 +118,16 @@ class GlobalSolver {
   // solve: past SolverConfig::refine_turn the linearised step no longer holds.
   double largest_turn(const Tire& t, const double* dx) const;
   // Where particle i's (x, y) sit in a vector of the tire's unknowns (respond's r and w).
-  // Block k holds tread particle k and then rim particle k + n (n segments).
+  // Block k holds tread particle k (x, y) and then rim particle k + n (n segments), so that every
+  // constraint of the tire couples a block to itself or to a neighbouring block.
+  static std::uint32_t block(std::uint32_t particle, std::uint32_t segments) {
+    return particle < segments ? particle : particle - segments;
+  }
+  static std::size_t offset(std::uint32_t particle, std::uint32_t segments) {
+    return particle < segments ? 0 : 2;
+  }
   static std::size_t dof(std::uint32_t particle, std::uint32_t segments) {
-    return particle < segments ? CyclicBlockCholesky::kBlock * particle
-                               : CyclicBlockCholesky::kBlock * (particle - segments) + 2;
+    return CyclicBlockCholesky::kBlock * block(particle, segments) + offset(particle, segments);
   }
   std::size_t unknowns() const { return k_.size(); }
 
