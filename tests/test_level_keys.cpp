@@ -192,11 +192,11 @@ std::string dump(const Level& level) {
       v(w.axle.point);
       v(w.axle.axis);
       const TireSpec& t = w.tire;
-      s << " " << w.axle.stiffness << " " << w.axle.damping << " " << w.axle.driven << " " << t.angle << " "
-        << t.outer_radius << " " << t.inner_radius << " " << t.segments << " " << t.mass << " " << t.friction
-        << " " << t.kinetic_friction << " " << t.pressure << " " << t.compliance.outer << " "
-        << static_cast<int>(t.spokes) << " " << t.material_damping << " " << t.rolling_resistance << " "
-        << t.restitution << "\n";
+      s << " " << w.axle.stiffness << " " << w.axle.damping << " " << w.axle.travel << " " << w.axle.driven
+        << " " << t.angle << " " << t.outer_radius << " " << t.inner_radius << " " << t.segments << " "
+        << t.mass << " " << t.friction << " " << t.kinetic_friction << " " << t.pressure << " "
+        << t.compliance.outer << " " << static_cast<int>(t.spokes) << " " << t.material_damping << " "
+        << t.rolling_resistance << " " << t.restitution << "\n";
     }
   }
   for (const TireSpec& t : level.tires) {

@@ -521,6 +521,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
        {{"axis", vec(a.axis)},
         {"stiffness", a.stiffness},
         {"damping", a.damping},
+        {"travel", a.travel},
         {"driven", a.driven},
         {"material", kMaterials.front().name},
         {"angle", t.angle},

@@ -317,8 +317,9 @@ TEST_CASE("driving a vehicle over bumps, with its brake and lean, does not alloc
   for (const double x : {-0.7, 0.7}) {
     WheelSpec w;
     w.axle.point = {x, -0.4};
-    w.axle.stiffness = 8000;  // one axle on a suspension
+    w.axle.stiffness = 8000;  // both on springs, the front one damped and on its 10 mm travel's stop
     w.axle.damping = x > 0 ? 400.0 : 0.0;
+    w.axle.travel = x > 0 ? 0.01 : 0.0;
     car.wheels.push_back(w);
   }
   const std::optional<std::uint32_t> v = world.add_vehicle(car);

@@ -181,6 +181,66 @@ TEST_CASE("vehicles: a sprung axle sags by its load over its stiffness", "[unit]
   }
 }
 
+// Along wheel w's suspension axis, how far its hub is from its axle point (m; + is up the axis).
+double hub_along(const World& world, std::uint32_t v, std::size_t w, const VehicleSpec& spec) {
+  const Tire& t = wheel(world, v, w);
+  const PropState chassis = world.rigid().prop_state(world.vehicles().chassis(v));
+  return dot(
+      vehicle_rows::rim_hub(t.particles, t.n, false) - chassis.pose.to_world(spec.wheels[w].axle.point),
+      chassis.pose.rotate(spec.wheels[w].axle.axis));
+}
+
+TEST_CASE("vehicles: a sprung car dropped stays within its suspension's travel", "[unit][vehicles]") {
+  // Soft springs (a 48 kg chassis sags 59 mm on them at rest) and a drop of 1.5 m: unlimited, the
+  // hubs go 300 mm along their axes as it lands. With a travel of 80 mm they stop there, within the
+  // rigid rows' give, and come back off the stop: the limit only pushes (at rest, 59 mm is inside
+  // it, and the spring carries the whole load); the landing makes no energy. The axis written up
+  // the chassis meets the top of the travel; written down it, the same load meets the bottom.
+  const int substeps = GENERATE(1, 2, 8);
+  const double up = GENERATE(1.0, -1.0);
+  const double travel = 0.08;
+  struct Drop {
+    double farthest = 0.0;  // the most either hub went along its axis (m)
+    double rest[2] = {};    // each hub along its axis at the end
+    double gain = 0.0;      // the most energy made (J)
+  };
+  const auto drop = [&](double limit) {
+    World world = flat_ground(awake(substeps));
+    VehicleSpec spec = car({0.0, 2.2});
+    for (WheelSpec& w : spec.wheels) {
+      w.axle.axis = {0.0, up};
+      w.axle.stiffness = 4000;
+      w.axle.damping = 150;
+      w.axle.travel = limit;
+    }
+    const std::uint32_t v = *world.add_vehicle(spec);
+    const double start = world_energy(world).total() - world.energy_in();
+    Drop d;
+    for (int tick = 0; tick < 240; ++tick) {
+      world.step({});
+      for (std::size_t w = 0; w < 2; ++w)
+        d.farthest = std::max(d.farthest, std::abs(hub_along(world, v, w, spec)));
+      d.gain = std::max(d.gain, world_energy(world).total() - world.energy_in() - start);
+    }
+    for (std::size_t w = 0; w < 2; ++w) d.rest[w] = hub_along(world, v, w, spec);
+    return d;
+  };
+  const Drop free = drop(0.0), limited = drop(travel);
+  const double sag = 1.6 * 0.3 * 100 * 9.81 / 2 / 4000;  // each axle's share over its stiffness
+  INFO(substeps << " substeps, axis " << up << ": unlimited, the hubs went " << free.farthest * 1e3
+                << " mm along their axes; with " << travel * 1e3 << " mm of travel, "
+                << limited.farthest * 1e3 << " mm; at rest " << limited.rest[0] * 1e3 << " and "
+                << limited.rest[1] * 1e3 << " mm (Hooke " << sag * 1e3 << " mm, unlimited "
+                << free.rest[0] * 1e3 << "); energy made " << limited.gain << " J");
+  CHECK(free.farthest > 2.0 * travel);  // the case: the drop goes well past the travel
+  CHECK(limited.farthest < travel + 1e-3);
+  for (std::size_t w = 0; w < 2; ++w) {
+    CHECK(limited.rest[w] == Approx(free.rest[w]).epsilon(0.01));
+    CHECK(limited.rest[w] * up == Approx(sag).epsilon(0.03));
+  }
+  CHECK(limited.gain < 1.0);
+}
+
 TEST_CASE("vehicles: parked on a 15 degree slope with the brake on, a car stays put", "[unit][vehicles]") {
   const double slope = 15.0 * std::numbers::pi / 180.0;
   World world = flat_ground(awake(), {-9.81 * std::sin(slope), -9.81 * std::cos(slope)});  // downhill is −x

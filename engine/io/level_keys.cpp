@@ -521,6 +521,10 @@ std::vector<LevelKey> wheel_keys() {
       Key("damping", T::number, "{range}: the suspension's damper")
           .range({0.0, 1e6}, "N·s/m")
           .by_default(number(axle.damping)),
+      Key("travel", T::number,
+          "{range}: the most a sprung hub moves along the axis either side of its axle point; 0 is no limit")
+          .range({0.0, 10.0}, "m")
+          .by_default(number(axle.travel)),
       Key("driven", T::boolean, "the motor turns this wheel").by_default(axle.driven),
   });
   for (LevelKey& k :

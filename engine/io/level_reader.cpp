@@ -364,6 +364,7 @@ WheelSpec read_wheel(JsonReader& r, const json& j, const std::string& path) {
                JsonReader::describe(j["axis"]) + " of length " + JsonReader::describe(norm));
   w.axle.stiffness = read_number(r, j, path, key("stiffness"), w.axle.stiffness);
   w.axle.damping = read_number(r, j, path, key("damping"), w.axle.damping);
+  w.axle.travel = read_number(r, j, path, key("travel"), w.axle.travel);
   w.axle.driven = read_boolean(r, j, path, key("driven"), w.axle.driven);
   return w;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tire/math/check.h"
 #include "tire/math/dense_solve.h"
@@ -17,7 +18,8 @@ namespace {
 constexpr std::size_t kRows = VehicleJoints::kRowsPerWheel;
 constexpr std::size_t kMaxWheels = VehicleJoints::kMaxWheels;
 constexpr std::size_t kMaxRows = kRows * kMaxWheels;
-enum Row : std::size_t { across = 0, along = 1, motor = 2 };
+enum Row : std::size_t { across = 0, along = 1, motor = 2, limit = 3 };
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The chassis where the substep's prediction puts it, and one axle on it.
 struct AxleFrame {
@@ -177,6 +179,7 @@ void VehicleJoints::hash_into(StateHash& h) const {
       h.add(w.tire);
       h.add(w.hub_force);
       h.add(w.torque);
+      if (w.axle.travel > 0.0) h.add(w.limit_force);
     }
   }
 }
@@ -325,14 +328,14 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
   struct RowInfo {
     std::size_t wheel = 0;
     std::size_t kind = 0;
-    double c = 0.0;       // C now
-    double change = 0.0;  // C − C⁰ over the substep (the suspension's damper)
-    double alpha = 0.0;   // α̃
-    double gamma = 0.0;   // XPBD eq. 26's γ
-    double bound = -1.0;  // |λ| ≤ bound (kg·m), or −1: none
-    double jc[3] = {};    // J_c
-    double lambda = 0.0;  // the total so far (kg·m)
-    bool fixed = false;   // at its bound
+    double c = 0.0;                          // C now
+    double change = 0.0;                     // C − C⁰ over the substep (the suspension's damper)
+    double alpha = 0.0;                      // α̃
+    double gamma = 0.0;                      // XPBD eq. 26's γ
+    double lo = -kInfinity, hi = kInfinity;  // lo ≤ λ ≤ hi (kg·m)
+    double jc[3] = {};                       // J_c
+    double lambda = 0.0;                     // the total so far (kg·m)
+    bool fixed = false;                      // at its bound
   };
   RowInfo rows[kMaxRows];
   Vec2 dirs_of[kMaxRows];  // an axle row's direction
@@ -365,8 +368,29 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       row.jc[0] = -dirs[r].x;
       row.jc[1] = -dirs[r].y;
       row.jc[2] = -cross(f.arm, dirs[r]);
-      row.lambda = dot(dirs[r], w.hub_force) * h2;
+      row.lambda = (dot(dirs[r], w.hub_force) - (r == along ? w.limit_force : 0.0)) * h2;
       hub_gradient(n, dirs[r], w.gradient[r].data());
+    }
+    if (w.axle.stiffness > 0.0 && w.axle.travel > 0.0) {
+      // The travel: past the top (C > travel) or the bottom (C < −travel), or still held at one by
+      // its last force, a rigid row on C ∓ travel that only pushes back.
+      const RowInfo& spring = rows[m - 1];
+      const double travel = w.axle.travel;
+      const bool top = spring.c > travel || (spring.c >= -travel && w.limit_force < 0.0);
+      if (spring.c > travel || spring.c < -travel || w.limit_force != 0.0) {
+        dirs_of[m] = f.axis;
+        RowInfo& row = rows[m++];
+        row = spring;
+        row.kind = limit;
+        row.c = top ? spring.c - travel : spring.c + travel;
+        row.change = 0.0;
+        row.alpha = rigid_alpha;
+        row.gamma = 0.0;
+        row.lo = top ? -kInfinity : 0.0;
+        row.hi = top ? 0.0 : kInfinity;
+        row.lambda = w.limit_force * h2;
+        std::copy(w.gradient[along].begin(), w.gradient[along].end(), w.gradient[limit].begin());
+      }
     }
     const bool driven = w.axle.driven && throttle != 0.0;
     const double torque = control.brake ? v.drivetrain.brake_torque
@@ -381,12 +405,13 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       row.kind = motor;
       row.c = turn_gradient(t.particles, tf, n, w.gradient[motor].data()) - chassis_turn - target * h;
       row.alpha = 0.0;
-      row.bound = torque * h2;
+      row.hi = torque * h2;
+      row.lo = -row.hi;
       row.jc[2] = -1.0;
       row.lambda = w.torque * h2;
       // At its bound since the last substep and still short of its speed (−C, the way its force
       // would go, the way it already pushes): it stays there, Δλ = 0, and needs no response.
-      row.fixed = std::abs(row.lambda) >= row.bound * (1.0 - 1e-9) && -row.c * row.lambda > 0.0;
+      row.fixed = std::abs(row.lambda) >= row.hi * (1.0 - 1e-9) && -row.c * row.lambda > 0.0;
     } else {
       w.torque = 0.0;
     }
@@ -467,8 +492,8 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
     a[i][m] = -rows[i].c - rows[i].alpha * rows[i].lambda - rows[i].gamma * rows[i].change;
   }
 
-  // Solved with the motors' and brakes' bounds: a row past its bound is held at it and the rest
-  // solved again (at most once per such row).
+  // Solved with the bounds of the motors, brakes and travel limits: a row past its bound is held at
+  // it and the rest solved again (at most once per such row).
   double delta[kMaxRows] = {};
   for (std::size_t pass = 0; pass <= m; ++pass) {
     double sys[kMaxRows][kMaxRows + 1];
@@ -488,10 +513,10 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
     for (std::size_t r = 0; r < free; ++r) delta[index[r]] = sys[r][free];
     bool clamped = false;
     for (std::size_t i = 0; i < m; ++i) {
-      if (rows[i].fixed || rows[i].bound < 0.0) continue;
+      if (rows[i].fixed) continue;
       const double total = rows[i].lambda + delta[i];
-      if (std::abs(total) > rows[i].bound) {
-        delta[i] = std::copysign(rows[i].bound, total) - rows[i].lambda;
+      if (total > rows[i].hi || total < rows[i].lo) {
+        delta[i] = (total > rows[i].hi ? rows[i].hi : rows[i].lo) - rows[i].lambda;
         rows[i].fixed = true;
         clamped = true;
       }
@@ -544,14 +569,19 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
   if (total != Vec2{}) rigid.add_impulse(v.chassis, total, chassis.center_at(t_end), t_end, t_start);
   // The totals, for the next substep's first guess (the axle's as a world force, whatever the
   // chassis turns meanwhile).
-  for (Wheel& w : v.wheels) w.hub_force = {};
+  for (Wheel& w : v.wheels) {
+    w.hub_force = {};
+    w.limit_force = 0.0;
+  }
   for (std::size_t i = 0; i < m; ++i) {
     Wheel& w = v.wheels[rows[i].wheel];
     const double force = (rows[i].lambda + delta[i]) / h2;
-    if (rows[i].kind == motor)
+    if (rows[i].kind == motor) {
       w.torque = force;
-    else
+    } else {
       w.hub_force += dirs_of[i] * force;
+      if (rows[i].kind == limit) w.limit_force = force;
+    }
   }
   if (angular != 0.0) rigid.add_angular_impulse(v.chassis, angular, t_start);
 

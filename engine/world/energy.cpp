@@ -35,6 +35,20 @@ Energy world_energy(const World& world) {
         0.5 * s.mass * length_squared(s.velocity) + 0.5 * s.inertia * s.angular_velocity * s.angular_velocity;
     e.gravitational -= s.mass * dot(world.gravity(), s.center);
   }
+  const VehicleJoints& vehicles = world.vehicles();
+  for (std::uint32_t v = 0; v < vehicles.count(); ++v) {
+    const std::uint32_t chassis = vehicles.chassis(v);
+    if (!rigid.props()[chassis].alive) continue;
+    const Pose pose = rigid.prop_state(chassis).pose;
+    for (std::size_t w = 0; w < vehicles.wheel_count(v); ++w) {
+      const AxleSpec& axle = vehicles.axle(v, w);
+      if (!(axle.stiffness > 0.0)) continue;
+      const Tire& t = world.tires()[vehicles.wheel_tire(v, w)];
+      const double c = dot(vehicle_rows::rim_hub(t.particles, t.n, false) - pose.to_world(axle.point),
+                           pose.rotate(axle.axis));
+      e.elastic += 0.5 * axle.stiffness * c * c;
+    }
+  }
   return e;
 }
 

@@ -267,6 +267,7 @@ Json default_vehicle(Vec2 at, bool player) {
     if (sprung) {
       w["stiffness"] = 6000;
       w["damping"] = 300;
+      w["travel"] = 0.1;
       w["driven"] = false;
     }
     w["outer_radius"] = 0.35;

@@ -18,6 +18,10 @@
 //   chassis: J_w = a/N at each rim particle, J_c = −(a, r × a) for r from the chassis' centre to the
 //   axle point. Rigid (SolverConfig::rigid_compliance) across the axis; along it the suspension's
 //   spring (compliance 1/k) and damper (XPBD eq. 26, γ = c/(k h)), or rigid without one;
+// - the suspension's travel, a one-sided limit on the same C along the axis, |C| ≤ travel: a rigid
+//   row, added while the hub is past either end or the limit's force from the last substep still
+//   holds it, whose multiplier only pushes the hub back inside (λ ≤ 0 at the top, ≥ 0 at the bottom,
+//   clamped in the rows' solve as a contact's is; a joint limit as Box2D's, Catto);
 // - the motor (or the brake), on the wheel's turn relative to the chassis over the substep,
 //   C = θ_w(x) − θ_c(q) − ω* h, with θ_w = Σ r⁰ᵢ × (xᵢ − xᵢ⁰) / Σ |r⁰ᵢ|² the mean turn of the
 //   wheel's particles about their centroid at the substep's start (linear in x, its force a pure
@@ -51,7 +55,9 @@ struct AxleSpec {
   Vec2 axis{0.0, 1.0};     // the suspension's axis in the chassis' frame (unit; chassis up)
   double stiffness = 0.0;  // the suspension's spring along the axis (N/m); 0: a rigid axle
   double damping = 0.0;    // its damper (N·s/m)
-  bool driven = true;      // the motor turns this wheel
+  double travel =
+      0.0;             // the most a sprung hub moves along the axis either side of the point (m); 0: no limit
+  bool driven = true;  // the motor turns this wheel
 };
 
 // A wheel: a tire (its spawn position and velocity are the axle's) on an axle.
@@ -149,6 +155,7 @@ class VehicleJoints {
     for (Wheel& w : v.wheels) {
       w.hub_force = {};
       w.torque = 0.0;
+      w.limit_force = 0.0;
     }
   }
   // The world's tire indices moved (a tire was removed before `removed`): the wheels after it follow.
@@ -180,7 +187,7 @@ class VehicleJoints {
     return w;
   }
 
-  static constexpr std::size_t kRowsPerWheel = 3;  // across the axis, along it, the motor/brake
+  static constexpr std::size_t kRowsPerWheel = 4;  // across the axis, along it, the motor/brake, the travel
   static constexpr std::size_t kMaxWheels = 8;
 
  private:
@@ -192,6 +199,7 @@ class VehicleJoints {
     // guess: the axle's on the hub (N, world) and the motor's or brake's torque on the wheel (N·m).
     Vec2 hub_force;
     double torque = 0.0;
+    double limit_force = 0.0;                     // the travel's part of hub_force, along the axis (N)
     std::vector<double> load;                     // J_wᵀ λ in the solver's block order (kg·m)
     std::vector<double> response[kRowsPerWheel];  // K̂_w⁻¹ J_wᵀ of each row
     std::vector<double> gradient[kRowsPerWheel];  // J_w of each row

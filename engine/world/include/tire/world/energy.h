@@ -12,7 +12,7 @@ struct Tire;
 struct Energy {
   double kinetic = 0.0;        // ½ m v² of every particle and prop (props: + ½ I ω²) (J)
   double gravitational = 0.0;  // −m g·x, zero at the origin (J)
-  double elastic = 0.0;        // ½ C²/α of every compliant constraint of every tire (J)
+  double elastic = 0.0;        // ½ C²/α of every compliant constraint of every tire and suspension (J)
   double total() const { return kinetic + gravitational + elastic; }
   Energy& operator+=(const Energy& o) {
     kinetic += o.kinetic;
@@ -27,8 +27,9 @@ struct Energy {
 // eq. 2–4). A constraint of compliance 0 is rigid and holds none.
 Energy tire_energy(const Tire& t, Vec2 gravity);
 
-// Every tire's and every live dynamic prop's (Box2D's state between ticks). Static and kinematic
-// props have none to count: a kinematic prop's driven motion is work done on the world from outside.
+// Every tire's, every live dynamic prop's (Box2D's state between ticks) and every vehicle's suspension
+// springs' (½ k C², C the hub's offset along its axis). Static and kinematic props have none to
+// count: a kinematic prop's driven motion is work done on the world from outside.
 Energy world_energy(const World& world);
 
 }  // namespace tire
