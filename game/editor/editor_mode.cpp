@@ -67,9 +67,9 @@ std::vector<Handle> handles_of(const Json& doc, const editor::Selection& selecti
                      (points[i] + points[(i + 1) % points.size()]) * 0.5,
                      {item->kind, item->index, set, i + 1}});
   };
-  // A vehicle's polygon chassis is reshaped in the property panel; its handles are its wheels' axle
-  // points and its driver's head, dragged in the chassis' frame.
-  if ((s->form == Form::polygon || s->form == Form::chain) && item->kind != ItemKind::vehicle)
+  // A vehicle's handles are its polygon chassis' points, its wheels' axle points and its driver's
+  // head, all dragged in the chassis' frame.
+  if (s->form == Form::polygon || s->form == Form::chain)
     add_points(s->outline, PointSet::points, s->form == Form::polygon || s->loop);
   for (std::size_t w = 0; w < s->axles.size(); ++w)
     out.push_back({Handle::Kind::point, s->axles[w], {item->kind, item->index, PointSet::axles, w}});
@@ -499,11 +499,13 @@ void Editor::mouse_move(int x, int y) {
     }
     case Drag::point: {
       const auto s = editor::shape_of(drag_base_, drag_item_.kind, drag_item_.index);
-      if (s && snap_ && (drag_item_.set == PointSet::axles || drag_item_.set == PointSet::head)) {
-        // A vehicle's axle point or head moves by whole grid steps along the chassis' own axes, so
-        // that [0.6, -0.3] dragged sideways stays at -0.3 and a symmetric car stays symmetric.
-        const Vec2 start =
-            drag_item_.set == PointSet::head ? s->head.value_or(s->position) : s->axles.at(drag_item_.point);
+      if (s && snap_ && drag_item_.kind == ItemKind::vehicle) {
+        // A vehicle's axle point, head or polygon chassis' point moves by whole grid steps along the
+        // chassis' own axes, so that [0.6, -0.3] dragged sideways stays at -0.3 and a symmetric car
+        // stays symmetric.
+        const Vec2 start = drag_item_.set == PointSet::head    ? s->head.value_or(s->position)
+                           : drag_item_.set == PointSet::axles ? s->axles.at(drag_item_.point)
+                                                               : s->outline.at(drag_item_.point);
         const Vec2 local = editor::to_local(*s, p) - editor::to_local(*s, press_world_);
         const Vec2 steps{std::round(local.x / grid_) * grid_, std::round(local.y / grid_) * grid_};
         doc_.preview(editor::with_point(drag_base_, drag_item_,

@@ -39,7 +39,8 @@ constexpr ToolButton kTools[] = {
     {EditTool::tire, "Tire", "T", "click to place a tire; the first is the player"},
     {EditTool::vehicle, "Vehicle", "K",
      "click to place a car (its chassis' centre); in a level without a player it is the player.\n"
-     "Selected: drag it whole, its square handles move each wheel's axle and the driver's head"},
+     "Selected: drag it whole, its square handles move each wheel's axle, the driver's head and a\n"
+     "polygon chassis' points"},
     {EditTool::region, "Region", "R", "drag a named region for the script"},
     {EditTool::goal, "Goal", "X", "drag the region the player must reach to win"},
     {EditTool::waypoint, "Waypoint", "W", "with a prop selected, each click adds a waypoint to its path"},
@@ -374,7 +375,8 @@ void Editor::draw_item_properties(const editor::Pick& item) {
           : "";
   if (item.kind == ItemKind::vehicle) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("drag it whole; its square handles: each wheel's axle, the driver's head");
+    ImGui::TextWrapped(
+        "drag it whole; its square handles: each wheel's axle, the driver's head, a polygon chassis' points");
     ImGui::PopStyleColor();
   }
   draw_keys(pointer, pointer, object_of(item.kind), shape);

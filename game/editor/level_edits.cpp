@@ -39,12 +39,17 @@ Json& body_of(Json& doc, const Pick& p) {
   return item["chassis"];
 }
 
-// The array a point pick indexes into, or nullptr (none for a vehicle's axles or head).
+// The array a point pick indexes into, or nullptr (none for a vehicle's axles or head). A vehicle's
+// points are its polygon chassis'.
 Json* point_array(Json& doc, const Pick& p) {
   if (!has_item(doc, p.item()) || p.set == PointSet::axles || p.set == PointSet::head) return nullptr;
   Json& item = item_at(doc, p);
   Json* holder = &item;
-  if (p.set == PointSet::waypoints) {
+  if (p.kind == ItemKind::vehicle) {
+    if (p.set != PointSet::points || !item.contains("chassis") || !item["chassis"].is_object())
+      return nullptr;
+    holder = &item["chassis"];
+  } else if (p.set == PointSet::waypoints) {
     if (!item.contains("path") || !item["path"].is_object()) return nullptr;
     holder = &item["path"];
   }

@@ -129,6 +129,50 @@ TEST_CASE("a vehicle moves whole, and an axle point moves its wheel alone in the
   CHECK(near(chassis_position(doc), {2.5, 1.7}));
 }
 
+TEST_CASE("a polygon chassis' points are dragged, added and deleted in the chassis' frame",
+          "[unit][editor]") {
+  LevelDocument doc = ground_document("polygon.json", true);
+  Json poly = doc.json();
+  Json& chassis = poly["vehicles"][0]["chassis"];
+  chassis.erase("size");
+  chassis["shape"] = "polygon";
+  chassis["points"] =
+      Json::array({vec2({-0.8, -0.15}), vec2({0.8, -0.15}), vec2({0.5, 0.15}), vec2({-0.8, 0.15})});
+  REQUIRE(doc.change(poly).empty());
+  REQUIRE(doc.change(with_angle(doc.json(), {ItemKind::vehicle, 0}, std::numbers::pi / 2)).empty());
+  const auto points = [&] { return doc.json()["vehicles"][0]["chassis"]["points"]; };
+  const auto point = [&](std::size_t k) {
+    const Json p = points()[k];
+    return Vec2{p[0].get<double>(), p[1].get<double>()};
+  };
+
+  // Point 2 (the nose's top corner, at (0.5, 0.15) in the chassis' frame; the chassis at (0, 0.7)
+  // turned a quarter) dragged 0.2 m along the chassis' x, which is the world's y now.
+  const auto shape = shape_of(doc.json(), ItemKind::vehicle, 0);
+  REQUIRE(shape->outline.size() == 4);
+  CHECK(near(shape->outline[2], Vec2{0, 0.7} + Vec2{-0.15, 0.5}));
+  const Pick nose{ItemKind::vehicle, 0, PointSet::points, 2};
+  REQUIRE(doc.change(with_point(doc.json(), nose, shape->outline[2] + Vec2{0, 0.2})).empty());
+  CHECK(near(point(2), {0.7, 0.15}));
+  CHECK(near(chassis_position(doc), {0, 0.7}));  // the chassis stays, and its wheels with it
+  CHECK(near(axle(doc, 0), {-0.6, -0.3}));
+  // Nudged as a selected point, the same frame.
+  REQUIRE(doc.change(moved(doc.json(), {nose}, {0.1, 0})).empty());
+  CHECK(near(point(2), {0.7, 0.05}));
+  // A point added below the edge after point 0 (kept convex), then deleted.
+  REQUIRE(doc.change(with_point_inserted(doc.json(), {ItemKind::vehicle, 0, PointSet::points, 1},
+                                         Vec2{0, 0.7} + Vec2{0.2, 0.0}))
+              .empty());
+  REQUIRE(points().size() == 5);
+  CHECK(near(point(1), {0.0, -0.2}));
+  REQUIRE(doc.change(removed(doc.json(), {{ItemKind::vehicle, 0, PointSet::points, 1}})).empty());
+  CHECK(points().size() == 4);
+  // The level still validates and the vehicle loads with its new shape.
+  const tire::LevelLoad load = tire::load_level_text(level_text(doc.json()), "polygon.json");
+  REQUIRE(load.errors.empty());
+  CHECK(near(load.level->vehicles.at(0).spec.chassis.points.at(2), {0.7, 0.05}));
+}
+
 TEST_CASE("a car keeps two wheels at least, and a wheel, the head or the whole vehicle is deleted and undone",
           "[unit][editor]") {
   LevelDocument doc = ground_document("deleted.json", true);
