@@ -618,7 +618,11 @@ void World::update_refinement() {
   // Two look-aheads ask for substeps, each as a demand (1/s): a substep of h is short enough while
   // demand · h ≤ 1.
   // - Rolling: a tire on the ground turns by |ω| h a substep, to be kept within refine_roll of a
-  //   segment's angle 2π/N (SolverConfig::refine_roll).
+  //   segment's angle 2π/N (SolverConfig::refine_roll); and so does a tire in the air within reach
+  //   of an obstacle or a prop this tick (its broad phase found one), before it lands on it
+  //   spinning: at one substep, a tire landing at 12.5 rad/s turned its ring by 0.13 rad in the
+  //   landing tick's one linear step, its landing particles stuck, and held 990 J in its springs
+  //   for that tick.
   // - A blow between two tires of an island: its turn vh/R kept within refine_turn (below).
   double turn = 0.0;
   double demand = 0.0;
@@ -626,7 +630,8 @@ void World::update_refinement() {
   for (const std::uint32_t i : sleep_.awake()) {
     const Tire& t = tires_[i];
     turn = std::max(turn, t.newton_turn);
-    if (roll && t.touched_ground_within(config_.jump_grace)) {
+    const bool near = !t.candidates.empty() || !t.prop_candidates.empty();
+    if (roll && (t.touched_ground_within(config_.jump_grace) || near)) {
       const double segment = 2.0 * std::numbers::pi / static_cast<double>(t.n);
       demand = std::max(demand, std::abs(t.angular_velocity()) / (config_.refine_roll * segment));
     }
