@@ -73,6 +73,7 @@ TEST_CASE("vehicle levels: the car loads, its player is the vehicle, and full th
 TEST_CASE("vehicle levels: the reader's errors", "[unit][vehicle_level]") {
   const json level = car_level();
   REQUIRE(errors_of(level).empty());
+  CHECK(loaded(level).vehicles.at(0).spec.wheels.at(1).axle.travel == 0.1);  // the sprung wheel's stop
   SECTION("too few wheels") {
     json doc = level;
     doc["vehicles"][0]["wheels"].erase(1);
