@@ -59,6 +59,13 @@ double hub_offset(const World& world, std::uint32_t v, std::size_t w, const Vehi
                 chassis.pose.to_world(spec.wheels[w].axle.point));
 }
 
+// Along wheel w's suspension axis, how far its hub is from its axle point (m; + is up the axis).
+double hub_along(const World& world, std::uint32_t v, std::size_t w, const VehicleSpec& spec) {
+  const Tire& t = wheel(world, v, w);
+  return vehicle_rows::stroke(t.particles, t.n, world.rigid().prop_state(world.vehicles().chassis(v)).pose,
+                              spec.wheels[w].axle);
+}
+
 // The ground's force on a wheel (N): its contacts' normal multipliers, λ_n m / h².
 double ground_force(const World& world, const Tire& t) {
   double lambda = 0.0;
@@ -165,29 +172,16 @@ TEST_CASE("vehicles: a sprung axle sags by its load over its stiffness", "[unit]
   }
   const std::uint32_t v = *world.add_vehicle(spec);
   run(world, 240);
-  const PropState chassis = world.rigid().prop_state(world.vehicles().chassis(v));
   const double g = 9.81, mass = 1.6 * 0.3 * 100;
   const double shares[2] = {mass * g * 0.6 / 1.5, mass * g * 0.9 / 1.5};  // rear, front
   for (std::size_t w = 0; w < 2; ++w) {
-    const Tire& t = wheel(world, v, w);
-    const Vec2 axis = chassis.pose.rotate(spec.wheels[w].axle.axis);
-    const Vec2 hub = vehicle_rows::rim_hub(t.particles, t.n, false);
-    const double along = dot(hub - chassis.pose.to_world(spec.wheels[w].axle.point), axis);
+    const double along = hub_along(world, v, w, spec);
     INFO(substeps << " substeps, wheel " << w << ": hub " << along * 1e3 << " mm along the axis, Hooke "
                   << shares[w] / 6000 * 1e3 << " mm; axle force " << world.vehicles().axle_force(v, w).y
                   << " N");
     CHECK(along == Approx(shares[w] / 6000).epsilon(0.02));
     CHECK(world.vehicles().axle_force(v, w).y == Approx(-shares[w]).epsilon(0.02));
   }
-}
-
-// Along wheel w's suspension axis, how far its hub is from its axle point (m; + is up the axis).
-double hub_along(const World& world, std::uint32_t v, std::size_t w, const VehicleSpec& spec) {
-  const Tire& t = wheel(world, v, w);
-  const PropState chassis = world.rigid().prop_state(world.vehicles().chassis(v));
-  return dot(
-      vehicle_rows::rim_hub(t.particles, t.n, false) - chassis.pose.to_world(spec.wheels[w].axle.point),
-      chassis.pose.rotate(spec.wheels[w].axle.axis));
 }
 
 TEST_CASE("vehicles: a sprung car dropped stays within its suspension's travel", "[unit][vehicles]") {

@@ -95,6 +95,10 @@ void hub_gradient(std::uint32_t n, Vec2 direction, double* g) {
   }
 }
 
+double stroke(const Particles& p, std::uint32_t n, const Pose& chassis, const AxleSpec& axle) {
+  return dot(rim_hub(p, n, false) - chassis.to_world(axle.point), chassis.rotate(axle.axis));
+}
+
 TurnFrame turn_frame(const Particles& p) {
   Vec2 c;
   for (const Vec2& x : p.x_prev) c += x;
@@ -376,8 +380,9 @@ void VehicleJoints::solve_vehicle(Vehicle& v, std::vector<Tire>& tires, RigidWor
       // its last force, a rigid row on C ∓ travel that only pushes back.
       const RowInfo& spring = rows[m - 1];
       const double travel = w.axle.travel;
-      const bool top = spring.c > travel || (spring.c >= -travel && w.limit_force < 0.0);
-      if (spring.c > travel || spring.c < -travel || w.limit_force != 0.0) {
+      const bool past = spring.c > travel || spring.c < -travel;
+      if (past || w.limit_force != 0.0) {
+        const bool top = past ? spring.c > travel : w.limit_force < 0.0;
         dirs_of[m] = f.axis;
         RowInfo& row = rows[m++];
         row = spring;

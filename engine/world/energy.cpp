@@ -44,8 +44,7 @@ Energy world_energy(const World& world) {
       const AxleSpec& axle = vehicles.axle(v, w);
       if (!(axle.stiffness > 0.0)) continue;
       const Tire& t = world.tires()[vehicles.wheel_tire(v, w)];
-      const double c = dot(vehicle_rows::rim_hub(t.particles, t.n, false) - pose.to_world(axle.point),
-                           pose.rotate(axle.axis));
+      const double c = vehicle_rows::stroke(t.particles, t.n, pose, axle);
       e.elastic += 0.5 * axle.stiffness * c * c;
     }
   }

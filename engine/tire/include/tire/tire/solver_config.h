@@ -135,12 +135,12 @@ struct SolverConfig {
   int max_refine = 8;
   // A tire on the ground (it touched it within jump_grace), or in the air within reach of an
   // obstacle or a prop (about to land on it), that turns by more than refine_roll of one tread
-  // segment's angle, 2π/N, a substep asks the next tick for the substeps that keep it within. Its corners'
-  // contacts are met at the end of each substep's turn: past half a segment, a corner that struck the ground
-  // ahead of the hub ends the turn behind it, where the push that holds it up spins the tire up. Coasting
-  // from 10 m/s at 2 substeps the stiff tire gained 108 J in 5 s; kept within half a segment (4 substeps at
-  // 10 m/s, 8 at 14) it gains none at 1–8 substeps (docs/soft-tire.md, "Corners met at the end of their
-  // turn"). 0 turns it off.
+  // segment's angle, 2π/N, a substep asks the next tick for the substeps that keep it within. Its
+  // corners' contacts are met at the end of each substep's turn: past half a segment, a corner that
+  // struck the ground ahead of the hub ends the turn behind it, where the push that holds it up
+  // spins the tire up. Coasting from 10 m/s at 2 substeps the stiff tire gained 108 J in 5 s; kept
+  // within half a segment (4 substeps at 10 m/s, 8 at 14) it gains none at 1–8 substeps
+  // (docs/soft-tire.md, "Corners met at the end of their turn"). 0 turns it off.
   double refine_roll = 0.5;
 
   // The most tires one tire is in contact with in a tick (TirePairFinder, soft_contact.h): a tire

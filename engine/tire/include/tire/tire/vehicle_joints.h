@@ -55,9 +55,8 @@ struct AxleSpec {
   Vec2 axis{0.0, 1.0};     // the suspension's axis in the chassis' frame (unit; chassis up)
   double stiffness = 0.0;  // the suspension's spring along the axis (N/m); 0: a rigid axle
   double damping = 0.0;    // its damper (N·s/m)
-  double travel =
-      0.0;             // the most a sprung hub moves along the axis either side of the point (m); 0: no limit
-  bool driven = true;  // the motor turns this wheel
+  double travel = 0.0;     // the most a sprung hub moves along the axis either side (m); 0: no limit
+  bool driven = true;      // the motor turns this wheel
 };
 
 // A wheel: a tire (its spawn position and velocity are the axle's) on an axle.
@@ -103,6 +102,9 @@ namespace vehicle_rows {
 Vec2 rim_hub(const Particles& p, std::uint32_t n, bool at_start);
 // ∂(d·hub)/∂x: d/n at each rim particle.
 void hub_gradient(std::uint32_t n, Vec2 direction, double* g);
+// The hub's offset from its axle point along the suspension's axis, the chassis at `chassis` (m; +
+// along the axis): the C of the spring and of the travel.
+double stroke(const Particles& p, std::uint32_t n, const Pose& chassis, const AxleSpec& axle);
 // The particles' centroid at the substep's start.
 struct TurnFrame {
   Vec2 centroid;
