@@ -15,7 +15,7 @@ namespace tire {
 
 namespace {
 
-// A friction anchor on a prop further than this (m) from where the substep's slip alone would hold
+// A friction anchor further than this (m) from where the substep's slip alone would hold
 // the particle is laid again: what it would take back is no longer a creep the friction let
 // through but a slide. (Kept at any distance, the anchor on a small ball spun under a tire at one
 // substep, 0.5 rad round it a substep, dragged the tread after it and threw the ball at 70 m/s.)
@@ -242,21 +242,24 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
   c.mu_kinetic = pair.mu_kinetic;
   c.friction_active = c.mu_static > 0.0;
   c.fixed = true;
+  // Stuck since an earlier substep: back to where it stuck, as the surface will stand at the
+  // substep's end, so that what slid while the friction held is taken back too, not only this
+  // substep's slip. Each substep's slip alone let what the one linear step leaves over build up:
+  // a crate lying on a tire slid over it at a steady 0.03 mm/s with both its contacts stuck, and a
+  // soft tire wedged against a wall by a pile slid down it at 0.17 mm/s (docs/at-rest.md).
+  if (t.anchor_on[particle] == Tire::anchor_code(prop)) {
+    const Vec2 stuck = t.friction_anchor[particle];
+    c.anchor =
+        prop >= 0
+            ? ctx.rigid->props()[static_cast<std::size_t>(prop)].pose_at(ctx.time + ctx.h).to_world(stuck)
+            : stuck;
+    c.anchored = length_squared(c.anchor - t.particles.x_prev[particle] - c.surface_displacement) <
+                 kAnchorReach * kAnchorReach;
+  }
   double give_n = 0.0, give_t = 0.0;
   if (prop >= 0) {
     const Prop& body = ctx.rigid->props()[static_cast<std::size_t>(prop)];
     c.fixed = !body.is_dynamic();
-    // On a dynamic prop, stuck since an earlier substep: back to where it stuck, as the prop will
-    // stand at the substep's end, so that what slid while the friction held is taken back too. A
-    // fixed surface's motion is given, and taking back each substep's slip leaves the particle no
-    // tangential velocity; a dynamic prop's is solved, and the solve may meet the slip by turning
-    // the prop where Box2D, handed the contacts' impulses, keeps its drift: a crate lying on a tire
-    // slid over it at a steady 0.03 mm/s with both its contacts stuck (docs/at-rest.md).
-    if (body.is_dynamic() && t.anchor_prop[particle] == prop) {
-      c.anchor = body.pose_at(ctx.time + ctx.h).to_world(t.friction_anchor[particle]);
-      c.anchored = length_squared(c.anchor - t.particles.x_prev[particle] - c.surface_displacement) <
-                   kAnchorReach * kAnchorReach;
-    }
     if (body.is_dynamic() && body.support_count == 0 && body.inverse_inertia > 0.0) {
       c.body = body_of(static_cast<std::uint32_t>(prop), body);
       c.arm = t.particles.x[particle] - body.center_at(ctx.time + ctx.h);
@@ -387,6 +390,24 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
       c.tire = static_cast<std::int32_t>(other);
       c.edge = k;
       c.point = point;
+      // Stuck since an earlier substep: back to the point of the neighbour's tread where it stuck,
+      // as for a surface (make_contact). Each substep's slip alone let a small tire resting on two
+      // others in level 08's pile turn in place at 0.15 rad/s for ever, its contacts stuck.
+      if (t.anchor_on[i] == Tire::anchor_code(-1, c.tire)) {
+        const double u = t.friction_anchor[i].x;
+        const auto ka = static_cast<std::uint32_t>(u);
+        if (u >= 0.0 && ka < tread.n) {
+          // The tread where its friction sees it: where it started the substep and its motion
+          // since, less what its prediction took of its neighbours' pushes (TireNeighbours::capture).
+          const auto held = [&](std::uint32_t j) {
+            return tread.tire->particles.x_prev[j] + tread.motion[j];
+          };
+          const double sa = u - ka;
+          c.anchor = held(ka) * (1.0 - sa) + held((ka + 1) % tread.n) * sa;
+          c.anchored =
+              length_squared(c.anchor - p.x_prev[i] - c.surface_displacement) < kAnchorReach * kAnchorReach;
+        }
+      }
       c.mu_static = c.mu_kinetic = mu;
       c.friction_active = mu > 0.0;
       c.stiffness_n = 1.0 / (rigid_alpha_tilde_ + tread.give(point, normal));
@@ -894,14 +915,24 @@ void GlobalSolver::write_back(Tire& t, const SubstepContext& ctx) {
       if (c.normal.y >= g) t.on_tire[c.particle] = 1;  // resting on the neighbour
     }
     owe(rec, c.particle, rec.lambda_n - before.lambda_n, rec.lambda_t - before.lambda_t);
-    // A friction on a prop that holds keeps its anchor, or lays one where the particle is now.
-    std::int32_t& anchored = t.anchor_prop[c.particle];
-    const Prop* body = c.prop >= 0 ? &ctx.rigid->props()[static_cast<std::size_t>(c.prop)] : nullptr;
-    if (!body || !body->is_dynamic() || !c.friction_active) {
-      anchored = -1;
-    } else if (anchored != c.prop || !c.anchored) {
-      t.friction_anchor[c.particle] = body->pose_at(t_end).to_local(t.particles.x[c.particle]);
-      anchored = c.prop;
+    // A static friction that holds keeps its anchor, or lays one where the particle is now, in the
+    // surface's frame (the world's for an obstacle).
+    std::int32_t& anchored = t.anchor_on[c.particle];
+    const Vec2 x = t.particles.x[c.particle];
+    if (!c.friction_active) {
+      anchored = Tire::kNoAnchor;
+    } else if (anchored != Tire::anchor_code(c.prop, c.tire) || !c.anchored) {
+      if (c.tire >= 0) {  // the point of the edge as captured nearest the particle
+        const TreadView tread = ctx.neighbours->tread(static_cast<std::uint32_t>(c.tire));
+        const Vec2 e = tread.x[(c.edge + 1) % tread.n] - tread.x[c.edge];
+        const double e2 = length_squared(e);
+        const double s = e2 > 0.0 ? std::clamp(dot(x - tread.x[c.edge], e) / e2, 0.0, 1.0) : 0.0;
+        t.friction_anchor[c.particle] = {c.edge + s, 0.0};
+      } else {
+        t.friction_anchor[c.particle] =
+            c.prop >= 0 ? ctx.rigid->props()[static_cast<std::size_t>(c.prop)].pose_at(t_end).to_local(x) : x;
+      }
+      anchored = Tire::anchor_code(c.prop, c.tire);
     }
   }
 }

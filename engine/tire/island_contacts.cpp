@@ -378,44 +378,44 @@ bool IslandContacts::add_surface_rows(const std::vector<Tire>& tires,
     if (!ready_[k]) continue;
     const std::uint32_t a = members[k];
     const Tire& t = tires[a];
-    solvers_[k]->for_each_fixed_contact([&](std::uint32_t particle, Vec2 normal, double plane, Vec2 motion,
-                                            double mu, std::int32_t prop, bool held, double mu_n,
-                                            double mu_t) {
-      if (rows_.size() + 2 > max_rows_) {
-        fits = false;
-        return;
-      }
-      const Vec2 x = t.particles.x[particle];
-      Row r;
-      r.surface = true;
-      r.a = r.b = a;
-      r.particle = particle;
-      r.plane = plane;
-      r.surface_motion = motion;
-      r.prop = prop;
-      r.mu = mu;
-      r.d = normal;
-      r.target = plane - dot(normal, x);
-      r.applied = r.lambda = mu_n;
-      if (held) {  // its normal stays in the tire's response: its friction alone, bounded by μ μ_n
-        if (!(mu > 0.0 && mu_n > 0.0)) return;
-        r.bound = mu * mu_n;
-      } else {
-        rows_.push_back(r);
-        if (!(mu > 0.0)) return;
-        // Its friction kinetic unless the particle was on the surface at the substep's start: its
-        // motion over the substep was not slip while it was off it, and a static row taking all of
-        // it back (12 cm for a tire rolling at 5 m/s at one substep) yanked the tread back and
-        // deformed it (the pair's energy up by half).
-        r.kinetic = plane - dot(normal, t.particles.x_prev[particle] + motion) < -kTouching;
-      }
-      const Vec2 tangent = perp(normal);
-      r.normal = static_cast<std::int32_t>(held ? rows_.size() : rows_.size() - 1);
-      r.d = tangent;
-      r.target = -dot(tangent, x - t.particles.x_prev[particle] - motion);
-      r.applied = r.lambda = mu_t;
-      rows_.push_back(r);
-    });
+    solvers_[k]->for_each_fixed_contact(
+        t.particles, [&](std::uint32_t particle, Vec2 normal, double plane, Vec2 motion, Vec2 stuck_at,
+                         double mu, std::int32_t prop, bool held, double mu_n, double mu_t) {
+          if (rows_.size() + 2 > max_rows_) {
+            fits = false;
+            return;
+          }
+          const Vec2 x = t.particles.x[particle];
+          Row r;
+          r.surface = true;
+          r.a = r.b = a;
+          r.particle = particle;
+          r.plane = plane;
+          r.surface_motion = motion;
+          r.prop = prop;
+          r.mu = mu;
+          r.d = normal;
+          r.target = plane - dot(normal, x);
+          r.applied = r.lambda = mu_n;
+          if (held) {  // its normal stays in the tire's response: its friction alone, bounded by μ μ_n
+            if (!(mu > 0.0 && mu_n > 0.0)) return;
+            r.bound = mu * mu_n;
+          } else {
+            rows_.push_back(r);
+            if (!(mu > 0.0)) return;
+            // Its friction kinetic unless the particle was on the surface at the substep's start: its
+            // motion over the substep was not slip while it was off it, and a static row taking all of
+            // it back (12 cm for a tire rolling at 5 m/s at one substep) yanked the tread back and
+            // deformed it (the pair's energy up by half).
+            r.kinetic = plane - dot(normal, t.particles.x_prev[particle] + motion) < -kTouching;
+          }
+          const Vec2 tangent = perp(normal);
+          r.normal = static_cast<std::int32_t>(held ? rows_.size() : rows_.size() - 1);
+          r.d = tangent;
+          r.target = -dot(tangent, x - stuck_at);
+          r.applied = r.lambda = mu_t;
+          rows_.push_back(r);
+        });
   }
   return fits;
 }

@@ -33,7 +33,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   const BlockSlot<std::uint8_t> grounded_slot = layout.add<std::uint8_t>(count);
   const BlockSlot<std::uint8_t> on_tire_slot = layout.add<std::uint8_t>(count);
   const BlockSlot<Vec2> friction_anchor_slot = layout.add<Vec2>(count);
-  const BlockSlot<std::int32_t> anchor_prop_slot = layout.add<std::int32_t>(count);
+  const BlockSlot<std::int32_t> anchor_on_slot = layout.add<std::int32_t>(count);
   const BlockSlot<double> soft_lambda_slot = layout.add<double>(n);
   const BlockSlot<std::uint64_t> contact_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
   const BlockSlot<std::uint64_t> held_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
@@ -43,7 +43,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   grounded_flags = arrays.construct(grounded_slot);
   on_tire = arrays.construct(on_tire_slot);
   friction_anchor = arrays.construct(friction_anchor_slot);
-  anchor_prop = arrays.construct(anchor_prop_slot);
+  anchor_on = arrays.construct(anchor_on_slot);
   soft_lambda = arrays.construct(soft_lambda_slot);
   contact_mask = arrays.construct(contact_mask_slot);
   held_mask = arrays.construct(held_mask_slot);
@@ -94,7 +94,7 @@ void Tire::reset() {
   std::fill(contact_mask.begin(), contact_mask.end(), std::uint64_t{0});
   std::fill(held_mask.begin(), held_mask.end(), std::uint64_t{0});
   std::fill(grounded_flags.begin(), grounded_flags.end(), std::uint8_t{0});
-  std::fill(anchor_prop.begin(), anchor_prop.end(), -1);
+  std::fill(anchor_on.begin(), anchor_on.end(), kNoAnchor);
   air_time = std::numeric_limits<double>::infinity();
   spin_as_built = spec.angular_velocity != 0.0;
   late_push = {};
@@ -184,12 +184,13 @@ bool Tire::grounded() const {
 }
 
 void Tire::clear_contacts() {
-  // An anchor outlives the substep only with its contact: held, stuck, on the same prop.
+  // An anchor outlives the substep only with its contact: held, stuck, on the same surface.
   for (std::uint32_t i = 0; i < particle_count(); ++i) {
-    if (anchor_prop[i] < 0) continue;
+    if (anchor_on[i] == kNoAnchor) continue;
     const ContactRecord& rec = contacts[i];
     const bool in_mask = (contact_mask[i >> 6] >> (i & 63)) & 1u;
-    if (!in_mask || !rec.active || !rec.stuck || rec.prop != anchor_prop[i]) anchor_prop[i] = -1;
+    if (!in_mask || !rec.active || !rec.stuck || anchor_code(rec.prop, rec.tire) != anchor_on[i])
+      anchor_on[i] = kNoAnchor;
   }
   for_each_contact([this](std::uint32_t i) { contacts[i] = ContactRecord{}; });
   std::copy(contact_mask.begin(), contact_mask.end(), held_mask.begin());
@@ -219,7 +220,7 @@ bool Tire::sizes_consistent() const {
   if (particles.x.size() != count || particles.x_prev.size() != count || particles.v.size() != count ||
       particles.w.size() != count || contacts.size() != count || contact_mask.size() != (count + 63) / 64 ||
       held_mask.size() != contact_mask.size() || grounded_flags.size() != count || on_tire.size() != count ||
-      friction_anchor.size() != count || anchor_prop.size() != count || soft_lambda.size() != n)
+      friction_anchor.size() != count || anchor_on.size() != count || soft_lambda.size() != n)
     return false;
   for (const DistanceConstraint& c : distance.constraints())
     if (c.a >= count || c.b >= count) return false;

@@ -122,8 +122,9 @@ void TireNeighbours::capture_tire(const Tire& t, std::size_t i) {
   Vec2* x = x_.data() + offset_[i];
   Vec2* motion = motion_.data() + offset_[i];
   Vec2 hub;
-  // Before its first solve of the substep, its motion less the late push its prediction took
-  // (Tire::predicted_push): the pushes of the tires that now anchor to it, coming back.
+  // Before its first solve of the substep, its motion less the late push and the fall its
+  // prediction took (Tire::predicted_push): the pushes of the tires that now anchor to it, coming
+  // back, and a fall its supports will take back.
   const Tire::LatePush& push = t.predicted_push;
   for (std::uint32_t k = 0; k < t.n; ++k) {
     motion[k] = t.particles.x[k] - t.particles.x_prev[k];

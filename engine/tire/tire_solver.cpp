@@ -62,7 +62,13 @@ void clamp_velocities(Tire& t, double v_max) {
 void predict(Tire& t, const SubstepContext& ctx) {
   Particles& p = t.particles;
   const double h = ctx.h;
+  // What neighbours anchoring to this tire's predicted tread leave out (TireNeighbours::capture):
+  // their own pushes coming back, and this substep's fall under gravity, which the tire's supports
+  // will take back. Followed by static friction, a tire resting on two others that were not yet
+  // solved was dragged down their sides by g h² a substep (0.7 mm at two substeps) and turned in
+  // place for ever, and level 08's pile never slept (docs/at-rest.md).
   t.predicted_push = t.late_push;
+  t.predicted_push.add(ctx.gravity * h, 0.0, t.predicted_push.any ? t.predicted_push.centre : Vec2{});
   if (t.late_push.any) {  // what neighbours pushed after the tire's last solve (tire_neighbours.h)
     const Tire::LatePush& k = t.late_push;
     for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += k.velocity + perp(p.x[i] - k.centre) * k.spin;

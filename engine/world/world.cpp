@@ -1021,10 +1021,10 @@ void World::hash_into(StateHash& h) const {
     h.add(t.late_push.spin);
     h.add(t.late_push.centre);
     if (t.spin_as_built) h.add(t.spin_as_built);              // only until its first prediction
-    for (std::uint32_t i = 0; i < t.particle_count(); ++i) {  // friction anchors on props, where any
-      if (t.anchor_prop[i] < 0) continue;
+    for (std::uint32_t i = 0; i < t.particle_count(); ++i) {  // friction anchors, where any
+      if (t.anchor_on[i] == Tire::kNoAnchor) continue;
       h.add(i);
-      h.add(t.anchor_prop[i]);
+      h.add(t.anchor_on[i]);
       h.add(t.friction_anchor[i]);
     }
     if (config_.sleep) {  // the sleep state, where sleeping is on (sleep_islands.h)

@@ -103,15 +103,16 @@ class GlobalSolver {
   // solve reads it and forgets it; r must live until then.
   void load_next_solve(const double* r) { load_ = r; }
   // The last solve's contacts with fixed surfaces, held or let go: f(particle, normal, plane,
-  // surface displacement over the substep, static friction, prop or −1, held, μ_n, μ_t), the
-  // multipliers (kg·m) its Δx holds of them (0 for what it did not hold). respond() holds the
-  // normals of those held, and none of their frictions.
+  // surface displacement over the substep, the point static friction holds the particle to (slip),
+  // static friction, prop or −1, held, μ_n, μ_t), the multipliers (kg·m) its Δx holds of them (0 for
+  // what it did not hold). respond() holds the normals of those held, and none of their frictions.
   template <class F>
-  void for_each_fixed_contact(F&& f) const {
+  void for_each_fixed_contact(const Particles& p, F&& f) const {
     for (const Contact& c : contacts_)
       if (c.fixed)
-        f(c.particle, c.normal, c.plane, c.surface_displacement, c.mu_static, c.prop, c.normal_active, c.mu_n,
-          c.mu_t);
+        f(c.particle, c.normal, c.plane, c.surface_displacement,
+          c.anchored ? c.anchor : p.x_prev[c.particle] + c.surface_displacement, c.mu_static, c.prop,
+          c.normal_active, c.mu_n, c.mu_t);
   }
   // The largest angle (rad) by which a displacement dx (in block order: dof()) of the tire's
   // particles from where they are turns one of its distance constraints, as assembled by the last

@@ -230,19 +230,28 @@ struct Tire {
     }
   };
   LatePush late_push;
-  // The late push this substep's prediction took, until the tire's first solve of the substep:
-  // neighbours anchoring their static friction to its predicted tread (TireNeighbours::capture) leave
-  // it out, as it is their own reactions coming back.
+  // The late push this substep's prediction took, and its gravity's h g, until the tire's first
+  // solve of the substep: neighbours anchoring their static friction to its predicted tread
+  // (TireNeighbours::capture) leave it out, as their own reactions coming back and a fall its
+  // supports will take back.
   LatePush predicted_push;
   Vec2 tread_hub;            // mean of the tread particles, after this iteration's own solve
   double tread_reach = 0.0;  // largest distance of a tread particle from tread_hub
   Vec2 rim_hub;              // the same for the rim, for the tread–rim contact
   double rim_reach = 0.0;
   ArrayView<std::uint8_t> on_tire;  // per particle: resting on another tire, this substep
-  // Per particle: where its static friction on a prop stuck, in the prop's frame, while it holds
-  // (GlobalSolver: the friction takes the particle back to it), and the prop, or −1.
+  // Per particle: where its static friction stuck, while it holds (GlobalSolver: the friction
+  // takes the particle back to it), and on what (anchor_code). On a surface, the point in the
+  // surface's frame; on a neighbour's tread, x = k + s, the point s along its edge (k, k + 1).
   ArrayView<Vec2> friction_anchor;
-  ArrayView<std::int32_t> anchor_prop;
+  ArrayView<std::int32_t> anchor_on;
+  // What an anchor is on: the prop, the world for an obstacle (a point of the world stays put from
+  // one obstacle to the next), or a neighbour tire (its index in the world); kNoAnchor while the
+  // particle's friction does not hold.
+  static constexpr std::int32_t kNoAnchor = -1;
+  static constexpr std::int32_t anchor_code(std::int32_t prop, std::int32_t tire = -1) {
+    return tire >= 0 ? -3 - tire : prop >= 0 ? prop : -2;
+  }
   TireControl control;
   Landing landing;
   TickContacts tick_contacts;  // the last tick's, for listeners (sound); reset by begin_tick
