@@ -82,6 +82,30 @@ std::vector<Vec2> hubs(const World& world) {
   return out;
 }
 
+// Steps the world to tick `from`, then to tick `to`: how far its tires moved in between.
+Drift drift_between(World& world, int from, int to) {
+  run(world, from);
+  const std::vector<Vec2> before = hubs(world);
+  run(world, to - from);
+  return drift(before, world);
+}
+
+// test_sleep.cpp's pile of 35 in an 8 m box, sleeping off, in a material (the default's if null).
+World pile_of_35(const Material* material) {
+  SolverConfig config = island_config();
+  config.sleep = false;
+  World world(config, {0, -9.81});
+  world.add_obstacle({{{-100, -10}, {100, 0}}});
+  world.add_obstacle({{{-5, 0}, {-4, 40}}});
+  world.add_obstacle({{{4, 0}, {5, 40}}});
+  for (int k = 0; k < 35; ++k) {
+    TireSpec spec = tire_at({-3.4 + 1.1 * (k % 7) + 0.25 * ((k / 7) % 2), 0.5 + 1.2 * (k / 7)});
+    if (material) material->apply_to(spec);
+    world.add_tire(spec);
+  }
+  return world;
+}
+
 }  // namespace
 
 TEST_CASE("island: a tire's response to a load moves it with the load's momentum, symmetrically",
@@ -137,20 +161,9 @@ TEST_CASE("island: a tire resting on another stays out of it, at rest", "[unit][
 }
 
 TEST_CASE("island: a pile of 35 tires does not creep", "[unit][island][rest]") {
-  // test_sleep.cpp's pile of 35 in an 8 m box, sleeping off: block Gauss–Seidel's creeps
-  // (docs/at-rest.md: a median 1.4 mm and climbs of 6.8 mm in 10 s).
-  SolverConfig config = island_config();
-  config.sleep = false;
-  World world(config, {0, -9.81});
-  world.add_obstacle({{{-100, -10}, {100, 0}}});
-  world.add_obstacle({{{-5, 0}, {-4, 40}}});
-  world.add_obstacle({{{4, 0}, {5, 40}}});
-  for (int k = 0; k < 35; ++k)
-    world.add_tire(tire_at({-3.4 + 1.1 * (k % 7) + 0.25 * ((k / 7) % 2), 0.5 + 1.2 * (k / 7)}));
-  run(world, 10 * 60);
-  const std::vector<Vec2> at10 = hubs(world);
-  run(world, 5 * 60);
-  const Drift d = drift(at10, world);
+  // Block Gauss–Seidel's creeps (docs/at-rest.md: a median 1.4 mm and climbs of 6.8 mm in 10 s).
+  World world = pile_of_35(nullptr);
+  const Drift d = drift_between(world, 10 * 60, 15 * 60);
   INFO("10-15 s: median " << d.median * 1e3 << " mm, largest " << d.largest * 1e3 << " mm, rise "
                           << d.rise * 1e3 << " mm");
   CHECK(d.median < 0.01e-3);
@@ -164,21 +177,8 @@ TEST_CASE("island: a pile of 35 slick tires does not creep down a wall", "[unit]
   // wall slid down the wall at a steady 0.11 mm/s, its contacts with the wall all stuck, while each
   // substep's static friction took back only that substep's slip: from 20 to 25 s the median tire
   // moved 0.018 mm and that one 0.55 mm. Anchored where it stuck (docs/at-rest.md): 0 and 0.003 mm.
-  SolverConfig config = island_config();
-  config.sleep = false;
-  World world(config, {0, -9.81});
-  world.add_obstacle({{{-100, -10}, {100, 0}}});
-  world.add_obstacle({{{-5, 0}, {-4, 40}}});
-  world.add_obstacle({{{4, 0}, {5, 40}}});
-  for (int k = 0; k < 35; ++k) {
-    TireSpec spec = tire_at({-3.4 + 1.1 * (k % 7) + 0.25 * ((k / 7) % 2), 0.5 + 1.2 * (k / 7)});
-    find_material("slick")->apply_to(spec);
-    world.add_tire(spec);
-  }
-  run(world, 20 * 60);
-  const std::vector<Vec2> at20 = hubs(world);
-  run(world, 5 * 60);
-  const Drift d = drift(at20, world);
+  World world = pile_of_35(find_material("slick"));
+  const Drift d = drift_between(world, 20 * 60, 25 * 60);
   INFO("20-25 s: median " << d.median * 1e3 << " mm, largest " << d.largest * 1e3 << " mm, rise "
                           << d.rise * 1e3 << " mm");
   CHECK(d.median < 1e-6);
