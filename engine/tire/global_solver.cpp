@@ -21,6 +21,12 @@ namespace {
 // substep, 0.5 rad round it a substep, dragged the tread after it and threw the ball at 70 m/s.)
 constexpr double kAnchorReach = 1e-3;
 
+// Whether an anchor still holds: within kAnchorReach of where the substep's slip alone would hold
+// the particle, its start moved with the surface under it.
+bool within_reach(Vec2 anchor, Vec2 x_prev, Vec2 surface_displacement) {
+  return length_squared(anchor - x_prev - surface_displacement) < kAnchorReach * kAnchorReach;
+}
+
 // The block after block k round the ring (without a division: an integer one cost as much as the
 // rest of a constraint's assembly).
 std::uint32_t next_block(std::uint32_t k, std::uint32_t n) { return k + 1 == n ? 0 : k + 1; }
@@ -253,8 +259,7 @@ GlobalSolver::Contact GlobalSolver::make_contact(const Tire& t, const SubstepCon
         prop >= 0
             ? ctx.rigid->props()[static_cast<std::size_t>(prop)].pose_at(ctx.time + ctx.h).to_world(stuck)
             : stuck;
-    c.anchored = length_squared(c.anchor - t.particles.x_prev[particle] - c.surface_displacement) <
-                 kAnchorReach * kAnchorReach;
+    c.anchored = within_reach(c.anchor, t.particles.x_prev[particle], c.surface_displacement);
   }
   double give_n = 0.0, give_t = 0.0;
   if (prop >= 0) {
@@ -404,8 +409,7 @@ void GlobalSolver::find_tire_contacts(const Tire& t, const SubstepContext& ctx, 
           };
           const double sa = u - ka;
           c.anchor = held(ka) * (1.0 - sa) + held((ka + 1) % tread.n) * sa;
-          c.anchored =
-              length_squared(c.anchor - p.x_prev[i] - c.surface_displacement) < kAnchorReach * kAnchorReach;
+          c.anchored = within_reach(c.anchor, p.x_prev[i], c.surface_displacement);
         }
       }
       c.mu_static = c.mu_kinetic = mu;
