@@ -186,6 +186,40 @@ TEST_CASE("island: a pile of 35 slick tires does not creep down a wall", "[unit]
   CHECK(d.rise < 0.01e-3);
 }
 
+TEST_CASE("island: a pile of 60 slick tires comes to rest at its own substeps",
+          "[unit][island][rest][sleep]") {
+  // The island's multipliers load each tire's next solve. Solved at one substep and loaded at
+  // another, unscaled, they pressed a tire with up to 4 times its neighbours' weight when the
+  // refinement halved its substeps: the jolt turned links past refine_turn, and the soft pile's
+  // substeps went 4, 4, 2, 4, 8, 8 for ever, its tires' shapes flicking by 85 µm a tick.
+  SolverConfig config = island_config();
+  config.sleep = false;
+  World world = pile_of_60(config, find_material("slick"));
+  run(world, 20 * 60);
+  int off_substeps = 0;
+  double jolt = 0.0;  // the largest move of a hub in one tick
+  for (int tick = 0; tick < 60; ++tick) {
+    const std::vector<Vec2> before = hubs(world);
+    world.step({});
+    off_substeps += world.tick_substeps() != config.substeps;
+    jolt = std::max(jolt, drift(before, world).largest);
+  }
+  INFO("20-21 s: " << off_substeps << " ticks refined; a hub moved " << jolt * 1e3
+                   << " mm in a tick at most");
+  CHECK(off_substeps == 0);
+  CHECK(jolt < 2e-5);  // one tire still slips down 10 µm every 38 ticks; at rest from 25 s
+
+  // With sleeping on, it sleeps (it did not within 40 s).
+  World sleeping = pile_of_60(island_config(), find_material("slick"));
+  int ticks = 0;
+  while (ticks < 30 * 60 && sleeping.asleep_count() < sleeping.tires().size()) {
+    sleeping.step({});
+    ++ticks;
+  }
+  INFO(sleeping.asleep_count() << " of 60 asleep after " << ticks / 60.0 << " s");
+  CHECK(sleeping.asleep_count() == sleeping.tires().size());
+}
+
 TEST_CASE("island: a pile of 60 tires falls asleep", "[unit][island][rest][sleep]") {
   // The pile of 60 in a 6 m box (tire_fixtures.h). Each tire solved alone with no load sprang back
   // from what its neighbours pressed in, and tires between the pile and a wall rang at half the

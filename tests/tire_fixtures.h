@@ -5,6 +5,7 @@
 
 #include "tire/io/level.h"
 #include "tire/session/level_session.h"
+#include "tire/tire/parameters.h"
 #include "tire/tire/tire_solver.h"
 
 namespace tire::test {
@@ -55,14 +56,18 @@ inline void tick_lone_tire(Tire& t, RigidWorld& rigid, const SolverConfig& confi
   rigid.end_tick(config.dt);
 }
 
-// 60 default tires dropped in rows of five into a 6 m box (docs/at-rest.md's pile of 60).
-inline World pile_of_60(const SolverConfig& config) {
+// 60 tires dropped in rows of five into a 6 m box (docs/at-rest.md's pile of 60), in a material
+// (the default's if null).
+inline World pile_of_60(const SolverConfig& config, const Material* material = nullptr) {
   World world(config, {0, -9.81});
   world.add_obstacle({{{-100, -10}, {100, 0}}});
   world.add_obstacle({{{-4, 0}, {-3, 40}}});
   world.add_obstacle({{{3, 0}, {4, 40}}});
-  for (int k = 0; k < 60; ++k)
-    world.add_tire(tire_at({-2.4 + 1.1 * (k % 5) + 0.25 * (k / 5 % 2), 0.5 + 1.2 * (k / 5)}));
+  for (int k = 0; k < 60; ++k) {
+    TireSpec spec = tire_at({-2.4 + 1.1 * (k % 5) + 0.25 * (k / 5 % 2), 0.5 + 1.2 * (k / 5)});
+    if (material) material->apply_to(spec);
+    world.add_tire(spec);
+  }
   return world;
 }
 

@@ -105,6 +105,7 @@ void IslandContacts::set_islands(const std::vector<Tire>& tires, std::span<const
   // a second was thrown about at 5.6 m/s (tests/test_island_contacts.cpp).
   const auto forget = [&] {
     for (auto* v : {&older_lambda_, &last_lambda_, &next_lambda_}) v->clear();
+    last_h_ = older_h_ = next_h_ = 0.0;
     anchors_.clear();
     next_anchors_.clear();
   };
@@ -294,10 +295,12 @@ bool IslandContacts::add_contacts(const Tire& ta, std::uint32_t a, const Tire& t
   return true;
 }
 
-void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
+void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group, double h) {
   if (group == 0) {  // what held, and the multipliers, in the last iteration of every group
     older_lambda_.swap(last_lambda_);
     last_lambda_.swap(next_lambda_);
+    older_h_ = last_h_;
+    last_h_ = next_h_;
     next_lambda_.clear();
     std::sort(last_lambda_.begin(), last_lambda_.end());
     anchors_.swap(next_anchors_);
@@ -339,7 +342,7 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
     ++work_.overflows;
     return;
   }
-  load_tires(tires, group_tires(group));
+  load_tires(tires, group_tires(group), h);
 }
 
 // Each row's last multiplier, put on its two tires as a load for their solves: each tire is then
@@ -347,14 +350,28 @@ void IslandContacts::find(const std::vector<Tire>& tires, std::size_t group) {
 // no load, a tire pressed against a wall by the pile let the wall go and sprang back, the island's
 // solve pressed it in again through a response that did not hold the wall, and tires between a
 // pile and a wall rang at half the substep rate (docs/at-rest.md).
-void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members) {
+void IslandContacts::load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members,
+                                double h) {
   constexpr std::size_t B = CyclicBlockCholesky::kBlock;
+  // A multiplier is a force times h² (K̂ = M + h² ∇²E) where it holds a resting load, an impulse
+  // times h where it stops a blow. Loaded at another substep than it was solved at (the refinement
+  // changed the substeps between ticks), it is scaled by the smaller of (h/h')² and h/h': the load is
+  // a guess the island's solve corrects, and what throws a tire is too much of it. Unscaled, a pile at
+  // rest was pressed by 4 times its neighbours' weight when its substeps halved, the jolt turned its
+  // links past refine_turn, and its substeps went 4, 4, 2, 4, 8, 8 for ever; scaled by (h/h')² both
+  // ways, a blow that refined to 2 substeps and back to 1 was loaded twice its impulse and gained 27 %.
+  const auto rescale = [h](double solved_at) {
+    if (!(solved_at > 0.0) || solved_at == h) return 1.0;
+    const double ratio = h / solved_at;
+    return std::min(ratio, ratio * ratio);
+  };
+  const double last_scale = rescale(last_h_), older_scale = rescale(older_h_);
   dof_begin_.assign(1, 0);
   for (const std::uint32_t i : members) dof_begin_.push_back(dof_begin_.back() + B * tires[i].n);
   load_.assign(dof_begin_.back(), 0.0);
   for (Row& r : rows_) {
-    r.lambda = lambda_in(last_lambda_, lambda_key(r));
-    const double older = lambda_in(older_lambda_, lambda_key(r));
+    r.lambda = lambda_in(last_lambda_, lambda_key(r)) * last_scale;
+    const double older = lambda_in(older_lambda_, lambda_key(r)) * older_scale;
     r.applied =
         r.lambda * older > 0.0 ? std::copysign(std::min(std::abs(r.lambda), std::abs(older)), older) : 0.0;
     if (r.applied == 0.0) continue;
@@ -816,6 +833,7 @@ void IslandContacts::solve(std::vector<Tire>& tires, std::size_t group, const Su
   write_records(tires, ctx);
   // The rows between tires: their multipliers (the next loads, held()), and their anchors. A surface
   // row starts from what its tire's solve applied, and keeps nothing.
+  next_h_ = ctx.h;
   for (const Row& r : rows_) {
     if (r.surface) continue;
     const std::uint64_t k = key(r);

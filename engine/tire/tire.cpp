@@ -34,6 +34,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   const BlockSlot<std::uint8_t> on_tire_slot = layout.add<std::uint8_t>(count);
   const BlockSlot<Vec2> friction_anchor_slot = layout.add<Vec2>(count);
   const BlockSlot<std::int32_t> anchor_on_slot = layout.add<std::int32_t>(count);
+  const BlockSlot<Vec2> still_shape_slot = layout.add<Vec2>(count);
   const BlockSlot<double> soft_lambda_slot = layout.add<double>(n);
   const BlockSlot<std::uint64_t> contact_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
   const BlockSlot<std::uint64_t> held_mask_slot = layout.add<std::uint64_t>((count + 63) / 64);
@@ -44,6 +45,7 @@ Tire::Tire(TireId id_, const TireSpec& spec_, std::shared_ptr<const TireTopology
   on_tire = arrays.construct(on_tire_slot);
   friction_anchor = arrays.construct(friction_anchor_slot);
   anchor_on = arrays.construct(anchor_on_slot);
+  still_shape = arrays.construct(still_shape_slot);
   soft_lambda = arrays.construct(soft_lambda_slot);
   contact_mask = arrays.construct(contact_mask_slot);
   held_mask = arrays.construct(held_mask_slot);
@@ -220,7 +222,8 @@ bool Tire::sizes_consistent() const {
   if (particles.x.size() != count || particles.x_prev.size() != count || particles.v.size() != count ||
       particles.w.size() != count || contacts.size() != count || contact_mask.size() != (count + 63) / 64 ||
       held_mask.size() != contact_mask.size() || grounded_flags.size() != count || on_tire.size() != count ||
-      friction_anchor.size() != count || anchor_on.size() != count || soft_lambda.size() != n)
+      friction_anchor.size() != count || anchor_on.size() != count || still_shape.size() != count ||
+      soft_lambda.size() != n)
     return false;
   for (const DistanceConstraint& c : distance.constraints())
     if (c.a >= count || c.b >= count) return false;

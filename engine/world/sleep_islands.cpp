@@ -18,11 +18,37 @@ void for_each_prop_near(const Tire& t, F&& f) {
   if (t.chassis >= 0) f(static_cast<std::uint32_t>(t.chassis));
 }
 
-// The unit direction from `hub` to tread particle 0: how far the tire has turned, read from where it is.
-Vec2 spoke_of(const Tire& t, Vec2 hub) {
-  const Vec2 d = t.particles.x[0] - hub;
-  const double l = length(d);
-  return l > 0.0 ? d / l : Vec2{1.0, 0.0};
+// Marks where tire t is now as where it became still: its hub, and each particle's offset from it.
+void mark_still(Tire& t, Vec2 hub) {
+  t.still_anchor = hub;
+  for (std::size_t k = 0; k < t.particles.size(); ++k) t.still_shape[k] = t.particles.x[k] - hub;
+}
+
+// How tire t (hub at `hub`) stands against the shape it had when it became still (Tire::
+// still_shape, offsets s_k): the turn θ that best lays those offsets onto today's, r_k (the least
+// squares rotation, tan θ = Σ s_k × r_k / Σ s_k · r_k), and the root mean square of what is left,
+// |r_k − R(θ) s_k|: how far its shape has changed, its turn taken out.
+struct ShapeChange {
+  double turn = 0.0;      // rad
+  double deformed = 0.0;  // m
+};
+ShapeChange shape_change(const Tire& t, Vec2 hub) {
+  const Particles& p = t.particles;
+  double c = 0.0, s = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Vec2 r = p.x[k] - hub;
+    c += dot(t.still_shape[k], r);
+    s += cross(t.still_shape[k], r);
+  }
+  const double norm = std::sqrt(c * c + s * s);
+  if (!(norm > 0.0)) return {0.0, std::numeric_limits<double>::infinity()};
+  const double cos_t = c / norm, sin_t = s / norm;
+  double left2 = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Vec2 q = t.still_shape[k];
+    left2 += length_squared(p.x[k] - hub - Vec2{cos_t * q.x - sin_t * q.y, sin_t * q.x + cos_t * q.y});
+  }
+  return {tire::atan2(s, c), std::sqrt(left2 / static_cast<double>(p.size()))};
 }
 
 // The tire's motion over the tick's last substep, from its positions (Tire::substep_motion), not
@@ -103,8 +129,7 @@ bool SleepIslands::wake(std::vector<Tire>& tires, std::uint32_t i, RigidWorld& r
     if (!t.asleep || t.island != island) continue;
     t.asleep = false;
     t.still_time = 0.0;
-    t.still_anchor = t.centroid();
-    t.still_spoke = spoke_of(t, t.still_anchor);
+    mark_still(t, t.centroid());
     --asleep_;
     island_.push_back(j);
     woken_.push_back(j);
@@ -146,19 +171,16 @@ void SleepIslands::settle(std::vector<Tire>& tires, std::span<const TirePair> pa
     Tire& t = tires[i];
     double deform2 = 0.0;
     const RigidMotion m = last_motion(t, h, deform2);
-    // Where it has got to since it became still, by its positions: its hub, and its tread by the
-    // angle it has turned through.
-    const Vec2 spoke = spoke_of(t, m.centroid);
-    const double turn = tire::atan2(cross(t.still_spoke, spoke), dot(t.still_spoke, spoke));
-    const double drift = length(m.centroid - t.still_anchor) + std::abs(turn) * t.spec.outer_radius;
+    // Where it has got to since it became still, by its positions: its hub, its tread by the angle
+    // it has turned through, and its shape.
+    const ShapeChange change = shape_change(t, m.centroid);
+    const double drift = length(m.centroid - t.still_anchor) + std::abs(change.turn) * t.spec.outer_radius;
     // A tire held, driven or grabbed is not resting, however slowly it moves.
-    const bool still = drift <= config.sleep_speed * config.sleep_time && deform2 < limit2 && !t.grabbed &&
-                       t.control.steer == 0.0 && !t.driven;
+    const bool still = drift <= config.sleep_speed * config.sleep_time && deform2 < limit2 &&
+                       change.deformed <= config.sleep_deform && !t.grabbed && t.control.steer == 0.0 &&
+                       !t.driven;
     t.still_time = still ? t.still_time + config.dt : 0.0;
-    if (!still) {
-      t.still_anchor = m.centroid;
-      t.still_spoke = spoke;
-    }
+    if (!still) mark_still(t, m.centroid);
     any_ready = any_ready || t.still_time >= config.sleep_time;
   }
   if (any_ready) {

@@ -761,7 +761,7 @@ void World::solve_islands(const SubstepContext& ctx, bool last) {
   alone.neighbours = nullptr;
   alone.island = &island_;
   for (std::size_t g = 0; g < island_.groups(); ++g) {
-    island_.find(tires_, g);
+    island_.find(tires_, g, ctx.h);
     const std::span<const std::uint32_t> tires = island_.group_tires(g);
     if (!island_.solves(tires.front())) continue;  // its contacts did not fit: block Gauss–Seidel
     for_tires(tires.size(), [&](std::size_t b, std::size_t e) {
@@ -1031,7 +1031,7 @@ void World::hash_into(StateHash& h) const {
       h.add(t.asleep);
       h.add(t.still_time);
       h.add(t.still_anchor);
-      h.add(t.still_spoke);
+      h.add_bytes(t.still_shape.data(), t.still_shape.size() * sizeof(Vec2));
       h.add(t.island);
     }
   }

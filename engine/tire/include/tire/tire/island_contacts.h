@@ -78,7 +78,7 @@ class IslandContacts {
   // tires are predicted); each tire solved alone by solver_of(tire), with no neighbours; then solve(),
   // whose per-tire parts (the tires' responses, their moves) run on `pool` if one is given: each
   // sums what it sums in the same order on any thread, so the bits do not depend on it.
-  void find(const std::vector<Tire>& tires, std::size_t group);
+  void find(const std::vector<Tire>& tires, std::size_t group, double h);
   GlobalSolver& solver_of(const Tire& t) {
     return *solvers_[per_tire_[static_cast<std::size_t>(&t - first_)].slot];
   }
@@ -130,7 +130,7 @@ class IslandContacts {
   bool add_contacts(const Tire& ta, std::uint32_t a, const Tire& tb, std::uint32_t b,
                     std::size_t first_of_pair);
   void index_rows_by_tire(std::size_t tires_in_group);
-  void load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
+  void load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members, double h);
   bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
   bool assemble(const std::vector<Tire>& tires);
   bool incomplete_cholesky();
@@ -204,6 +204,9 @@ class IslandContacts {
   std::vector<std::uint8_t> ready_;                            // per slot: its response is to be had
   std::vector<std::pair<std::uint64_t, double>> last_lambda_;  // by key × 2 + friction, sorted
   std::vector<std::pair<std::uint64_t, double>> older_lambda_;  // the iteration's before, sorted
+  // The substep each list was solved at: one solved at another h (the refinement changed the
+  // substeps between ticks) is rescaled as it is loaded (load_tires).
+  double last_h_ = 0.0, older_h_ = 0.0, next_h_ = 0.0;
   // Where a stuck contact's particle was laid on the other tread: at s along b's edge (e0, e0 + 1).
   struct Anchor {
     std::uint64_t key = 0;

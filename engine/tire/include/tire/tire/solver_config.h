@@ -75,16 +75,19 @@ struct SolverConfig {
   // Still (m/s): a tire whose hub has stayed within sleep_speed · sleep_time of where it was when it
   // became still, and its tread within that of where it was then (by the angle it has turned
   // through), so that its mean speed over the time is under sleep_speed (Box2D v3's sleep
-  // threshold, 0.05 m/s); and whose deformation moved slower than sleep_deform_speed over the
-  // tick's last substep (the root mean square of its particles' motion less its rigid motion's:
-  // Box2D 2.4's b2_linearSleepTolerance, 0.01 m/s). Read from positions, not velocities
-  // (sleep_islands.cpp). A dynamic prop is still when its centre and outline move slower than
-  // sleep_speed. So a tire sleeps only once its deformation has stopped changing, in the shape it
-  // would settle to awake: a soft tire's sag asleep is its sag awake to 0.5 % at 2–32 substeps,
-  // where 0.25 m/s, which let level 08's jittering pile sleep under Gauss–Seidel, froze it ringing,
-  // up to 35 % off (docs/at-rest.md).
+  // threshold, 0.05 m/s); whose deformation moved slower than sleep_deform_speed over the tick's
+  // last substep (the root mean square of its particles' motion less its rigid motion's: Box2D
+  // 2.4's b2_linearSleepTolerance, 0.01 m/s); and whose shape has stayed within sleep_deform (m) of
+  // the shape it had then (the root mean square of its particles' offsets from the hub against
+  // those it had, its turn taken out). Read from positions, not velocities (sleep_islands.cpp). A
+  // dynamic prop is still when its centre and outline move slower than sleep_speed. So a tire
+  // sleeps only once its deformation has stopped changing, in the shape it would settle to awake:
+  // every preset's sag asleep is its sag awake to 0.15 % at 2–32 substeps. With the speed alone, a
+  // soft preset ringing slowly on its air fell asleep up to 3.7 % off; with 0.25 m/s, which let
+  // level 08's jittering pile sleep under Gauss–Seidel, up to 35 % (docs/at-rest.md).
   double sleep_speed = 0.05;
   double sleep_deform_speed = 0.01;
+  double sleep_deform = 2e-5;
   // How long an island's bodies must all have been still before it sleeps (s): Box2D's
   // b2_timeToSleep.
   double sleep_time = 0.5;

@@ -297,9 +297,9 @@ struct Tire {
   // is how long it has been still (SolverConfig::sleep_speed), counted while it is awake.
   bool asleep = false;
   double still_time = 0.0;
-  Vec2 still_anchor;  // its hub when it last became still
-  Vec2 still_spoke;   // and the direction from its hub to tread particle 0 then (unit)
-  TireId island = 0;  // while asleep: the island it sleeps in (the id of one of its tires)
+  Vec2 still_anchor;            // its hub when it last became still
+  ArrayView<Vec2> still_shape;  // and each particle's offset from that hub then
+  TireId island = 0;            // while asleep: the island it sleeps in (the id of one of its tires)
   // A vehicle's wheel whose motor or lean is at work this tick: not resting, however slowly it moves.
   bool driven = false;
 };
