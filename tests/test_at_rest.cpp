@@ -21,6 +21,25 @@ PropSpec ground_crate() {
   return crate;
 }
 
+// A tire of `spec` (its hub 0.5 m up) resting on flat ground for `ticks` ticks, sleeping off and on:
+// how far its centroid sank in each (the second asleep by then).
+struct Sag {
+  double awake = 0.0, asleep = 0.0;
+};
+Sag sag_awake_and_asleep(const TireSpec& spec, int substeps, int ticks) {
+  double sag[2];
+  for (const bool sleep : {false, true}) {
+    SolverConfig config;
+    config.substeps = substeps;
+    config.sleep = sleep;
+    World world = flat_world(spec, config);
+    run(world, ticks);
+    if (sleep) REQUIRE(world.tires().front().asleep);
+    sag[sleep] = 0.5 - world.tires().front().centroid().y;
+  }
+  return {sag[0], sag[1]};
+}
+
 World crate_on_ground() {
   SolverConfig config;
   config.sleep = false;
@@ -56,11 +75,7 @@ TEST_CASE("at rest: a pile of 60 tires stops moving under the default method", "
 
 TEST_CASE("at rest: a pile of 60 tires falls asleep within 30 s under the default method", "[unit][rest]") {
   World world = pile_of_60({});
-  int ticks = 0;
-  while (ticks < 30 * 60 && world.asleep_count() < world.tires().size()) {
-    world.step({});
-    ++ticks;
-  }
+  const int ticks = run_until_asleep(world, 30 * 60);
   INFO(world.asleep_count() << " of 60 asleep after " << ticks / 60.0 << " s");
   CHECK(world.asleep_count() == world.tires().size());
 }
@@ -74,18 +89,10 @@ TEST_CASE("at rest: a soft tire's sag asleep is its sag awake, at 2, 8 and 32 su
   soft.compliance.spoke = 1e-4;
   soft.compliance.pressure = 1e-3;
   for (const int substeps : {2, 8, 32}) {
-    double sag[2];
-    for (const bool sleep : {false, true}) {
-      SolverConfig config;
-      config.substeps = substeps;
-      config.sleep = sleep;
-      World world = flat_world(soft, config);
-      run(world, 600);
-      if (sleep) REQUIRE(world.tires().front().asleep);
-      sag[sleep] = 0.5 - world.tires().front().centroid().y;
-    }
-    INFO(substeps << " substeps: sag awake " << sag[0] * 1e3 << " mm, asleep " << sag[1] * 1e3 << " mm");
-    CHECK(std::abs(sag[1] - sag[0]) <= 0.01 * sag[0]);
+    const Sag sag = sag_awake_and_asleep(soft, substeps, 600);
+    INFO(substeps << " substeps: sag awake " << sag.awake * 1e3 << " mm, asleep " << sag.asleep * 1e3
+                  << " mm");
+    CHECK(std::abs(sag.asleep - sag.awake) <= 0.01 * sag.awake);
   }
 }
 
@@ -98,19 +105,10 @@ TEST_CASE("at rest: every preset's sag asleep is its sag awake, at 2, 8 and 32 s
     TireSpec spec = tire_at({0, 0.5});
     material.apply_to(spec);
     for (const int substeps : {2, 8, 32}) {
-      double sag[2];
-      for (const bool sleep : {false, true}) {
-        SolverConfig config;
-        config.substeps = substeps;
-        config.sleep = sleep;
-        World world = flat_world(spec, config);
-        run(world, 900);
-        if (sleep) REQUIRE(world.tires().front().asleep);
-        sag[sleep] = 0.5 - world.tires().front().centroid().y;
-      }
-      INFO(material.name << ", " << substeps << " substeps: sag awake " << sag[0] * 1e3 << " mm, asleep "
-                         << sag[1] * 1e3 << " mm");
-      CHECK(std::abs(sag[1] - sag[0]) <= 0.01 * sag[0]);
+      const Sag sag = sag_awake_and_asleep(spec, substeps, 900);
+      INFO(material.name << ", " << substeps << " substeps: sag awake " << sag.awake * 1e3 << " mm, asleep "
+                         << sag.asleep * 1e3 << " mm");
+      CHECK(std::abs(sag.asleep - sag.awake) <= 0.01 * sag.awake);
     }
   }
 }

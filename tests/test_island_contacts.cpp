@@ -211,11 +211,7 @@ TEST_CASE("island: a pile of 60 slick tires comes to rest at its own substeps",
 
   // With sleeping on, it sleeps (it did not within 40 s).
   World sleeping = pile_of_60(island_config(), find_material("slick"));
-  int ticks = 0;
-  while (ticks < 30 * 60 && sleeping.asleep_count() < sleeping.tires().size()) {
-    sleeping.step({});
-    ++ticks;
-  }
+  const int ticks = run_until_asleep(sleeping, 30 * 60);
   INFO(sleeping.asleep_count() << " of 60 asleep after " << ticks / 60.0 << " s");
   CHECK(sleeping.asleep_count() == sleeping.tires().size());
 }
@@ -226,11 +222,7 @@ TEST_CASE("island: a pile of 60 tires falls asleep", "[unit][island][rest][sleep
   // substep rate: 0 of 60 asleep after 30 s. Loaded with their neighbours' last forces, all sleep
   // at 3.2 s (docs/at-rest.md).
   World world = pile_of_60(island_config());
-  int ticks = 0;
-  while (ticks < 10 * 60 && world.asleep_count() < world.tires().size()) {
-    world.step({});
-    ++ticks;
-  }
+  const int ticks = run_until_asleep(world, 10 * 60);
   INFO(world.asleep_count() << " of 60 asleep after " << ticks / 60.0 << " s");
   CHECK(world.asleep_count() == world.tires().size());
   const IslandContacts::Work& work = world.island_work();

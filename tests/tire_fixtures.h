@@ -56,6 +56,16 @@ inline void tick_lone_tire(Tire& t, RigidWorld& rigid, const SolverConfig& confi
   rigid.end_tick(config.dt);
 }
 
+// Steps the world until every tire sleeps, for at most `most` ticks: the ticks it took.
+inline int run_until_asleep(World& world, int most) {
+  int ticks = 0;
+  while (ticks < most && world.asleep_count() < world.tires().size()) {
+    world.step({});
+    ++ticks;
+  }
+  return ticks;
+}
+
 // 60 tires dropped in rows of five into a 6 m box (docs/at-rest.md's pile of 60), in a material
 // (the default's if null).
 inline World pile_of_60(const SolverConfig& config, const Material* material = nullptr) {
