@@ -31,8 +31,7 @@ void turn_velocities(Tire& t, double h) {
   const double cos_theta = std::sqrt(1.0 - sin_theta * sin_theta);
   for (std::size_t i = 0; i < t.particles.size(); ++i) {
     const Vec2 u = t.particles.v[i] - m.velocity;
-    t.particles.v[i] =
-        m.velocity + Vec2{cos_theta * u.x - sin_theta * u.y, sin_theta * u.x + cos_theta * u.y};
+    t.particles.v[i] = m.velocity + rotate(u, cos_theta, sin_theta);
   }
 }
 

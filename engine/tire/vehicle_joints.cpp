@@ -281,9 +281,7 @@ void VehicleJoints::turn_orbits(Vehicle& v, std::vector<Tire>& tires, RigidWorld
   const double sin_theta = std::clamp(moment / inertia * h, -1.0, 1.0);
   if (sin_theta == 0.0) return;
   const double cos_theta = std::sqrt(1.0 - sin_theta * sin_theta);
-  const auto turned = [&](Vec2 u) {
-    return Vec2{cos_theta * u.x - sin_theta * u.y, sin_theta * u.x + cos_theta * u.y};
-  };
+  const auto turned = [&](Vec2 u) { return rotate(u, cos_theta, sin_theta); };
   for (std::size_t b = 0; b < count; ++b) {
     const Vec2 u = bodies[b].v - velocity;
     const Vec2 dv = turned(u) - u;

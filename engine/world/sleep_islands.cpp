@@ -45,8 +45,7 @@ ShapeChange shape_change(const Tire& t, Vec2 hub) {
   const double cos_t = c / norm, sin_t = s / norm;
   double left2 = 0.0;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    const Vec2 q = t.still_shape[k];
-    left2 += length_squared(p.x[k] - hub - Vec2{cos_t * q.x - sin_t * q.y, sin_t * q.x + cos_t * q.y});
+    left2 += length_squared(p.x[k] - hub - rotate(t.still_shape[k], cos_t, sin_t));
   }
   return {tire::atan2(s, c), std::sqrt(left2 / static_cast<double>(p.size()))};
 }

@@ -48,6 +48,8 @@ constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 // a rotated by +90 degrees (counter-clockwise).
 constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
+// v turned counter-clockwise by the angle whose cosine and sine are c and s.
+constexpr Vec2 rotate(Vec2 v, double c, double s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 constexpr double length_squared(Vec2 a) { return dot(a, a); }
 inline double length(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
@@ -99,7 +101,7 @@ struct Pose {
     const Vec2 d = world - position;
     return {cos_a * d.x + sin_a * d.y, -sin_a * d.x + cos_a * d.y};
   }
-  Vec2 rotate(Vec2 v) const { return {cos_a * v.x - sin_a * v.y, sin_a * v.x + cos_a * v.y}; }
+  Vec2 rotate(Vec2 v) const { return tire::rotate(v, cos_a, sin_a); }
   // The world box around the local box `local` placed at this pose: its four corners, moved.
   Aabb to_world(const Aabb& local) const {
     const Vec2 corners[4] = {to_world(local.min), to_world({local.max.x, local.min.y}), to_world(local.max),
