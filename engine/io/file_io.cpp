@@ -334,6 +334,12 @@ std::string printable(std::string_view text) {
   return out;
 }
 
+bool is_lowercase_hex(std::string_view text, std::size_t digits) {
+  return text.size() == digits && std::all_of(text.begin(), text.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
+}
+
 std::string sha256_hex(std::string_view bytes) {
 #ifdef TIRE_HAVE_OPENSSL
   unsigned char digest[EVP_MAX_MD_SIZE];

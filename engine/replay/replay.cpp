@@ -28,12 +28,6 @@ constexpr std::size_t kMaxRestarts = 10'000;
 constexpr JsonBudget kReplayBudget{LevelLimits::max_depth, ReplayLimits::max_json_values,
                                    LevelLimits::max_string_bytes, "a replay"};
 
-bool is_hex(const std::string& s, std::size_t length) {
-  return s.size() == length && std::all_of(s.begin(), s.end(), [](char c) {
-           return std::isdigit(static_cast<unsigned char>(c)) || (c >= 'a' && c <= 'f');
-         });
-}
-
 // A tick: an integer in [0, max].
 std::uint64_t read_tick(JsonReader& r, const json& j, const std::string& path, std::uint64_t max, bool& ok) {
   const std::string p = join_path(path, "tick");
@@ -122,7 +116,7 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
   if (!r.object(j, path, {"status", "checkpoints", "hash", "boxes"})) return e;
   if (j.contains("status")) e.status = r.choice(j, path, "status", "running", {"running", "won", "lost"});
   if (j.contains("hash")) {
-    if (!j["hash"].is_string() || !is_hex(j["hash"].get<std::string>(), 16))
+    if (!j["hash"].is_string() || !is_lowercase_hex(j["hash"].get<std::string>(), 16))
       r.fail(path + "/hash", "must be 16 lowercase hex digits, got " + JsonReader::describe(j["hash"]));
     else
       e.hash = j["hash"].get<std::string>();
@@ -139,7 +133,7 @@ ReplayExpect read_expect(JsonReader& r, const json& j, const std::string& path, 
       if (ok && i > 0 && cp.tick <= previous)
         r.fail(p + "/tick", "must be after the previous checkpoint's tick " + std::to_string(previous) +
                                 ", got " + std::to_string(cp.tick));
-      if (!cp.hash.empty() && !is_hex(cp.hash, 16))
+      if (!cp.hash.empty() && !is_lowercase_hex(cp.hash, 16))
         r.fail(p + "/hash", "must be 16 lowercase hex digits, got \"" + printable(cp.hash) + "\"");
       previous = cp.tick;
       e.checkpoints.push_back(cp);
@@ -193,7 +187,7 @@ std::optional<Replay> read_replay(const json& doc, std::vector<JsonIssue>& issue
            "\"../levels/01-first-roll.json\"), got " +
                JsonReader::describe(*it));
   replay.level_sha256 = r.string(doc, "", "level_sha256", "", 64, true);
-  if (doc.contains("level_sha256") && !is_hex(replay.level_sha256, 64))
+  if (doc.contains("level_sha256") && !is_lowercase_hex(replay.level_sha256, 64))
     r.fail("/level_sha256", "must be 64 lowercase hex digits (SHA-256 of the level file), got " +
                                 JsonReader::describe(doc["level_sha256"]));
   replay.ticks =

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "progress/progress.h"
+
 namespace game {
 
 namespace {
@@ -62,7 +64,8 @@ MenuChoice draw_level_menu(const std::vector<LevelEntry>& levels, const std::vec
       std::string label = e.path.filename().string() + "   " + (e.valid ? e.name : "(does not load)");
       const std::string note = i < notes.size() ? notes[i] : "";
       if (!note.empty()) label += "   (" + note + ")";
-      if (e.medals && !note.starts_with("best")) {  // not won yet: the time to win within for gold
+      // Not won yet (or only on an earlier version of the level): the time to win within for gold.
+      if (e.medals && (!note.starts_with("best") || note.ends_with(kEarlierVersion))) {
         char gold[64];
         std::snprintf(gold, sizeof gold, "   gold within %.2f s", e.medals->gold);
         label += gold;

@@ -30,6 +30,7 @@ void BestRuns::level_started(const std::string& level_path, std::shared_ptr<cons
   if (!enabled_) return;
   const std::string key = level_key(levels_dir_, level_path);
   const std::string sha = level_file_sha256(level_path);
+  level_sha256_ = sha;
   if (key == key_ && sha == sha_) {
     ghost_.sync(0);  // a restart: the ghost starts over with the player
     return;
@@ -57,7 +58,7 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
   const std::string key = key_;
   const LevelRecord* known = progress_.find(key);
   const std::optional<LevelRecord> before = known ? std::optional<LevelRecord>(*known) : std::nullopt;
-  const bool faster = progress_.record(key, won, time, ticks, r.medal);
+  const bool faster = progress_.record(key, level_sha256_, won, time, ticks, r.medal);
   ++writes_;
   if (const std::string err = progress_.save(); !err.empty()) {
     // Not saved: the record goes back to what the file holds, and no new best is claimed.
@@ -65,8 +66,9 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
     messages.push_back("cannot save the progress to " + tire::printable(progress_.file().string()) + ": " +
                        err + (faster ? "; this best time is not kept" : ""));
     if (won)
-      r.note = faster ? "best time not saved: the progress file cannot be written"
-                      : format_record(progress_.find(key));
+      r.note =
+          faster ? "best time not saved: the progress file cannot be written"
+                 : format_record(before ? &*before : nullptr, before && !of_version(*before, level_sha256_));
     last_ = r;
     return r;
   }
@@ -87,14 +89,30 @@ RunResult BestRuns::finished(bool won, double time, std::uint64_t ticks, bool re
   return r;
 }
 
+const std::string& BestRuns::file_sha256(const std::filesystem::path& level_file) const {
+  FileHash& known = file_hashes_[level_file.string()];
+  std::error_code ec;
+  const std::filesystem::file_time_type changed = std::filesystem::last_write_time(level_file, ec);
+  const std::uintmax_t size = ec ? 0 : std::filesystem::file_size(level_file, ec);
+  if (ec || known.sha256.empty() || changed != known.changed || size != known.size)
+    known = {changed, size, level_file_sha256(level_file)};
+  return known.sha256;
+}
+
+std::pair<const LevelRecord*, bool> BestRuns::record_of(const std::filesystem::path& level_file) const {
+  const LevelRecord* r = enabled_ ? progress_.find(level_key(levels_dir_, level_file)) : nullptr;
+  return {r, r && of_version(*r, file_sha256(level_file))};
+}
+
 std::string BestRuns::note(const std::filesystem::path& level_file) const {
-  if (!enabled_) return "";
-  return format_record(progress_.find(level_key(levels_dir_, level_file)));
+  const auto [r, current] = record_of(level_file);
+  return format_record(r, !current);
 }
 
 std::string BestRuns::target(const std::filesystem::path& level_file,
                              const std::optional<tire::LevelMedals>& medals) const {
-  const LevelRecord* r = enabled_ ? progress_.find(level_key(levels_dir_, level_file)) : nullptr;
+  auto [r, current] = record_of(level_file);
+  if (!current) r = nullptr;
   std::string out = r && r->won ? format_record(r) : "";
   const tire::Medal have = r && r->won ? r->medal : tire::Medal::none;
   const tire::Medal next = have == tire::Medal::none ? tire::Medal::gold : tire::next_medal(have);
@@ -113,8 +131,9 @@ nlohmann::json BestRuns::summary(const std::string& level_path) const {
   const std::string key = level_key(levels_dir_, level_path);
   out["file"] = progress_.file().string();
   out["level"] = key;
-  const LevelRecord* r = progress_.find(key);
+  const auto [r, current] = record_of(level_path);
   out["won"] = r && r->won;
+  out["of_this_version"] = current;
   out["best_time"] = r && r->won ? nlohmann::json(r->best_time) : nlohmann::json(nullptr);
   out["menu"] = note(level_path);
   if (last_)

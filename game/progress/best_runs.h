@@ -5,10 +5,12 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "play/session_recorder.h"
@@ -49,10 +51,12 @@ class BestRuns {
   // browser build copies the data folder to the page's IndexedDB when it changes.
   std::uint64_t writes() const { return writes_; }
 
-  // The menu's note for a level file: "best 9.85 s", "not won yet" or "".
+  // The menu's note for a level file: "best 9.85 s", "not won yet" or "" (with "on an earlier
+  // version" or "not won since it changed" once the file has changed since its record).
   std::string note(const std::filesystem::path& level_file) const;
   // The HUD's time to beat: the best ("best 9.85 s, silver") and, in a level with `medals`, the
-  // next medal's time ("gold within 7.00 s"; gold's before any medal); "" for neither.
+  // next medal's time ("gold within 7.00 s"; gold's before any medal); "" for neither. A record of
+  // an earlier version of the level is no time to beat.
   std::string target(const std::filesystem::path& level_file,
                      const std::optional<tire::LevelMedals>& medals) const;
   Ghost& ghost() { return ghost_; }
@@ -62,15 +66,28 @@ class BestRuns {
   nlohmann::json summary(const std::string& level_path) const;
 
  private:
+  // Level `level_file`'s record and whether it is of the file as it is now (nullptr: none).
+  std::pair<const LevelRecord*, bool> record_of(const std::filesystem::path& level_file) const;
+  // The SHA-256 of a level file's bytes, read again only when its size or time of change moves
+  // (the menu asks for every level each frame).
+  const std::string& file_sha256(const std::filesystem::path& level_file) const;
+  struct FileHash {
+    std::filesystem::file_time_type changed;
+    std::uintmax_t size = 0;
+    std::string sha256;
+  };
+
   bool enabled_ = false;
   std::filesystem::path levels_dir_;
   Progress progress_;
   Ghost ghost_;
   std::string key_, sha_;                    // the level the ghost was loaded for
+  std::string level_sha256_;                 // the current level's file, as it was started
   std::optional<tire::LevelMedals> medals_;  // the current level's
   double dt_ = 0.0;                          // and its tick
   std::optional<RunResult> last_;
   std::uint64_t writes_ = 0;
+  mutable std::map<std::string, FileHash> file_hashes_;
 };
 
 }  // namespace game

@@ -50,13 +50,18 @@ std::string level_key(const std::filesystem::path& levels_dir, const std::filesy
   return file.generic_string();
 }
 
-std::string format_record(const LevelRecord* record) {
+bool of_version(const LevelRecord& record, const std::string& level_sha256) {
+  return !record.level_sha256.empty() && record.level_sha256 == level_sha256;
+}
+
+std::string format_record(const LevelRecord* record, bool earlier) {
   if (!record) return "";
-  if (!record->won) return "not won yet";
+  if (!record->won) return earlier ? "not won since it changed" : "not won yet";
   char text[64];
   std::snprintf(text, sizeof text, "best %.2f s", record->best_time);
-  if (record->medal == tire::Medal::none) return text;
-  return std::string(text) + ", " + std::string(tire::medal_name(record->medal));
+  std::string out = text;
+  if (record->medal != tire::Medal::none) out += ", " + std::string(tire::medal_name(record->medal));
+  return earlier ? out + kEarlierVersion : out;
 }
 
 std::optional<std::map<std::string, LevelRecord>> Progress::parse(const std::string& text,
@@ -118,6 +123,13 @@ std::optional<std::map<std::string, LevelRecord>> Progress::parse(const std::str
         r.medal = *m;
       }
     }
+    if (const auto sha = entry.find("level_sha256"); sha != entry.end()) {
+      if (!sha->is_string() || !tire::is_lowercase_hex(sha->get<std::string>(), 64)) {
+        error = path + "/level_sha256: must be 64 lowercase hex digits";
+        return std::nullopt;
+      }
+      r.level_sha256 = sha->get<std::string>();
+    }
     out[key] = r;
   }
   return out;
@@ -157,6 +169,7 @@ std::string Progress::to_json() const {
       entry["best_ticks"] = r.best_ticks;
       if (r.medal != tire::Medal::none) entry["medal"] = tire::medal_name(r.medal);
     }
+    if (!r.level_sha256.empty()) entry["level_sha256"] = r.level_sha256;
     levels[key] = entry;
   }
   return nlohmann::json{{"format", kProgressFormat}, {"levels", levels}}.dump(2) + "\n";
@@ -167,8 +180,10 @@ const LevelRecord* Progress::find(const std::string& key) const {
   return it == levels_.end() ? nullptr : &it->second;
 }
 
-bool Progress::record(const std::string& key, bool won, double time, std::uint64_t ticks, tire::Medal medal) {
+bool Progress::record(const std::string& key, const std::string& level_sha256, bool won, double time,
+                      std::uint64_t ticks, tire::Medal medal) {
   LevelRecord& r = levels_[key];
+  if (!of_version(r, level_sha256)) r = LevelRecord{.level_sha256 = level_sha256};  // the level changed
   if (!won) return false;
   const bool best = !r.won || time < r.best_time;
   if (best) {
@@ -176,8 +191,7 @@ bool Progress::record(const std::string& key, bool won, double time, std::uint64
     r.best_time = time;
     r.best_ticks = ticks;
   }
-  r.medal =
-      std::max(r.medal, medal);  // a slower win earns a medal the best did not when the level's times change
+  r.medal = std::max(r.medal, medal);
   return best;
 }
 

@@ -2,11 +2,13 @@
 // progress.json in the user's data folder ($XDG_DATA_HOME/soft-tire/, else
 // $HOME/.local/share/soft-tire/). A level is keyed by its file's path relative to the levels
 // folder ("01-first-roll.json"; a level from elsewhere by its absolute path), so that renaming a
-// level inside the file keeps its record and two levels of the same name do not share one.
+// level inside the file keeps its record and two levels of the same name do not share one. A record
+// holds the SHA-256 of the level file it was made on: once the file changes, its times are of an
+// earlier version of the level, shown as such, and the next finished run starts a new record.
 //
 //   { "format": "soft-tire-progress/1",
 //     "levels": { "01-first-roll.json": { "won": true, "best_time": 9.85, "best_ticks": 591,
-//                                         "medal": "gold" } } }
+//                                         "medal": "gold", "level_sha256": "3f0c…" } } }
 //
 // The file is written atomically (tire::write_file_atomically). A damaged one (not JSON, cut short,
 // wrong types) is reported, renamed to progress.json.damaged, and the game starts with none.
@@ -34,7 +36,12 @@ struct LevelRecord {
   double best_time = 0.0;                 // s of simulated time, when won
   std::uint64_t best_ticks = 0;           // the same in ticks
   tire::Medal medal = tire::Medal::none;  // the best medal a win earned (levels/README.md, "medals")
+  std::string level_sha256;               // the level file's, lowercase hex; "" in a record from before
 };
+
+// Whether `record` was made on the level file whose bytes hash to `level_sha256` (a record that
+// does not say which file it was made on is not).
+bool of_version(const LevelRecord& record, const std::string& level_sha256);
 
 // The data folder from the environment: $XDG_DATA_HOME/soft-tire (when set and absolute), else
 // $HOME/.local/share/soft-tire; nullopt when neither is set.
@@ -49,8 +56,10 @@ std::string unusable_data_dir(const std::filesystem::path& dir);
 std::string level_key(const std::filesystem::path& levels_dir, const std::filesystem::path& level_file);
 
 // "best 9.85 s" for a won level ("best 9.85 s, gold" with a medal), "not won yet" for one played but
-// not won, "" for none.
-std::string format_record(const LevelRecord* record);
+// not won, "" for none. A record of an earlier version of the level (`earlier`) says so: "best 9.85 s
+// on an earlier version", "not won since it changed".
+std::string format_record(const LevelRecord* record, bool earlier = false);
+inline constexpr const char* kEarlierVersion = " on an earlier version";
 
 class Progress {
  public:
@@ -62,10 +71,11 @@ class Progress {
   std::string to_json() const;
 
   const LevelRecord* find(const std::string& key) const;
-  // A finished run of level `key`, and the medal it earned; true when it is a win faster than the
-  // best so far (or the first win). The record keeps the best medal won.
-  bool record(const std::string& key, bool won, double time, std::uint64_t ticks,
-              tire::Medal medal = tire::Medal::none);
+  // A finished run of level `key` (its file's bytes hashing to `level_sha256`), and the medal it
+  // earned; true when it is a win faster than the best so far on this version of the level (or the
+  // first win on it). The record keeps the best medal won; a record of another version starts over.
+  bool record(const std::string& key, const std::string& level_sha256, bool won, double time,
+              std::uint64_t ticks, tire::Medal medal = tire::Medal::none);
   // Puts level `key`'s record back as it was before record() (nullopt: none): after a save that
   // failed, what the game shows stays what the file holds.
   void restore(const std::string& key, const std::optional<LevelRecord>& before);

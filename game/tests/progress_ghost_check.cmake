@@ -4,7 +4,8 @@
 #    time, the exit summary reports the menu's note with it, and a slower win after it is no best;
 #  - the next run shows the ghost: loaded, and, played with the very inputs of the best run, exactly
 #    where the player is (replays are bit-exact); a run starting later has the ghost ahead of it;
-#  - the level file changed: the ghost is dropped with a message;
+#  - the level file changed: the ghost is dropped with a message, the best time is shown as the
+#    earlier version's, and a slower win on the new version is its best;
 #  - a truncated or mistyped progress.json is reported, set aside, and the game starts (exit 0).
 #   cmake -DGAME=tire-game -DLEVEL=levels/01-first-roll.json -DWORK=dir [-DSHOT=ghost.bmp] -P progress_ghost_check.cmake
 file(REMOVE_RECURSE "${WORK}")
@@ -107,6 +108,20 @@ play(changed err --frames 10)
 expect("${changed}" OFF progress ghost loaded)
 if(NOT err MATCHES "ghost dropped: the level changed")
   message(FATAL_ERROR "no message about the dropped ghost:\n${err}")
+endif()
+# Its best time is of the earlier version: the menu says so, and a slower win is the new best.
+expect("${changed}" OFF progress of_this_version)
+string(JSON menu GET "${changed}" progress menu)
+if(NOT menu MATCHES "^best [0-9]+\\.[0-9][0-9] s, gold on an earlier version$")
+  message(FATAL_ERROR "the menu's note for the changed level is '${menu}', expected 'best N.NN s, gold on an earlier version'")
+endif()
+play(rewon err --frames 900 --press right:60-899)
+expect("${rewon}" ON progress run new_best)
+expect("${rewon}" ON progress of_this_version)
+expect("${rewon}" "${slow_time}" progress best_time)
+string(JSON menu GET "${rewon}" progress menu)
+if(NOT menu MATCHES "^best [0-9]+\\.[0-9][0-9] s, silver$")
+  message(FATAL_ERROR "after a win on the changed level the menu shows '${menu}', expected 'best N.NN s, silver'")
 endif()
 
 # 5. A damaged progress.json: reported (naming the file and what is wrong), set aside, the game starts.

@@ -54,14 +54,18 @@ TEST_CASE("the stick steers nothing inside its dead zone and exactly 1 at full t
   CHECK(half < 0.6);
 }
 
+namespace {
+const std::string kShaA(64, 'a'), kShaB(64, 'b');
+}  // namespace
+
 TEST_CASE("a faster win is a new best time and a slower one is not", "[unit][game]") {
   Progress p;
-  CHECK_FALSE(p.record("a.json", false, 3.0, 180));
+  CHECK_FALSE(p.record("a.json", kShaA, false, 3.0, 180));
   REQUIRE(p.find("a.json"));
   CHECK(format_record(p.find("a.json")) == "not won yet");
-  CHECK(p.record("a.json", true, 10.0, 600));
-  CHECK(p.record("a.json", true, 9.5, 570));
-  CHECK_FALSE(p.record("a.json", true, 9.9, 594));
+  CHECK(p.record("a.json", kShaA, true, 10.0, 600));
+  CHECK(p.record("a.json", kShaA, true, 9.5, 570));
+  CHECK_FALSE(p.record("a.json", kShaA, true, 9.9, 594));
   CHECK(p.find("a.json")->best_ticks == 570);
   CHECK(format_record(p.find("a.json")) == "best 9.50 s");
   CHECK(format_record(nullptr).empty());
@@ -74,11 +78,11 @@ TEST_CASE("a faster win is a new best time and a slower one is not", "[unit][gam
 
 TEST_CASE("the best medal won is kept with the best time", "[unit][game]") {
   Progress p;
-  CHECK(p.record("a.json", true, 20.0, 1200, tire::Medal::bronze));
+  CHECK(p.record("a.json", kShaA, true, 20.0, 1200, tire::Medal::bronze));
   CHECK(format_record(p.find("a.json")) == "best 20.00 s, bronze");
-  CHECK(p.record("a.json", true, 9.5, 570, tire::Medal::gold));
-  // Slower, and with no medal (the level's times were made harder): the gold won stays.
-  CHECK_FALSE(p.record("a.json", true, 12.0, 720, tire::Medal::none));
+  CHECK(p.record("a.json", kShaA, true, 9.5, 570, tire::Medal::gold));
+  // Slower, and with no medal: the gold won stays.
+  CHECK_FALSE(p.record("a.json", kShaA, true, 12.0, 720, tire::Medal::none));
   CHECK(p.find("a.json")->medal == tire::Medal::gold);
   CHECK(format_record(p.find("a.json")) == "best 9.50 s, gold");
   std::string error;
@@ -91,6 +95,36 @@ TEST_CASE("the best medal won is kept with the best time", "[unit][game]") {
       error);
   REQUIRE(old);
   CHECK(old->at("a.json").medal == tire::Medal::none);
+}
+
+TEST_CASE("a level that changed since its record shows it as an earlier version's and starts a new one",
+          "[unit][game]") {
+  Progress p;
+  CHECK(p.record("a.json", kShaA, true, 6.88, 413, tire::Medal::gold));
+  const LevelRecord* r = p.find("a.json");
+  REQUIRE(r);
+  CHECK(of_version(*r, kShaA));
+  CHECK_FALSE(of_version(*r, kShaB));
+  CHECK(format_record(r, true) == "best 6.88 s, gold on an earlier version");
+  std::string error;
+  const auto back = Progress::parse(p.to_json(), error);
+  REQUIRE(back);
+  CHECK(back->at("a.json").level_sha256 == kShaA);
+  // The file changed: a slower win on it is its first, with the medal it earns there.
+  CHECK(p.record("a.json", kShaB, true, 10.0, 600, tire::Medal::silver));
+  CHECK(p.find("a.json")->best_time == 10.0);
+  CHECK(p.find("a.json")->medal == tire::Medal::silver);
+  CHECK(of_version(*p.find("a.json"), kShaB));
+  // A loss on a changed level: not won on it yet.
+  CHECK_FALSE(p.record("a.json", kShaA, false, 3.0, 180));
+  CHECK_FALSE(p.find("a.json")->won);
+  CHECK(format_record(p.find("a.json"), true) == "not won since it changed");
+  // A record from before levels' hashes were kept is of no known version.
+  const auto old = Progress::parse(
+      R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": 9, "best_ticks": 540}}})",
+      error);
+  REQUIRE(old);
+  CHECK_FALSE(of_version(old->at("a.json"), kShaA));
 }
 
 TEST_CASE("a damaged progress file is an error naming what is wrong", "[unit][game]") {
@@ -107,6 +141,8 @@ TEST_CASE("a damaged progress file is an error naming what is wrong", "[unit][ga
        "/levels/a.json/best_ticks"},
       {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": true, "best_time": 9, "best_ticks": 540, "medal": "platinum"}}})",
        "/levels/a.json/medal"},
+      {R"({"format": "soft-tire-progress/1", "levels": {"a.json": {"won": false, "level_sha256": "ABC"}}})",
+       "/levels/a.json/level_sha256: must be 64 lowercase hex digits"},
   };
   for (const auto& [text, what] : cases) {
     std::string error;

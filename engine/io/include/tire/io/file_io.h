@@ -57,4 +57,7 @@ std::string printable(std::string_view text);
 // OpenSSL, as in the browser).
 std::string sha256_hex(std::string_view bytes);
 
+// Whether `text` is `digits` lowercase hex digits, as sha256_hex (64) and the state hash (16) write.
+bool is_lowercase_hex(std::string_view text, std::size_t digits);
+
 }  // namespace tire
