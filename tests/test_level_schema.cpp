@@ -463,6 +463,7 @@ std::map<std::string, std::map<std::string, json>> engine_defaults() {
         {"island_tires", s.island_tires},
         {"method", method_name(s.method)},
         {"sleep", s.sleep},
+        {"rolling_hold", s.rolling_hold},
         {"restitution_threshold", s.restitution_threshold}}},
       {"tire",
        {{"velocity", vec(t.velocity)},

@@ -205,6 +205,10 @@ std::vector<LevelKey> solver_keys() {
           .by_default(method_name(solver.method)),
       Key("sleep", T::boolean, "resting tires sleep; false simulates every body every tick")
           .by_default(solver.sleep),
+      Key("rolling_hold", T::boolean,
+          "the global method holds a lone tire's roll where rolling resistance stopped it, up to "
+          "C_rr N R: it stays put on a slope gentler than its rolling_resistance")
+          .by_default(solver.rolling_hold),
   });
 }
 

@@ -43,6 +43,7 @@ SolverConfig read_solver(JsonReader& r, const json& j, const std::string& path) 
   const LevelKey& method = level_key(O::solver, "method");
   s.method = kSolverMethods[read_choice_index(r, j, path, method, static_cast<std::size_t>(s.method))];
   s.sleep = read_boolean(r, j, path, level_key(O::solver, "sleep"), s.sleep);
+  s.rolling_hold = read_boolean(r, j, path, level_key(O::solver, "rolling_hold"), s.rolling_hold);
   s.dt = read_number(r, j, path, level_key(O::solver, "dt"), s.dt);
   s.substeps = read_integer(r, j, path, level_key(O::solver, "substeps"), s.substeps);
   s.iterations = read_integer(r, j, path, level_key(O::solver, "iterations"), s.iterations);

@@ -8,6 +8,7 @@
 #include "tire/math/check.h"
 #include "tire/math/dense_solve.h"
 #include "tire/math/trig.h"
+#include "tire/math/turn.h"
 #include "tire/tire/tire_solver.h"
 #include "tire/xpbd/contact.h"
 
@@ -116,7 +117,7 @@ void GlobalSolver::reserve(std::uint32_t segments) {
   contacts_.reserve(2 * std::size_t{segments});
   contact_of_.assign(2 * std::size_t{segments}, -1);
   depth_.assign(2 * std::size_t{segments}, 0.0);
-  gradient_.assign(segments, Vec2{});
+  gradient_.assign(2 * std::size_t{segments}, Vec2{});  // a ring's area, or the whole tire's turn
   links_.reserve(kMaxLinksPerSegment * std::size_t{segments});
 }
 
@@ -230,6 +231,32 @@ void GlobalSolver::add_ring_area_row(const Tire& t, const SubstepContext& ctx, b
   Row row;
   row.alpha_tilde = c.compliance / (ctx.h * ctx.h) / (1.0 + gamma);
   row.b = -(value + gamma * rate) / (1.0 + gamma);
+  rows_.push_back(row);
+}
+
+void GlobalSolver::add_rolling_row(const Tire& t) {
+  const Particles& p = t.particles;
+  const std::uint32_t count = t.particle_count();
+  const std::span<Vec2> turn(gradient_.data(), count);  // the particles weigh the same (Tire)
+  if (!turn_gradient({p.x_prev.data(), count}, turn)) return;
+  double* g = gradient_of(rows_.size());
+  std::fill(g, g + CyclicBlockCholesky::kBlock * t.n, 0.0);
+  double predicted = 0.0;  // C(x̃): the turn the prediction makes
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::size_t d = GlobalSolver::dof(i, t.n);
+    g[d] = turn[i].x;
+    g[d + 1] = turn[i].y;
+    predicted += dot(turn[i], p.x[i] - p.x_prev[i]);
+  }
+  Row row;
+  // As stiff as a rigid contact at the tread: a turn δθ moves the tread by R δθ.
+  const double radius = t.spec.outer_radius;
+  row.alpha_tilde = rigid_alpha_tilde_ / (radius * radius);
+  row.b = -predicted;
+  rolling_row_ = static_cast<std::int32_t>(rows_.size());
+  // Its multiplier is the moment that holds the roll times h² (kg m²), a contact's μ_n its normal
+  // force times h² (kg m): the bound C_rr N R h² is C_rr R Σ μ_n.
+  rolling_bound_ = t.spec.rolling_resistance * radius;
   rows_.push_back(row);
 }
 
@@ -501,7 +528,8 @@ bool GlobalSolver::solve_pass(const Tire& t) {
 
 std::int32_t GlobalSolver::add_contact_row(const Tire& t, const Contact& c, Vec2 d, double target,
                                            double stiffness) {
-  if (rows_.size() == kMaxRows) return -1;
+  // The roll's row has a place of its own: a tire without it has the room it always had.
+  if (rows_.size() == kMaxRows - (rolling_row_ >= 0 ? 0 : 1)) return -1;
   const std::size_t r = rows_.size();
   double* y = y_.data() + r * stride_;
   std::fill(y, y + CyclicBlockCholesky::kBlock * t.n, 0.0);
@@ -654,6 +682,18 @@ bool GlobalSolver::solve_system(const Tire& t) {
 
 bool GlobalSolver::update_active_set(const Tire& t, const SubstepContext& ctx) {
   bool changed = false;
+  if (rolling_row_ >= 0 && rows_[static_cast<std::size_t>(rolling_row_)].live) {
+    // Rolling resistance holds the roll up to C_rr·N·R (Coulomb's law for the roll): past it, the
+    // row lets go and the velocity pass's moment slows the turn instead.
+    double normal = 0.0;
+    for (const Contact& c : contacts_)
+      if (c.normal_active && c.mu_n > 0.0) normal += c.mu_n;
+    Row& roll = rows_[static_cast<std::size_t>(rolling_row_)];
+    if (std::abs(roll.mu) > rolling_bound_ * normal) {
+      roll.live = false;
+      changed = true;
+    }
+  }
   for (Contact& c : contacts_) {
     if (c.normal_active) {
       if (c.mu_n < 0.0) {  // the surface would pull: let go
@@ -709,6 +749,17 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
       rows_.push_back(row);
     }
   }
+  // Only for a tire that touches no other tire this tick: an island moves its tires through their
+  // responses to its contacts, which would hold the roll there with no bound, and block
+  // Gauss–Seidel hands a tire pushes after its solve, which the bound never sees. A pile's tires keep
+  // the velocity pass's rolling resistance alone (docs/at-rest.md, "Still open").
+  rolling_row_ = -1;
+  const bool alone =
+      ctx.island == nullptr &&
+      (ctx.neighbours == nullptr || ctx.neighbours->neighbours(ctx.neighbours->index_of(t)).empty());
+  if (ctx.config->rolling_hold && alone && t.rolling_held && t.spec.rolling_resistance > 0.0 && !t.grabbed &&
+      t.control.steer == 0.0 && !t.driven && t.wheel < 0)
+    add_rolling_row(t);
   base_rows_ = rows_.size();
   // Contacts held at the end of the substep's previous iteration stay in (their plane and whether
   // they stuck), so a resting tire does not lose its support between iterations.

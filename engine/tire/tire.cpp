@@ -99,6 +99,7 @@ void Tire::reset() {
   std::fill(anchor_on.begin(), anchor_on.end(), kNoAnchor);
   air_time = std::numeric_limits<double>::infinity();
   spin_as_built = spec.angular_velocity != 0.0;
+  rolling_held = false;
   late_push = {};
   predicted_push = {};
   distance.reset_lambda();

@@ -151,7 +151,10 @@ void damp_deviation(Tire& t, const RigidMotion& m, double damping, double h) {
 // contact normal force, Σ m·λ_n/h² (λ_n kept as a distance, see contact.h). Applied as a change
 // of the rigid angular velocity about the hub, Δv_i = Δω × r_i: a pure moment, no net force; the
 // ground's friction then passes it on to the tire's motion, as it does for a real tire.
+// When the moment stops the spin within the substep, the tire is held (Tire::rolling_held): the
+// global method's next position solve keeps its roll there too, up to the same moment.
 void apply_rolling_resistance(Tire& t, RigidMotion& m, double h) {
+  t.rolling_held = false;
   if (t.spec.rolling_resistance <= 0.0 || m.inertia <= 0.0) return;
   // Σ over the tread, in particle order; the records not written this substep hold λ_n = 0.
   double lambda_sum = 0.0;
@@ -161,7 +164,8 @@ void apply_rolling_resistance(Tire& t, RigidMotion& m, double h) {
   if (lambda_sum <= 0.0) return;
   const double normal_force = t.particle_mass() * lambda_sum / (h * h);
   const double max_change = t.spec.rolling_resistance * normal_force * t.spec.outer_radius * h / m.inertia;
-  const double change = std::abs(m.omega) <= max_change ? -m.omega : -std::copysign(max_change, m.omega);
+  t.rolling_held = std::abs(m.omega) <= max_change;
+  const double change = t.rolling_held ? -m.omega : -std::copysign(max_change, m.omega);
   for (std::size_t i = 0; i < t.particles.size(); ++i)
     t.particles.v[i] += perp(t.particles.x[i] - m.centroid) * change;
   m.omega += change;

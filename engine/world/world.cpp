@@ -1021,6 +1021,7 @@ void World::hash_into(StateHash& h) const {
     h.add(t.late_push.spin);
     h.add(t.late_push.centre);
     if (t.spin_as_built) h.add(t.spin_as_built);              // only until its first prediction
+    if (config_.rolling_hold) h.add(t.rolling_held);          // what the next solve holds (SolverConfig)
     for (std::uint32_t i = 0; i < t.particle_count(); ++i) {  // friction anchors, where any
       if (t.anchor_on[i] == Tire::kNoAnchor) continue;
       h.add(i);

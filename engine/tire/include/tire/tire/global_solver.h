@@ -209,6 +209,12 @@ class GlobalSolver {
   double* gradient_of(std::size_t row) { return g_.data() + row * stride_; }
   Contact make_contact(const Tire& t, const SubstepContext& ctx, std::uint32_t particle, Vec2 normal,
                        double plane, const ContactPair& pair, std::int32_t prop, Vec2 surface_velocity);
+  // The roll held by rolling resistance (Tire::rolling_held): a row C(x) = Σ g_i·(x_i − xₙ_i) = 0,
+  // the tire's turn over the substep about its centroid, linearised at the substep's start,
+  // g_i = m_i perp(r_i) / Σ m_j |r_j|² with r_i = xₙ_i − cₙ (the translation drops out: Σ m_i r_i = 0).
+  // Its multiplier is the moment that holds it times h²; update_active_set lets it go past
+  // C_rr·N·R (N from the contacts' multipliers), as Coulomb's law lets a friction go.
+  void add_rolling_row(const Tire& t);
   // Finds the particles of `t` that penetrate a surface (an obstacle, a prop or a neighbour's tread)
   // at x + dx (dx null: at x) and have no contact yet, and adds a contact for each, the deepest
   // where a particle meets several. True when any was added.
@@ -237,7 +243,7 @@ class GlobalSolver {
   bool update_active_set(const Tire& t, const SubstepContext& ctx);
   void write_back(Tire& t, const SubstepContext& ctx);
 
-  static constexpr std::size_t kBaseRows = 3;         // the two areas and the grab
+  static constexpr std::size_t kBaseRows = 4;         // the two areas, the grab and the roll
   static constexpr std::size_t kMaxFrictionRows = 4;  // frictions as rows after a factorisation
   static constexpr std::size_t kMaxChangeRows = 4;    // and contacts taken in on its factor
   static constexpr std::size_t kMaxRows = kBaseRows + kMaxFrictionRows + kMaxChangeRows;
@@ -254,16 +260,18 @@ class GlobalSolver {
   std::vector<double> f_;         // f with them, then L⁻¹ f
   std::vector<double> dx_;        // the last pass's Δx, in block order
   std::vector<Row> rows_;
-  std::size_t base_rows_ = 0;  // the areas' and the grab's, first in rows_
-  std::vector<double> g_;      // column r: the gradient g_r
-  std::vector<double> y_;      // column r: L⁻¹ g_r
-  std::vector<double> yb_;     // column 3j + c: L⁻¹ of body j's column c of B
+  std::size_t base_rows_ = 0;      // the areas', the grab's and the roll's, first in rows_
+  std::int32_t rolling_row_ = -1;  // the roll's row in rows_ (add_rolling_row), or −1
+  double rolling_bound_ = 0.0;     // its most moment, per unit of the contacts' Σ μ_n: C_rr R
+  std::vector<double> g_;          // column r: the gradient g_r
+  std::vector<double> y_;          // column r: L⁻¹ g_r
+  std::vector<double> yb_;         // column 3j + c: L⁻¹ of body j's column c of B
   std::vector<Body> bodies_;
   double border_[kMaxUnknowns][kMaxUnknowns + 1] = {};  // the border system, its right side last
   std::vector<Contact> contacts_;
   std::vector<std::int32_t> contact_of_;  // per particle: its contact, or −1
   std::vector<double> depth_;             // find_contacts: the depth of each contact found
-  std::vector<Vec2> gradient_;            // a ring's area gradient
+  std::vector<Vec2> gradient_;            // a ring's area gradient, or the tire's turn's
   // The tire's distance constraints as assemble() found them: their particles and unknowns, and
   // their gradient n = ∇_b C, force term (C + γ ΔC)/α̃ and stiffness (1 + γ)/α̃ (0: no gradient).
   struct Link {

@@ -102,6 +102,15 @@ struct SolverConfig {
   // refactoring K: the same solution to rounding, a fifth less work for a tire driven flat out. For
   // the tests and the bench, which compare the two.
   bool reuse_factor = true;
+  // Rolling resistance held in the position solve (the global method; GlobalSolver's rolling row): a
+  // tire whose spin the velocity pass stopped keeps its roll in the next solve, up to the moment
+  // C_rr·N·R, so that it stays put on a slope gentler than C_rr, as a real tire in neutral does.
+  // Without it, the velocity pass stops the spin each substep and the position solve turns the tire
+  // again: a soft tire creeps down a 0.5 % slope at 6 mm/s. Only for a tire touching no other tire
+  // (docs/at-rest.md). Off by default: on, it changes the bits of every level with a tire at rest,
+  // and level 08's pile sleeps within 40 s at the shipped bits only by the luck of its rain
+  // (docs/at-rest.md, "Still open"). The level's "solver": {"rolling_hold": true} turns it on.
+  bool rolling_hold = false;
   // The compliance of what is rigid in the global solve (m/N): contacts, and distance constraints
   // of compliance 0 (its primal form divides by α, so every α is at least this). It is an XPBD
   // compliance, not a penalty: a tire's whole weight (100 N) sinks a contact by 0.1 nm at any

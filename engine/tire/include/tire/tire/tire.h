@@ -205,6 +205,11 @@ struct Tire {
   // V + ω × r, a tangent; the global method's first prediction makes them the chords of a turn by ωh
   // (global_method.cpp, chord_spin) and every prediction clears it.
   bool spin_as_built = false;
+  // Whether rolling resistance held the tire's spin at the last velocity pass (the moment needed to
+  // stop it was within C_rr·N·R): the global method then holds its roll in the next position solve
+  // too, up to that moment (GlobalSolver, the rolling row), as a real tire stays put on a slope
+  // gentler than C_rr.
+  bool rolling_held = false;
   std::vector<std::uint32_t> candidates;       // obstacles near the tire this tick (broad phase)
   std::vector<std::uint32_t> prop_candidates;  // props near the tire this tick (broad phase)
   std::vector<PropFrame> prop_frames;          // their poses this substep
