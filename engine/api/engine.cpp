@@ -213,6 +213,10 @@ void Simulation::set_sleep(bool on) {
   session_->world().config().sleep = on;
   session_->world().wake_all();
 }
+void Simulation::set_rolling_hold(bool on) {
+  session_->world().config().rolling_hold = on;
+  session_->world().wake_all();
+}
 void Simulation::wake_all() { session_->world().wake_all(); }
 
 void Simulation::set_threads(unsigned threads) { session_->world().set_threads(threads); }

@@ -33,7 +33,8 @@ struct ReleaseGrabEvent {};
 // A tuning change, key = value. Keys are the parameter table's rows the panel may set
 // ("tires.compliance.outer", "tires.pressure", "tires.mass_scale", "solver.substeps", "gravity.x",
 // ...; tire/parameters.h), applied through Simulation::set_parameter; "tires.friction" sets the
-// static and the kinetic friction together; "solver.sleep" (1 or 0) turns sleeping on or off.
+// static and the kinetic friction together; "solver.sleep" and "solver.rolling_hold" (1 or 0) turn
+// sleeping and the rolling hold on or off.
 // Applying one wakes every sleeping tire. See tuning.h.
 struct TuneEvent {
   std::string key;

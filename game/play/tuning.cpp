@@ -54,9 +54,12 @@ std::size_t index_of(std::string_view key) {
 
 // apply_tuning's change, without the waking.
 bool set_tuned(tire::Simulation& simulation, std::string_view key, double value) {
-  if (key == kSleepKey) {
+  if (key == kSleepKey || key == kRollingHoldKey) {
     if (value != 0.0 && value != 1.0) return false;
-    simulation.set_sleep(value == 1.0);
+    if (key == kSleepKey)
+      simulation.set_sleep(value == 1.0);
+    else
+      simulation.set_rolling_hold(value == 1.0);
     return true;
   }
   const tire::TunableParameter* p = tire::find_tunable_parameter(key);
@@ -99,12 +102,13 @@ Tuning Tuning::from_simulation(const tire::Simulation& simulation) {
     t.values[i] =
         simulation.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
   t.sleep = simulation.config().sleep;
+  t.rolling_hold = simulation.config().rolling_hold;
   return t;
 }
 
 bool Tuning::set(std::string_view key, double value) {
-  if (key == kSleepKey) {
-    sleep = value != 0.0;
+  if (key == kSleepKey || key == kRollingHoldKey) {
+    (key == kSleepKey ? sleep : rolling_hold) = value != 0.0;
     return true;
   }
   const std::size_t i = index_of(key);
@@ -138,6 +142,7 @@ const tire::MaterialPreset* material_of(const Tuning& t) {
 
 double tuning_value(const Tuning& t, std::string_view key) {
   if (key == kSleepKey) return t.sleep ? 1.0 : 0.0;
+  if (key == kRollingHoldKey) return t.rolling_hold ? 1.0 : 0.0;
   const std::size_t i = index_of(key);
   return i < t.values.size() ? t.values[i] : 0.0;
 }
@@ -148,6 +153,8 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to) {
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (from.values.at(i) != to.values.at(i)) out.push_back({keys[i], to.values[i]});
   if (from.sleep != to.sleep) out.push_back({std::string(kSleepKey), to.sleep ? 1.0 : 0.0});
+  if (from.rolling_hold != to.rolling_hold)
+    out.push_back({std::string(kRollingHoldKey), to.rolling_hold ? 1.0 : 0.0});
   return out;
 }
 

@@ -23,10 +23,13 @@ const std::vector<std::string>& tuning_keys();
 // the table's keys. It is no row of the parameter table: replays do not record it (tirectl replay
 // would refuse the key).
 inline constexpr std::string_view kSleepKey = "solver.sleep";
+// The "rolling hold" checkbox, SolverConfig::rolling_hold, carried the same way.
+inline constexpr std::string_view kRollingHoldKey = "solver.rolling_hold";
 
 struct Tuning {
   std::vector<double> values;  // one per tuning_keys(), in that order
   bool sleep = tire::SolverConfig{}.sleep;
+  bool rolling_hold = tire::SolverConfig{}.rolling_hold;
 
   // The table's defaults.
   Tuning();
@@ -34,12 +37,13 @@ struct Tuning {
   // table's defaults without tires), the solver's settings and the gravity.
   static Tuning from_simulation(const tire::Simulation& simulation);
 
-  // Sets the value a key names (kSleepKey: on unless 0); false for a key the panel does not tune.
+  // Sets the value a key names (a checkbox's key: on unless 0); false for a key the panel does not
+  // tune.
   bool set(std::string_view key, double value);
   bool operator==(const Tuning&) const = default;
 };
 
-// The value of `key` in `t` (kSleepKey: 1 or 0); 0 for a key the panel does not tune.
+// The value of `key` in `t` (a checkbox's key: 1 or 0); 0 for a key the panel does not tune.
 double tuning_value(const Tuning& t, std::string_view key);
 
 // `t` with a material preset's values (tire::material_presets()) in the keys the panel tunes:
@@ -54,9 +58,9 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to);
 
 // Applies one change through Simulation::set_parameter (an integer key's value rounded first;
 // "tires.friction" sets the kinetic friction too: the panel has one friction slider), or, for
-// kSleepKey, Simulation::set_sleep; then wakes every sleeping tire (Simulation::wake_all), as a
-// change of the rules does. False, changing and waking nothing, for a key the panel does not tune
-// or a value outside its range (kSleepKey: other than 0 and 1).
+// kSleepKey and kRollingHoldKey, Simulation::set_sleep and set_rolling_hold; then wakes every sleeping tire
+// (Simulation::wake_all), as a change of the rules does. False, changing and waking nothing, for a key the
+// panel does not tune or a value outside its range (a checkbox's key: other than 0 and 1).
 bool apply_tuning(tire::Simulation& simulation, std::string_view key, double value);
 
 // How the panel shows a key: its slider. The slider's range may be narrower than the table's

@@ -118,11 +118,17 @@ std::vector<TuneEvent> draw_tuning_panel(const Tuning& current, const Tuning& le
             break;
         }
       }
-      // The last section, the world's and the solver's, ends with the sleep checkbox.
+      // The last section, the world's and the solver's, ends with the sleep and rolling hold
+      // checkboxes.
       if (section + 1 == sections.size()) {
         ImGui::Checkbox("sleep", &t.sleep);
         if (ImGui::IsItemHovered())
           ImGui::SetTooltip("solver.sleep: tires that rest stop being simulated until something wakes them");
+        ImGui::Checkbox("rolling hold", &t.rolling_hold);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip(
+              "solver.rolling_hold: a tire that rolling resistance stopped stays put on a slope gentler than "
+              "its rolling_resistance (the global method; tires touching no other tire)");
       }
     }
     if (ImGui::Button("Reset to the level's values")) t = level_defaults;

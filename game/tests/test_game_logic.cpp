@@ -411,7 +411,7 @@ TEST_CASE("every tuning change the session applies wakes the sleeping tires, and
   for (const TuneEvent& change :
        {TuneEvent{"tires.pressure", 1.2}, TuneEvent{"tires.friction", 0.4}, TuneEvent{"solver.substeps", 9},
         TuneEvent{"gravity.x", 1.0}, TuneEvent{std::string(kSleepKey), 0.0},
-        TuneEvent{std::string(kSleepKey), 1.0}}) {
+        TuneEvent{std::string(kSleepKey), 1.0}, TuneEvent{std::string(kRollingHoldKey), 1.0}}) {
     INFO(change.key << " = " << change.value);
     GameSession session;
     two_tires(session);
@@ -426,8 +426,9 @@ TEST_CASE("every tuning change the session applies wakes the sleeping tires, and
   GameSession session;
   two_tires(session);
   put_to_sleep(session);
-  for (const TuneEvent& refused : {TuneEvent{"tires.nonsense", 1.0}, TuneEvent{"tires.mass_scale", 0.0},
-                                   TuneEvent{std::string(kSleepKey), 0.5}}) {
+  for (const TuneEvent& refused :
+       {TuneEvent{"tires.nonsense", 1.0}, TuneEvent{"tires.mass_scale", 0.0},
+        TuneEvent{std::string(kSleepKey), 0.5}, TuneEvent{std::string(kRollingHoldKey), 0.5}}) {
     session.queue(refused);
     session.flush();
   }
@@ -462,6 +463,31 @@ TEST_CASE("the sleep checkbox is SolverConfig::sleep, carried as key = 1 or 0", 
   session.flush();
   CHECK(world_of(session).config().sleep);
   CHECK(session.tuning() == level);
+}
+
+TEST_CASE("the rolling hold checkbox is SolverConfig::rolling_hold, carried as key = 1 or 0",
+          "[unit][game]") {
+  GameSession session;
+  session.start("flat.json", flat_level());
+  REQUIRE_FALSE(world_of(session).config().rolling_hold);  // the engine's default
+  const Tuning level = session.tuning();
+  CHECK_FALSE(level.rolling_hold);
+  CHECK(tuning_value(level, kRollingHoldKey) == 0.0);
+  Tuning on = level;
+  on.rolling_hold = true;
+  const std::vector<TuneEvent> changes = tuning_changes(level, on);
+  REQUIRE(changes.size() == 1);
+  CHECK(changes[0].key == kRollingHoldKey);
+  CHECK(changes[0].value == 1.0);
+  session.queue(changes[0]);
+  session.flush();
+  CHECK(world_of(session).config().rolling_hold);
+  CHECK(session.tuning() == on);
+  CHECK(Tuning::from_simulation(session.simulation()).rolling_hold);
+  // "Reset to the level's values" turns it back off.
+  for (const TuneEvent& e : tuning_changes(session.tuning(), level)) session.queue(e);
+  session.flush();
+  CHECK_FALSE(world_of(session).config().rolling_hold);
 }
 
 TEST_CASE("the HUD counts the sleeping tires, when there are tires", "[unit][game]") {

@@ -174,6 +174,9 @@ class Simulation {
   // Sleeping on or off (SolverConfig::sleep), then every tire woken; wake_all() wakes them alone.
   // No sleeping island can tell whether it still rests after a change of the rules.
   void set_sleep(bool on);
+  // Rolling resistance held in the position solve on or off (SolverConfig::rolling_hold), then
+  // every tire woken, as set_sleep does.
+  void set_rolling_hold(bool on);
   void wake_all();
   // Threads for scenes of many tires; the results are the same for any count.
   void set_threads(unsigned threads);
