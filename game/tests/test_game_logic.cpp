@@ -436,58 +436,45 @@ TEST_CASE("every tuning change the session applies wakes the sleeping tires, and
   CHECK(world_of(session).config().sleep);
 }
 
-TEST_CASE("the sleep checkbox is SolverConfig::sleep, carried as key = 1 or 0", "[unit][game]") {
-  GameSession session;
-  session.start("flat.json", flat_level());
-  REQUIRE(world_of(session).config().sleep);  // the engine's default
-  const Tuning level = session.tuning();
-  CHECK(level.sleep);
-  CHECK(Tuning().sleep);
-  CHECK(tuning_value(level, kSleepKey) == 1.0);
-
-  Tuning off = session.tuning();
-  off.sleep = false;
-  const std::vector<TuneEvent> changes = tuning_changes(session.tuning(), off);
-  REQUIRE(changes.size() == 1);
-  CHECK(changes[0].key == kSleepKey);
-  CHECK(changes[0].value == 0.0);
-  session.queue(changes[0]);
-  session.flush();
-  CHECK_FALSE(world_of(session).config().sleep);
-  CHECK(session.tuning() == off);
-  // A freshly loaded world's tuning reads the flag from the world.
-  CHECK_FALSE(Tuning::from_simulation(session.simulation()).sleep);
-
-  // "Reset to the level's values" turns it back on.
-  for (const TuneEvent& e : tuning_changes(session.tuning(), level)) session.queue(e);
-  session.flush();
-  CHECK(world_of(session).config().sleep);
-  CHECK(session.tuning() == level);
-}
-
-TEST_CASE("the rolling hold checkbox is SolverConfig::rolling_hold, carried as key = 1 or 0",
+TEST_CASE("the sleep and rolling hold checkboxes are SolverConfig's flags, carried as key = 1 or 0",
           "[unit][game]") {
-  GameSession session;
-  session.start("flat.json", flat_level());
-  REQUIRE_FALSE(world_of(session).config().rolling_hold);  // the engine's default
-  const Tuning level = session.tuning();
-  CHECK_FALSE(level.rolling_hold);
-  CHECK(tuning_value(level, kRollingHoldKey) == 0.0);
-  Tuning on = level;
-  on.rolling_hold = true;
-  const std::vector<TuneEvent> changes = tuning_changes(level, on);
-  REQUIRE(changes.size() == 1);
-  CHECK(changes[0].key == kRollingHoldKey);
-  CHECK(changes[0].value == 1.0);
-  session.queue(changes[0]);
-  session.flush();
-  CHECK(world_of(session).config().rolling_hold);
-  CHECK(session.tuning() == on);
-  CHECK(Tuning::from_simulation(session.simulation()).rolling_hold);
-  // "Reset to the level's values" turns it back off.
-  for (const TuneEvent& e : tuning_changes(session.tuning(), level)) session.queue(e);
-  session.flush();
-  CHECK_FALSE(world_of(session).config().rolling_hold);
+  struct Checkbox {
+    std::string_view key;
+    bool Tuning::*tuned;
+    bool tire::SolverConfig::*config;
+  };
+  for (const Checkbox box :
+       {Checkbox{kSleepKey, &Tuning::sleep, &tire::SolverConfig::sleep},
+        Checkbox{kRollingHoldKey, &Tuning::rolling_hold, &tire::SolverConfig::rolling_hold}}) {
+    INFO(box.key);
+    GameSession session;
+    session.start("flat.json", flat_level());
+    const bool engine_default = tire::SolverConfig{}.*box.config;
+    REQUIRE(world_of(session).config().*box.config == engine_default);
+    const Tuning level = session.tuning();
+    CHECK(level.*box.tuned == engine_default);
+    CHECK(Tuning().*box.tuned == engine_default);
+    CHECK(tuning_value(level, box.key) == (engine_default ? 1.0 : 0.0));
+
+    Tuning flipped = session.tuning();
+    flipped.*box.tuned = !engine_default;
+    const std::vector<TuneEvent> changes = tuning_changes(session.tuning(), flipped);
+    REQUIRE(changes.size() == 1);
+    CHECK(changes[0].key == box.key);
+    CHECK(changes[0].value == (engine_default ? 0.0 : 1.0));
+    session.queue(changes[0]);
+    session.flush();
+    CHECK(world_of(session).config().*box.config == !engine_default);
+    CHECK(session.tuning() == flipped);
+    // A freshly loaded world's tuning reads the flag from the world.
+    CHECK(Tuning::from_simulation(session.simulation()).*box.tuned == !engine_default);
+
+    // "Reset to the level's values" puts it back.
+    for (const TuneEvent& e : tuning_changes(session.tuning(), level)) session.queue(e);
+    session.flush();
+    CHECK(world_of(session).config().*box.config == engine_default);
+    CHECK(session.tuning() == level);
+  }
 }
 
 TEST_CASE("the HUD counts the sleeping tires, when there are tires", "[unit][game]") {
