@@ -754,12 +754,13 @@ void GlobalSolver::solve(Tire& t, const SubstepContext& ctx) {
   // Gauss–Seidel hands a tire pushes after its solve, which the bound never sees. A pile's tires keep
   // the velocity pass's rolling resistance alone (docs/at-rest.md, "Still open").
   rolling_row_ = -1;
-  const bool alone =
-      ctx.island == nullptr &&
-      (ctx.neighbours == nullptr || ctx.neighbours->neighbours(ctx.neighbours->index_of(t)).empty());
-  if (ctx.config->rolling_hold && alone && t.rolling_held && t.spec.rolling_resistance > 0.0 && !t.grabbed &&
-      t.control.steer == 0.0 && !t.driven && t.wheel < 0)
-    add_rolling_row(t);
+  if (ctx.config->rolling_hold && t.rolling_held && t.spec.rolling_resistance > 0.0 && !t.grabbed &&
+      t.control.steer == 0.0 && !t.driven && t.wheel < 0) {
+    const bool alone =
+        ctx.island == nullptr &&
+        (ctx.neighbours == nullptr || ctx.neighbours->neighbours(ctx.neighbours->index_of(t)).empty());
+    if (alone) add_rolling_row(t);
+  }
   base_rows_ = rows_.size();
   // Contacts held at the end of the substep's previous iteration stay in (their plane and whether
   // they stuck), so a resting tire does not lose its support between iterations.
