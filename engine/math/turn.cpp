@@ -5,19 +5,9 @@
 
 namespace tire {
 
-namespace {
-
-Vec2 centroid_of(std::span<const Vec2> x) {
-  Vec2 c;
-  for (const Vec2& p : x) c += p;
-  return x.empty() ? c : c * (1.0 / static_cast<double>(x.size()));
-}
-
-}  // namespace
-
 double turn_between(std::span<const Vec2> from, std::span<const Vec2> to) {
   TIRE_ASSERT(from.size() == to.size(), "a turn between point sets of different sizes");
-  const Vec2 a = centroid_of(from), b = centroid_of(to);
+  const Vec2 a = mean(from), b = mean(to);
   double c = 0.0, s = 0.0;
   for (std::size_t i = 0; i < from.size(); ++i) {
     const Vec2 r = from[i] - a, q = to[i] - b;
@@ -29,7 +19,7 @@ double turn_between(std::span<const Vec2> from, std::span<const Vec2> to) {
 
 bool turn_gradient(std::span<const Vec2> from, std::span<Vec2> out) {
   TIRE_ASSERT(from.size() == out.size(), "a turn's gradient of another size than its points");
-  const Vec2 a = centroid_of(from);
+  const Vec2 a = mean(from);
   double inertia = 0.0;  // Σ |rⱼ|²
   for (const Vec2& p : from) inertia += length_squared(p - a);
   if (!(inertia > 0.0)) return false;

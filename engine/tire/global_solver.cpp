@@ -254,9 +254,6 @@ void GlobalSolver::add_rolling_row(const Tire& t) {
   row.alpha_tilde = rigid_alpha_tilde_ / (radius * radius);
   row.b = -predicted;
   rolling_row_ = static_cast<std::int32_t>(rows_.size());
-  // Its multiplier is the moment that holds the roll times h² (kg m²), a contact's μ_n its normal
-  // force times h² (kg m): the bound C_rr N R h² is C_rr R Σ μ_n.
-  rolling_bound_ = t.spec.rolling_resistance * radius;
   rows_.push_back(row);
 }
 
@@ -688,8 +685,10 @@ bool GlobalSolver::update_active_set(const Tire& t, const SubstepContext& ctx) {
     double normal = 0.0;
     for (const Contact& c : contacts_)
       if (c.normal_active && c.mu_n > 0.0) normal += c.mu_n;
+    // Its multiplier is the moment that holds the roll times h² (kg m²), a contact's μ_n its normal
+    // force times h² (kg m): the bound C_rr N R h² is C_rr R Σ μ_n.
     Row& roll = rows_[static_cast<std::size_t>(rolling_row_)];
-    if (std::abs(roll.mu) > rolling_bound_ * normal) {
+    if (std::abs(roll.mu) > t.spec.rolling_resistance * t.spec.outer_radius * normal) {
       roll.live = false;
       changed = true;
     }

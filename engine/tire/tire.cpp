@@ -109,14 +109,6 @@ void Tire::reset() {
   tick_contacts = {};
 }
 
-namespace {
-Vec2 mean(std::span<const Vec2> values) {
-  Vec2 sum;
-  for (const Vec2& v : values) sum += v;
-  return sum / static_cast<double>(values.size());
-}
-}  // namespace
-
 void Tire::set_compliance(const TireCompliance& c) {
   TIRE_ASSERT(c.outer >= 0.0 && c.inner >= 0.0 && c.spoke >= 0.0 && c.pressure >= 0.0,
               "a negative compliance");

@@ -16,12 +16,6 @@ constexpr unsigned kTireFlags = DebugDraw::structure | DebugDraw::contacts | Deb
 // The world box around a prop's shape at `pose`.
 Aabb prop_bounds(const Prop& p, const Pose& pose) { return pose.to_world(p.geometry.local_bounds()); }
 
-Vec2 mean(std::span<const Vec2> points) {
-  Vec2 sum;
-  for (const Vec2& p : points) sum += p;
-  return sum / static_cast<double>(points.size());
-}
-
 void draw_tire(DebugDraw& draw, const Tire& t, const TireView& view, const RigidWorld& rigid) {
   const unsigned flags = draw.flags();
   const std::span<const Vec2> x = draw.tire_positions(view);

@@ -47,6 +47,24 @@ constexpr SliderSpec kSliders[] = {
      "solver.iterations: constraint sweeps per substep"},
 };
 
+// The panel's checkboxes: the solver's flags they show and how the simulation takes a change.
+struct Checkbox {
+  std::string_view key;
+  bool Tuning::*tuned;
+  bool tire::SolverConfig::*config;
+  void (tire::Simulation::*apply)(bool);
+};
+constexpr Checkbox kCheckboxes[] = {
+    {kSleepKey, &Tuning::sleep, &tire::SolverConfig::sleep, &tire::Simulation::set_sleep},
+    {kRollingHoldKey, &Tuning::rolling_hold, &tire::SolverConfig::rolling_hold,
+     &tire::Simulation::set_rolling_hold},
+};
+const Checkbox* checkbox(std::string_view key) {
+  for (const Checkbox& c : kCheckboxes)
+    if (c.key == key) return &c;
+  return nullptr;
+}
+
 std::size_t index_of(std::string_view key) {
   const auto& keys = tuning_keys();
   return static_cast<std::size_t>(std::find(keys.begin(), keys.end(), key) - keys.begin());
@@ -54,12 +72,9 @@ std::size_t index_of(std::string_view key) {
 
 // apply_tuning's change, without the waking.
 bool set_tuned(tire::Simulation& simulation, std::string_view key, double value) {
-  if (key == kSleepKey || key == kRollingHoldKey) {
+  if (const Checkbox* c = checkbox(key)) {
     if (value != 0.0 && value != 1.0) return false;
-    if (key == kSleepKey)
-      simulation.set_sleep(value == 1.0);
-    else
-      simulation.set_rolling_hold(value == 1.0);
+    (simulation.*c->apply)(value == 1.0);
     return true;
   }
   const tire::TunableParameter* p = tire::find_tunable_parameter(key);
@@ -101,14 +116,13 @@ Tuning Tuning::from_simulation(const tire::Simulation& simulation) {
   for (std::size_t i = 0; i < t.values.size(); ++i)
     t.values[i] =
         simulation.parameter(tuning_parameters()[i]->key).value_or(tuning_parameters()[i]->default_value);
-  t.sleep = simulation.config().sleep;
-  t.rolling_hold = simulation.config().rolling_hold;
+  for (const Checkbox& c : kCheckboxes) t.*c.tuned = simulation.config().*c.config;
   return t;
 }
 
 bool Tuning::set(std::string_view key, double value) {
-  if (key == kSleepKey || key == kRollingHoldKey) {
-    (key == kSleepKey ? sleep : rolling_hold) = value != 0.0;
+  if (const Checkbox* c = checkbox(key)) {
+    this->*c->tuned = value != 0.0;
     return true;
   }
   const std::size_t i = index_of(key);
@@ -141,8 +155,7 @@ const tire::MaterialPreset* material_of(const Tuning& t) {
 }
 
 double tuning_value(const Tuning& t, std::string_view key) {
-  if (key == kSleepKey) return t.sleep ? 1.0 : 0.0;
-  if (key == kRollingHoldKey) return t.rolling_hold ? 1.0 : 0.0;
+  if (const Checkbox* c = checkbox(key)) return t.*c->tuned ? 1.0 : 0.0;
   const std::size_t i = index_of(key);
   return i < t.values.size() ? t.values[i] : 0.0;
 }
@@ -152,9 +165,8 @@ std::vector<TuneEvent> tuning_changes(const Tuning& from, const Tuning& to) {
   const auto& keys = tuning_keys();
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (from.values.at(i) != to.values.at(i)) out.push_back({keys[i], to.values[i]});
-  if (from.sleep != to.sleep) out.push_back({std::string(kSleepKey), to.sleep ? 1.0 : 0.0});
-  if (from.rolling_hold != to.rolling_hold)
-    out.push_back({std::string(kRollingHoldKey), to.rolling_hold ? 1.0 : 0.0});
+  for (const Checkbox& c : kCheckboxes)
+    if (from.*c.tuned != to.*c.tuned) out.push_back({std::string(c.key), to.*c.tuned ? 1.0 : 0.0});
   return out;
 }
 

@@ -135,7 +135,7 @@ nlohmann::json BestRuns::summary(const std::string& level_path) const {
   out["won"] = r && r->won;
   out["of_this_version"] = current;
   out["best_time"] = r && r->won ? nlohmann::json(r->best_time) : nlohmann::json(nullptr);
-  out["menu"] = note(level_path);
+  out["menu"] = format_record(r, !current);  // note()'s, without looking the record up again
   if (last_)
     out["run"] = {
         {"won", last_->won}, {"time", last_->time}, {"new_best", last_->new_best}, {"saved", last_->saved}};

@@ -52,6 +52,12 @@ constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
 constexpr Vec2 rotate(Vec2 v, double c, double s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 constexpr double length_squared(Vec2 a) { return dot(a, a); }
 inline double length(Vec2 a) { return std::sqrt(dot(a, a)); }
+// The mean of the points, summed in order (a tire's centroid: its particles weigh the same).
+inline Vec2 mean(std::span<const Vec2> points) {
+  Vec2 sum;
+  for (const Vec2& p : points) sum += p;
+  return sum / static_cast<double>(points.size());
+}
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 
 // An axis-aligned box, min < max on both axes.

@@ -262,7 +262,6 @@ class GlobalSolver {
   std::vector<Row> rows_;
   std::size_t base_rows_ = 0;      // the areas', the grab's and the roll's, first in rows_
   std::int32_t rolling_row_ = -1;  // the roll's row in rows_ (add_rolling_row), or −1
-  double rolling_bound_ = 0.0;     // its most moment, per unit of the contacts' Σ μ_n: C_rr R
   std::vector<double> g_;          // column r: the gradient g_r
   std::vector<double> y_;          // column r: L⁻¹ g_r
   std::vector<double> yb_;         // column 3j + c: L⁻¹ of body j's column c of B
