@@ -81,21 +81,25 @@ bool cholesky_inverse(Block4& m, Block4& m_t) {
     }
   }
   // U⁻¹ column by column: 1 on the diagonal, (U⁻¹)_ij = −Σ_{k=j}^{i−1} U_ik (U⁻¹)_kj below it; then
-  // row i times d_i^-½.
-  m.fill(0.0);
+  // row i times d_i^-½. Built in a local array and written once: written into m as it was built, the
+  // stores and loads through memory cost more than the arithmetic (on AVX2 most of all).
+  double inv[B][B];
   for (std::size_t j = 0; j < B; ++j) {
-    at(m, j, j) = 1.0;
+    inv[j][j] = 1.0;
     for (std::size_t i = j + 1; i < B; ++i) {
       double s = 0.0;
-      for (std::size_t k = j; k < i; ++k) s -= u[i][k] * at(m, k, j);
-      at(m, i, j) = s;
+      for (std::size_t k = j; k < i; ++k) s -= u[i][k] * inv[k][j];
+      inv[i][j] = s;
     }
   }
   for (std::size_t i = 0; i < B; ++i) {
     const double scale = 1.0 / std::sqrt(d[i]);
-    for (std::size_t j = 0; j <= i; ++j) at(m, i, j) *= scale;
+    for (std::size_t j = 0; j < B; ++j) {
+      const double v = j <= i ? inv[i][j] * scale : 0.0;
+      at(m, i, j) = v;
+      at(m_t, j, i) = v;
+    }
   }
-  m_t = transpose(m);
   return true;
 }
 
