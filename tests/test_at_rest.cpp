@@ -51,7 +51,7 @@ World crate_on_ground() {
 
 }  // namespace
 
-TEST_CASE("at rest: a pile of 60 tires stops moving under the default method", "[unit][rest]") {
+TEST_CASE("at rest: a pile of 60 tires stops moving under the default method", "[unit][rest][long]") {
   SolverConfig config;
   config.sleep = false;
   World world = pile_of_60(config);
@@ -97,7 +97,7 @@ TEST_CASE("at rest: a soft tire's sag asleep is its sag awake, at 2, 8 and 32 su
 }
 
 TEST_CASE("at rest: every preset's sag asleep is its sag awake, at 2, 8 and 32 substeps",
-          "[unit][rest][sleep]") {
+          "[unit][rest][sleep][long]") {
   // A soft preset rings slowly on its air, its deformation slower than sleep_deform_speed: with that
   // threshold alone `soft` fell asleep 2.5 % off its sag at 8 substeps, `rubber_ball` 3.7 % at 32.
   // It now sleeps only once its shape has stayed within sleep_deform of where it was still.
@@ -252,7 +252,7 @@ TEST_CASE("at rest: a crate on a tire on a crate stays put", "[unit][rest]") {
 }
 
 TEST_CASE("at rest: level 08's pile of 301 tires falls asleep within 40 s on the default method",
-          "[unit][rest][sleep]") {
+          "[unit][rest][sleep][long]") {
   // Its tires rain down until 15 s. Before static friction between tires stopped anchoring to the
   // late pushes in a neighbour's prediction (Tire::predicted_push), two of them turned in place
   // for ever and none slept.

@@ -405,7 +405,7 @@ Unbooked unbooked_over(const std::string& replay_name) {
 
 }  // namespace
 
-TEST_CASE("energy: the shipped replays make no energy that nothing brought in", "[unit][energy]") {
+TEST_CASE("energy: the shipped replays make no energy that nothing brought in", "[unit][energy][long]") {
   // The world's energy less its books may rise by rounding only, and by the work of a kinematic
   // prop the books do not count (12-finale's shuttle carries the tire: 33.7 J). Left out:
   // 05-platforms and 07-sandbox-grab-tune-gravity, where kinematic platforms and a grab do more

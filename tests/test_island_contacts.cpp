@@ -172,7 +172,7 @@ TEST_CASE("island: a pile of 35 tires does not creep", "[unit][island][rest]") {
   CHECK(world.island_work().overflows == 0);
 }
 
-TEST_CASE("island: a pile of 35 slick tires does not creep down a wall", "[unit][island][rest]") {
+TEST_CASE("island: a pile of 35 slick tires does not creep down a wall", "[unit][island][rest][long]") {
   // The same pile in the soft `slick` preset. A tire wedged between its neighbour and the right
   // wall slid down the wall at a steady 0.11 mm/s, its contacts with the wall all stuck, while each
   // substep's static friction took back only that substep's slip: from 20 to 25 s the median tire
@@ -187,7 +187,7 @@ TEST_CASE("island: a pile of 35 slick tires does not creep down a wall", "[unit]
 }
 
 TEST_CASE("island: a pile of 60 slick tires comes to rest at its own substeps",
-          "[unit][island][rest][sleep]") {
+          "[unit][island][rest][sleep][long]") {
   // The island's multipliers load each tire's next solve. Solved at one substep and loaded at
   // another, unscaled, they pressed a tire with up to 4 times its neighbours' weight when the
   // refinement halved its substeps: the jolt turned links past refine_turn, and the soft pile's

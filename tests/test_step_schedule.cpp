@@ -48,7 +48,7 @@ bool same_bytes(const ArrayView<T>& a, const ArrayView<T>& b) {
 }  // namespace
 
 TEST_CASE("the fused and plain schedules give the same bits on the shipped levels",
-          "[unit][determinism][schedule]") {
+          "[unit][determinism][schedule][long]") {
   struct Case {
     const char* level;
     std::vector<std::string> overrides;

@@ -4,7 +4,7 @@ set(LEVELS ${PROJECT_SOURCE_DIR}/levels)
 set(BAD ${CMAKE_CURRENT_SOURCE_DIR}/levels)
 
 function(tirectl_test name code)
-  cmake_parse_arguments(T "" "STDOUT;STDERR;REFUSE_STDERR" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "LONG" "STDOUT;STDERR;REFUSE_STDERR" "ARGS" ${ARGN})
   set(defs -DEXPECT_CODE=${code})
   if(DEFINED T_STDOUT)
     list(APPEND defs "-DEXPECT_STDOUT=${T_STDOUT}")
@@ -17,7 +17,11 @@ function(tirectl_test name code)
   endif()
   string(REPLACE ";" "|" cmd "$<TARGET_FILE:tirectl>;${T_ARGS}")
   add_test(NAME "tirectl ${name}" COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${EXPECT})
-  set_tests_properties("tirectl ${name}" PROPERTIES LABELS unit)
+  if(T_LONG)  # a big scene stepped for long: left out of the Debug suite (tests/CMakeLists.txt)
+    set_tests_properties("tirectl ${name}" PROPERTIES LABELS "unit;long")
+  else()
+    set_tests_properties("tirectl ${name}" PROPERTIES LABELS unit)
+  endif()
 endfunction()
 
 tirectl_test("validate accepts the default level" 0 ARGS validate ${LEVELS}/01-first-roll.json
@@ -175,7 +179,7 @@ tirectl_test("level 06-tire-rain is won once the gate opens, by a jump onto the 
 tirectl_test("level 07-sandbox is won by rolling the ball into the pit" 0
   ARGS run ${LEVELS}/07-sandbox.json --ticks 1800 --steer 1 STDOUT "\"status\": \"won\"")
 tirectl_test("level 08-three-hundred is won through the gate the 300th tire opens" 0
-  ARGS run ${LEVELS}/08-three-hundred.json --ticks 1200 --steer -1 STDOUT "\"status\": \"won\"")
+  LONG ARGS run ${LEVELS}/08-three-hundred.json --ticks 1200 --steer -1 STDOUT "\"status\": \"won\"")
 
 # Hardening (docs/testing.md, "Hardening"): hostile files get one clear line per problem naming the file, the
 # JSON path and what was expected, and exit code 2; never a crash, a stack trace or "terminate
