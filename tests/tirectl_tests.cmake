@@ -111,7 +111,7 @@ tirectl_test("tradeoff refuses a nan inside a list" 2 ARGS tradeoff --tunnel-cla
 tirectl_test("validate refuses keys given twice" 2 ARGS validate ${BAD}/bad-duplicate-keys.json
   STDERR "bad-duplicate-keys.json: /name: key given twice \\(first at line 1\\).*bad-duplicate-keys.json: /solver: key given twice \\(first at line 3\\).*bad-duplicate-keys.json: /tires/0/mass: key given twice \\(first at line 5\\)")
 tirectl_test("bench prints CSV" 0 ARGS bench --scene prototype --steps 50
-  STDOUT "^scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype,asleep\nprototype,1,56,[1-9][0-9]*,0,1,28,1,22,50,[^\n]*,[0-9]+\n")
+  STDOUT "^scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype,asleep,simd\nprototype,1,56,[1-9][0-9]*,0,1,28,1,22,50,[^\n]*,[0-9]+,(avx2|sse2|scalar)\n")
 tirectl_test("bench counts the contacts and tire pairs of a pile" 0 ARGS bench --scene pile-100 --threads 2 --steps 3 --warmup 10
   STDOUT "\npile-100,100,5600,[1-9][0-9]*,[1-9][0-9]*,2,28,8,1,3,")
 # The big scenes, built and stepped once, so that ctest stays quick (a full run takes minutes): the
@@ -119,7 +119,7 @@ tirectl_test("bench counts the contacts and tire pairs of a pile" 0 ARGS bench -
 # the two particles of their bottom segment from the first tick, the 100 falling ones touch nothing.
 tirectl_test("bench settles pile-1000-settled for at most --settle ticks" 0
   ARGS bench --scene pile-1000-settled --settle 2 --warmup 0 --steps 1
-  STDOUT "\npile-1000-settled,1000,56000,[0-9]+,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n"
+  STDOUT "\npile-1000-settled,1000,56000,[0-9]+,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0,(avx2|sse2|scalar)\n"
   STDERR "pile-1000-settled: settled for 2 ticks, 0 of 1000 tires asleep")
 # The car: its level text loads (a scene the reader refused would end the run), its two wheels
 # are the scene's tires and touch the ground.
@@ -129,12 +129,12 @@ tirectl_test("bench builds island-pile-60-settled-awake" 0
   ARGS bench --scene island-pile-60-settled-awake --settle 30 --warmup 0 --steps 1
   STDOUT "island-pile-60-settled-awake,60,")
 tirectl_test("bench builds crowd-100" 0 ARGS bench --scene crowd-100 --warmup 0 --steps 1
-  STDOUT "\ncrowd-100,100,5600,0,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
+  STDOUT "\ncrowd-100,100,5600,0,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0,(avx2|sse2|scalar)\n")
 tirectl_test("bench builds crowd-10000: 9900 tires resting on shelves" 0 ARGS bench --scene crowd-10000 --warmup 0 --steps 1
-  STDOUT "\ncrowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0\n")
+  STDOUT "\ncrowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,8,1,1,[^\n]*,0,(avx2|sse2|scalar)\n")
 tirectl_test("bench builds global-crowd-10000: the crowd on the default method" 0
   ARGS bench --scene global-crowd-100 --scene global-crowd-10000 --warmup 0 --steps 1
-  STDOUT "\nglobal-crowd-100,100,5600,0,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0\nglobal-crowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0\n")
+  STDOUT "\nglobal-crowd-100,100,5600,0,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0,(avx2|sse2|scalar)\nglobal-crowd-10000,10000,560000,19800,[0-9]+,[0-9]+,28,2,1,1,[^\n]*,0,(avx2|sse2|scalar)\n")
 # The scenes of costs bounded by what is near (docs/bounded-and-safe.md), each built and stepped once:
 # the tire on either chain; the 1953 tires of 256 segments on a grid (no pairs), on one spot and
 # heaped, where each tire keeps at most 32 pairs (solver.tire_neighbours): at most 31 248 of the

@@ -486,6 +486,15 @@ const Scene kScenes[] = {
 
 // The prototype's figure for its own scene, per 60 Hz frame (docs/performance.md, "The scenes").
 constexpr double kPrototypeUsPerFrame = 88.0;
+// The vector instructions this build was compiled for (TIRE_AVX2, docs/performance.md): the same
+// bits either way, not the same times, so a figure says which it was.
+#if defined(__AVX2__)
+constexpr const char* kSimd = "avx2";
+#elif defined(__SSE2__)
+constexpr const char* kSimd = "sse2";
+#else
+constexpr const char* kSimd = "scalar";
+#endif
 
 // The q-quantile of `v` (nearest rank), q in [0, 1].
 double quantile(std::vector<double> v, double q) {
@@ -532,7 +541,7 @@ int bench(const BenchOptions& options) {
   }
   std::cout
       << "scene,tires,particles,contacts,tire_pairs,threads,segments,substeps,iterations,steps,median_ms,"
-         "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype,asleep\n";
+         "p99_ms,mean_ms,us_per_tire,peak_rss_mib,speedup_vs_prototype,asleep,simd\n";
   using Clock = std::chrono::steady_clock;
   std::vector<double> step_ms;
   for (const Scene& scene : kScenes) {
@@ -586,7 +595,8 @@ int bench(const BenchOptions& options) {
     // The prototype's figure is for its own scene only.
     if (std::string_view(scene.name).starts_with("prototype"))
       std::cout << kPrototypeUsPerFrame / (median * 1000.0);
-    std::cout << "," << world->asleep() << std::endl;  // a row at a time: long runs show progress
+    // A row at a time: long runs show progress.
+    std::cout << "," << world->asleep() << "," << kSimd << std::endl;
   }
   return 0;
 }
