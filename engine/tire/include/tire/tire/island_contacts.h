@@ -133,7 +133,7 @@ class IslandContacts {
   void load_tires(const std::vector<Tire>& tires, std::span<const std::uint32_t> members, double h);
   bool add_surface_rows(const std::vector<Tire>& tires, std::span<const std::uint32_t> members);
   bool assemble(const std::vector<Tire>& tires);
-  bool incomplete_cholesky();
+  bool incomplete_cholesky(double shift);
   bool solve_active(double alpha_tilde);
   void write_records(std::vector<Tire>& tires, const SubstepContext& ctx) const;
 

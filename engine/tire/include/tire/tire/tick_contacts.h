@@ -30,9 +30,9 @@ struct IslandWork {
   std::uint64_t rows = 0;        // contact rows
   std::uint64_t passes = 0;      // active-set passes
   std::uint64_t iterations = 0;  // conjugate-gradient iterations
-  std::uint64_t breakdowns = 0;  // passes preconditioned by the diagonal (incomplete Cholesky broke down)
+  std::uint64_t breakdowns = 0;  // passes whose incomplete Cholesky factor broke down (then shifted)
   std::uint64_t overflows = 0;   // islands left to block Gauss–Seidel for want of room
-  std::uint64_t failures = 0;    // solves given up (not positive definite, not finite)
+  std::uint64_t failures = 0;    // solves given up (not positive definite, not finite, not converged)
   std::uint64_t unsettled = 0;   // solves whose active set still changed when the passes ran out
 };
 
