@@ -588,8 +588,8 @@ bool IslandContacts::solve_active(double alpha_tilde) {
   // kShiftGrowth times more each try (Manteuffel, "An incomplete factorization technique for
   // positive definite linear systems", Math. Comp. 34, 1980): still close to D, where the diagonal
   // alone is far from it. In level 08's pile of 301 light, stiff tires solved as one island the
-  // unshifted factor broke down in a fifth of the passes; falling back to the diagonal there took
-  // 10 million iterations in 40 s, and unconverged passes threw tires at 100 m/s (docs/at-rest.md).
+  // unshifted factor broke down in a fifth of the passes, and falling back to the diagonal there
+  // took 10 million iterations in 40 s (docs/at-rest.md).
   bool factored = incomplete_cholesky(0.0);
   if (!factored) ++work_.breakdowns;
   for (double shift = kFirstShift; !factored && shift <= kLastShift; shift *= kShiftGrowth)
@@ -651,8 +651,8 @@ bool IslandContacts::solve_active(double alpha_tilde) {
     rz = rz_next;
     for (std::size_t j = 0; j < n; ++j) p_[j] = z_[j] + beta * p_[j];
   }
-  // Multipliers the iterations left far from the answer are no answer: at one substep, one such
-  // solve of level 08's pile threw its tires at up to 300 m/s.
+  // Multipliers the iterations left far from the answer are no answer: such solves threw level 08's
+  // pile, solved as one island, at up to 300 m/s (docs/at-rest.md).
   if (!converged) return false;
   for (std::size_t i = 0; i < m; ++i) rows_[i].lambda = 0.0;
   for (std::size_t j = 0; j < n; ++j) rows_[live_rows_[j]].lambda = x_[j];
